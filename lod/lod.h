@@ -1,0 +1,291 @@
+// fftess lod: the patch-constant ("hull constant") functions terrain engines use to choose tessellation factors.
+//
+// This header is the whole public contract of the module. The arithmetic itself lives once, in
+// lod/shaders/*.glsl, written in the subset GLSL and GLM share; the .cpp files compile those files as C++ through
+// GLM (single precision, in the order written, no contraction into FMA) and tests/lod compiles the same files as a
+// GLSL tessellation control shader with glslangValidator. The CPU path and the GPU path are the same source.
+//
+// Conventions (all schemes):
+//   * Quad patch corners: corners[i] is the world position of domain point (u, v) with i = u + 2*v, i.e.
+//       corners[0] = (0,0), corners[1] = (1,0), corners[2] = (0,1), corners[3] = (1,1).
+//     The edges, in D3D's words: Ueq0 = corners 0-2, Veq0 = corners 0-1, Ueq1 = corners 1-3, Veq1 = corners 2-3.
+//     For a terrain laid out on the x-z plane: u along +x, v along +z, so Ueq0 faces -x, Ueq1 +x, Veq0 -z, Veq1 +z.
+//   * Output factor order is the tessellator's: Ueq0 Veq0 Ueq1 Veq1 insideU insideV (fftess::FactorIndex in
+//     tessellator/tessellator.h; indices 0..5).
+//     insideU subdivides along u, so it is reduced from the edges that run along u (Veq0, Veq1); insideV from
+//     Ueq0, Ueq1 (the HLSL compiler's two-axis rule).
+//   * Camera: view = glm::lookAt (right-handed, the camera looks down -z in view space), projection =
+//     glm::perspective (GLM's default OpenGL clip space: after the divide x, y, z are in [-1, 1], w = -z_view > 0
+//     in front of the camera). Set Camera::depthZeroToOne when the projection came from glm::perspectiveZO
+//     (D3D / Vulkan clip space, z in [0, w]); it changes only the near plane of frustum culling.
+//     Pixels: a clip-space x difference dx/w maps to dx/w * viewport.x / 2 pixels (NDC spans 2 units).
+//   * Matrix-vector products are evaluated as m[0]*x + m[1]*y + m[2]*z + m[3]*w, left to right, column by column
+//     (not GLM's operator*, whose pairing differs); every other expression in the order docs/lod.md states.
+//   * Factors are what a hull shader would write to SV_TessFactor / gl_TessLevel*: not yet clamped, rounded or
+//     culled by the tessellator. A culled patch has every factor set to the scheme's cull value (-1 for the
+//     NVIDIA schemes, 0 for the others; both are culled by the tessellator).
+//   * Two patches that share an edge and pass the same two corner positions for it (in either order) get
+//     bitwise the same factor for that edge, in every scheme (tests/lod checks it).
+//   * Every function is pure: no allocation, no global state, safe to call from any thread.
+//
+// Known GPU divergence (details per scheme in docs/lod.md): GPUs evaluate exp2, log2, pow, sqrt, acos and
+// division approximately (a few ulp), so a factor can move by a few ulp, and a rounded exponent (Bonaventura,
+// geomorphing levels) can flip by one level exactly at a rounding boundary.
+#pragma once
+
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+namespace fftess::lod {
+
+// ---------------------------------------------------------------------------------------------------------------
+// Inputs
+
+struct Camera {
+  glm::mat4 view{1.0f};       // world -> view, glm::lookAt
+  glm::mat4 projection{1.0f}; // view -> clip, glm::perspective (or perspectiveZO with depthZeroToOne)
+  glm::vec2 viewport{1920.0f, 1200.0f}; // pixels; both > 0
+  glm::vec3 eye{0.0f};        // world position of the camera (the lookAt eye)
+  bool depthZeroToOne = false; // clip z in [0, w] instead of [-w, w]
+};
+
+// Convenience: view = lookAt(eye, target, up), projection = perspective(fovyRadians, viewport.x / viewport.y,
+// zNear, zFar). fovyRadians in (0, pi); 0 < zNear < zFar; viewport components > 0.
+Camera makeCamera(glm::vec3 eye, glm::vec3 target, glm::vec3 up, float fovyRadians, float zNear, float zFar,
+                  glm::vec2 viewport);
+
+struct Patch {
+  glm::vec3 corners[4]{}; // world positions (displaced heights allowed), corners[u + 2v]
+  // Culling box: the axis-aligned box of the four corners; with useHeightBounds its y range is widened to
+  // include [minHeight, maxHeight] (the heights the displacement can reach inside the patch, as Luna's BoundsY).
+  bool useHeightBounds = false;
+  float minHeight = 0.0f; // <= maxHeight
+  float maxHeight = 0.0f;
+};
+
+// How the two edge factors of an axis become that axis' inside factor.
+enum class InsideRule : uint8_t { Average, Min, Max };
+
+// ---------------------------------------------------------------------------------------------------------------
+// Outputs: factors plus the reason for each.
+
+enum class Scheme : uint8_t { ScreenSphere, NvidiaTile, DistancePow2, Bonaventura, ClipDiameter, Geomorph };
+
+// Bits of FactorWhy::fixes: which clamp, fix or literal-source switch changed a factor.
+enum Fix : uint32_t {
+  FixNone = 0,
+  FixClampedMin = 1u << 0,        // raised to the scheme's minimum factor
+  FixClampedMax = 1u << 1,        // lowered to the scheme's maximum factor
+  FixCulled = 1u << 2,            // the patch was culled; the factor is the cull value
+  FixLargerNeighbour = 1u << 3,   // NVIDIA: neighbour twice the size; its edge was rebuilt and half its factor taken
+  FixSmallerNeighbour = 1u << 4,  // NVIDIA: neighbour half the size; this is the larger side of the jump
+  FixIntegerClamp = 1u << 5,      // NVIDIA integer clamp rounded this factor
+  FixPow2Clamp = 1u << 6,         // NVIDIA power-of-two clamp rounded this factor
+  FixAngleCorrection = 1u << 7,   // Bonaventura camera-angle correction applied
+  FixRoundedExponent = 1u << 8,   // Bonaventura: exponent rounded to an integer
+  FixCoarserNeighbour = 1u << 9,  // geomorphing: the edge follows the coarser neighbour's level
+  FixLiteralSource = 1u << 10,    // a literal-source switch (see the params) changed this factor
+};
+
+// What a factor came from. metric: projected diameter in pixels (ScreenSphere, NvidiaTile), distance in world
+// units (DistancePow2, Bonaventura, Geomorph level input), clip-space diameter term (ClipDiameter).
+struct FactorWhy {
+  float metric = 0.0f;    // the measured quantity
+  float unclamped = 0.0f; // the factor (or, for exponent schemes, the value 2^exponent) before clamps and rounding
+  float exponent = 0.0f;  // exponent schemes: the exponent after correction, before rounding; else 0
+  uint32_t fixes = FixNone;
+};
+
+struct Why {
+  Scheme scheme = Scheme::ScreenSphere;
+  bool culled = false;
+  FactorWhy factor[6]{};      // same order as PatchLod::factors
+  float cornerLevel[4]{};     // Bonaventura: corrected exponent at each corner (mip selection); Geomorph: 0
+};
+
+struct PatchLod {
+  float factors[6] = {1.0f, 1.0f, 1.0f, 1.0f, 1.0f, 1.0f}; // Ueq0 Veq0 Ueq1 Veq1 insideU insideV
+  Why why{};
+};
+
+// ---------------------------------------------------------------------------------------------------------------
+// 1. Screen-space sphere (NVIDIA DX11 terrain sample). Per edge: a sphere centred on the edge midpoint with the
+// edge length as diameter, placed in view space, projected; factor = projected diameter in pixels /
+// tessellatedTriWidth, clamped to [minFactor, maxFactor]. Inside factors from the edges by `inside`.
+// Frustum culling: if the patch box is wholly outside one frustum plane, every factor is culledFactor.
+struct ScreenSphereParams {
+  float tessellatedTriWidth = 3.0f; // target triangle width in pixels (> 0); sample: 3 at 1920x1200, a game: 6
+  float minFactor = 1.0f;           // <= maxFactor
+  float maxFactor = 64.0f;
+  InsideRule inside = InsideRule::Average;
+  bool frustumCull = true;
+  float culledFactor = -1.0f;       // the sample writes -1
+};
+
+PatchLod screenSphere(const Patch& patch, const Camera& camera, const ScreenSphereParams& params = {});
+
+// ---------------------------------------------------------------------------------------------------------------
+// 2. Non-uniform patches in tile rings (same sample). Tiles of 8x8 patches in concentric rings, each ring doubling
+// the patch size. On a tile border the neighbour can be half (0.5), the same (1) or twice (2) the size.
+//   * neighbour 2 (this patch is the smaller side): rebuild the neighbour's edge, which is this edge extended by
+//     its own length: by parity, the far end lies beyond corner "end" (even index along the edge) or before
+//     corner "start" (odd index). Its sphere factor is computed and halved.
+//   * neighbour 0.5 (this patch is the larger side): its own edge factor.
+//   * the adjacency clamp, applied to both sides of a jump (a switch, so the verifier can show what each buys):
+//       None:    as above;
+//       Integer: larger side rounded up to an even integer, smaller side = that / 2 (the sample's recipe);
+//       Pow2:    larger side rounded up to a power of two in [4, 64], smaller side = that / 2, in [2, 32].
+// The eight boundary cases of the sample's constant hull shader are these two cases on each of the four edges.
+enum class AdjacencyClamp : uint8_t { None, Integer, Pow2 };
+
+// How the smaller patch gets the far end of its larger neighbour's edge.
+enum class Reconstruction : uint8_t {
+  // The sample: move the corner by the edge vector (p1 + (p1 - p0) or p0 - (p1 - p0)), then give the rebuilt end
+  // the height (y) of the corner it was moved from ("make vertex heights agree"). Bitwise agreement with the
+  // larger patch only on flat terrain whose positions are exact in float.
+  EdgeVector,
+  // The far end is TileNeighbours::farCorner[edge] (the larger patch's own corner, displaced height included):
+  // the two sides compute the same sphere from the same two points, so they agree bitwise.
+  FarCorner,
+};
+
+struct TileNeighbours {
+  // Relative size of the neighbour across each edge, indexed by fftess::FactorIndex (Ueq0, Veq0, Ueq1, Veq1):
+  // 0.5, 1 or 2 (any other value is treated as 1). Edges inside a tile are 1.
+  float size[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+  // Parity of this patch's index along u (x) and v (z), counted from a corner that the larger patches share
+  // (tiles hold an even number of patches per side, so the index inside the tile works). Ueq0/Ueq1 run along v
+  // and use oddV; Veq0/Veq1 run along u and use oddU. Even: the patch is the first half of the larger edge.
+  bool oddU = false;
+  bool oddV = false;
+  // Reconstruction::FarCorner only: the far end of the larger neighbour's edge, per edge with size 2.
+  glm::vec3 farCorner[4]{};
+};
+
+struct NvidiaTileParams {
+  ScreenSphereParams sphere{};                  // the per-edge factor (the sample's own settings by default)
+  AdjacencyClamp clamp = AdjacencyClamp::Pow2;  // the sample ships the power-of-two workaround
+  Reconstruction reconstruction = Reconstruction::EdgeVector;
+};
+
+PatchLod nvidiaTile(const Patch& patch, const TileNeighbours& neighbours, const Camera& camera,
+                    const NvidiaTileParams& params = {});
+
+// The sample's AssignNeighbourSizes for one tile of one ring. A ring is a square of outerWidth x outerWidth tiles
+// with a centred hole of holeWidth x holeWidth tiles (holeWidth = 0 for the innermost ring; outerWidth and
+// holeWidth even, holeWidth < outerWidth). The next ring out has tiles twice the size; the hole holds the ring in,
+// whose tiles are half the size. Returns the relative sizes for the tile's -x, -z, +x, +z sides in the
+// FactorIndex order of TileNeighbours::size (Ueq0 = -x, Veq0 = -z, Ueq1 = +x, Veq1 = +z). outermost: no ring
+// outside (sides on the outer border are 1).
+struct TileSides {
+  float size[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+};
+TileSides assignNeighbourSizes(int tileX, int tileZ, int holeWidth, int outerWidth, bool outermost);
+
+// Per-patch neighbours from the tile's sides: only patches on the tile border see a size other than 1.
+// patchX, patchZ in [0, patchesPerTile); patchesPerTile even (the sample: 8). farCorner left zero.
+TileNeighbours patchNeighbours(const TileSides& tile, int patchX, int patchZ, int patchesPerTile);
+
+// ---------------------------------------------------------------------------------------------------------------
+// 3. Distance-based power of two (Luna, "3D Game Programming with DirectX 11", terrain chapter; Richards).
+// factor = 2^(maxTessExponent + s * (minTessExponent - maxTessExponent)),
+// s = clamp((d - minDistance) / (maxDistance - minDistance), 0, 1), d = distance from the edge midpoint (edges)
+// or the patch centre (both inside factors) to the eye. Culling: patch box (use the height bounds) against the
+// six frustum planes; culled factors are 0.
+struct DistancePow2Params {
+  float minDistance = 20.0f;   // < maxDistance
+  float maxDistance = 500.0f;
+  float minTessExponent = 0.0f; // at maxDistance and beyond
+  float maxTessExponent = 6.0f; // at minDistance and nearer
+  bool frustumCull = true;
+};
+
+PatchLod distancePow2(const Patch& patch, const Camera& camera, const DistancePow2Params& params = {});
+
+// ---------------------------------------------------------------------------------------------------------------
+// 4. Rounded-exponent power of two with camera-angle correction (Bonaventura, "Terrain and Ocean Rendering with
+// Hardware Tessellation"). At a point p (edge midpoint, patch centre or corner), d = distance(p, eye):
+//   e0 = maxExponent + s * (minExponent - maxExponent), s as in DistancePow2;
+//   angle correction a = ((pi/2 - acos|c.e|) / (pi/2)) * rank + 1 - rank/2, c = normalize(p - eye), e = up;
+//   exponent = e0 * a; factor = 2^floor(exponent + 0.5), clamped to [minFactor, maxFactor].
+// cornerLevel[i] (in Why) = the corrected, unrounded exponent at corner i: four patches sharing a corner agree.
+// The thesis writes the fourth corner's angle without acos; literalFourthCornerAngle reproduces that.
+struct BonaventuraParams {
+  float minDistance = 20.0f;
+  float maxDistance = 500.0f;
+  float minExponent = 0.0f;
+  float maxExponent = 6.0f;
+  bool angleCorrection = true;
+  float rank = 0.5f;             // in [0, 2]: how far the correction moves the exponent (factor 1 +- rank/2)
+  glm::vec3 up{0.0f, 1.0f, 0.0f}; // terrain normal; unit length
+  float minFactor = 1.0f;
+  float maxFactor = 64.0f;
+  bool frustumCull = true;
+  float culledFactor = 0.0f;
+  bool literalFourthCornerAngle = false; // corner 3: (pi/2 - |c.e|)/(pi/2), as printed
+};
+
+PatchLod bonaventura(const Patch& patch, const Camera& camera, const BonaventuraParams& params = {});
+
+// ---------------------------------------------------------------------------------------------------------------
+// 5. Clip-space sphere diameter (the "recommended method" of the tessellation-basics article). Per edge:
+// clip = projection * view * (midpoint, 1); factor = max(minFactor, distance(p0, p1) * projection[1][1] / clip.w
+// * edgesPerScreenHeight), then min(maxFactor, ...). A midpoint behind the camera (clip.w <= 0) gets minFactor.
+struct ClipDiameterParams {
+  float edgesPerScreenHeight = 16.0f; // target edge count over the screen height (> 0)
+  float minFactor = 1.0f;
+  float maxFactor = 64.0f;
+  InsideRule inside = InsideRule::Average;
+  bool frustumCull = false;           // the article does not cull
+  float culledFactor = 0.0f;
+};
+
+PatchLod clipDiameter(const Patch& patch, const Camera& camera, const ClipDiameterParams& params = {});
+
+// ---------------------------------------------------------------------------------------------------------------
+// 6. Geomorphing tween factors (the hardware geomorphing article). A patch has a float level
+// L = finestLevel + s * (coarsestLevel - finestLevel) (s from its centre's distance as in DistancePow2): its integer
+// part is the level, its fraction the tween. The patch is drawn with integer partitioning at 2^(floor(L) + 1)
+// segments; the vertices that level floor(L) + 1 inserts morph from the midpoint of their two coarse neighbours
+// (tween 0) to their true height (tween 1). A border follows the coarser side: its level is min(L_self,
+// L_neighbour), which both sides compute alike.
+struct GeomorphParams {
+  float minDistance = 20.0f;
+  float maxDistance = 500.0f;
+  float finestLevel = 5.0f;   // <= 5 (2^6 = 64 segments)
+  float coarsestLevel = 0.0f; // >= 0
+  // The article's inserted-vertex weight (1 - tweenNeighbour) * tweenSelf instead of the shared border tween.
+  // Not symmetric: the two sides of a border disagree unless a tween is 0. Kept so the verifier can show it.
+  bool literalArticleWeight = false;
+};
+
+// The float level of a patch (from its centre).
+float geomorphLevel(const Patch& patch, const Camera& camera, const GeomorphParams& params = {});
+
+// Factors from the patch's level and its neighbours' levels (per edge, FactorIndex order; pass the patch's own
+// level where there is no neighbour). Edges: 2^(floor(min(L, Ln)) + 1); inside: 2^(floor(L) + 1).
+PatchLod geomorph(float level, const float neighbourLevel[4], const GeomorphParams& params = {});
+
+// The vertex heights one side produces along a shared border. fineHeights: the true heights at t = i/64,
+// i = 0..64, in the same order for both sides. Output: segments n (a power of two, 2..64) and heights[k] at
+// t = k/n, k = 0..n. Both sides produce the same result for the same border (unless literalArticleWeight).
+struct GeomorphEdge {
+  int segments = 0;
+  float heights[65]{};
+};
+GeomorphEdge geomorphEdgeHeights(float level, float neighbourLevel, const float fineHeights[65],
+                                 const GeomorphParams& params = {});
+
+// ---------------------------------------------------------------------------------------------------------------
+// Printing helpers for the CLI.
+const char* schemeName(Scheme scheme);   // "screen-sphere", "nvidia-tile", "distance-pow2", "bonaventura", ...
+const char* fixName(Fix fix);            // one bit's name, "" for FixNone or several bits
+
+// The shader sources, in the order GLSL needs them concatenated (common first): for a GPU port or an oracle.
+// Each entry is one .glsl file's text; count via glslSourceCount().
+int glslSourceCount();
+const char* glslSourceName(int index);
+const char* glslSource(int index);
+
+} // namespace fftess::lod
