@@ -1,0 +1,373 @@
+// fftess verify: terrain scenes, domain-shader emulation and the exact crack verifier.
+//
+// This header is the whole public contract of the module. It speaks plain structs; CGAL and toml++ stay inside
+// verify's .cpp files.
+//
+// Pipeline for one camera (each stage consumes only the previous stage's plain data, and is skipped when the scene
+// does not call for it):
+//   layout     patches of the terrain (uniform grid, NVIDIA tile rings, heightmap grid) and their neighbours;
+//   lod        per patch the four outer factors as the hull shader computes them (fftess::lod), including the
+//              clamp at different-sized neighbours (tile rings only; a uniform grid never runs adjacency code);
+//   tessellate the 16.16 points of each outer edge (fftess::edgePoints; interiors only for the whole-mesh check);
+//   domain     world position of each edge point as a domain shader computes it, in float, in a stated order;
+//   check      per shared edge: match | T-junction | crack, decided with CGAL exact predicates.
+//
+// Findings are reports, not exceptions: nothing here turns a report into an exit status.
+// Bad input (scene files, overrides) is returned as an error value naming the key and the file position;
+// no exception escapes loadScene / parseScene.
+#pragma once
+
+#include "tessellator/tessellator.h"
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace fftess::verify {
+
+struct Vec3 {
+  float x = 0, y = 0, z = 0;
+};
+
+// ---------------------------------------------------------------------------------------------------------------
+// Scene model. Every field has the default the scene format documents (docs/verify.md); the TOML key is named in
+// each comment. The terrain lies in the x/z plane, y is up. Domain u runs along +x, v along +z:
+//   Ueq0 = the patch's -x edge, Ueq1 = +x, Veq0 = -z, Veq1 = +z (D3D quad domain, see tessellator.h).
+
+enum class LayoutKind : uint8_t {
+  Grid,          // "grid": patches_x * patches_z patches of one size
+  TileRings,     // "tile_rings": NVIDIA sample: ring 0 is tiles_per_ring_edge^2 tiles; each further ring is the same
+                 // count of tiles of twice the size with the inner half (the previous ring) cut out
+  HeightmapGrid, // "heightmap_grid": Luna/Richards: one patch per cells_per_patch heightmap cells
+};
+
+// How the four corners of a patch are obtained (layout.corners).
+enum class CornerMode : uint8_t {
+  Reconstructed, // "reconstructed": tile origin + (i / patches_per_tile_edge) * tile_size, in float, per tile, as the
+                 // NVIDIA sample rebuilds them from the vertex id (neighbouring tiles may disagree in the last bit)
+  Shared,        // "shared": every corner computed once (double, rounded to float) in a shared vertex buffer
+};
+
+struct Layout {
+  LayoutKind kind = LayoutKind::TileRings; // layout.kind
+  CornerMode corners = CornerMode::Reconstructed; // layout.corners
+  float centerX = 0, centerZ = 0;          // layout.center = [x, z]: centre of the terrain (tile_rings, grid)
+  // grid
+  int patchesX = 16, patchesZ = 16;        // layout.patches_x, layout.patches_z (>= 1)
+  float patchSize = 1;                     // layout.patch_size (> 0, finite); grid only
+  // tile_rings
+  int rings = 3;                           // layout.rings (1..16)
+  int tilesPerRingEdge = 8;                // layout.tiles_per_ring_edge (even, >= 2)
+  int patchesPerTileEdge = 8;              // layout.patches_per_tile_edge (>= 1)
+  float basePatchSize = 1;                 // layout.base_patch_size (> 0): patch size in ring 0; ring r: 2^r times
+  // heightmap_grid (needs displacement.kind = "raw" or a generator; texture size = cells_per_patch * k + 1)
+  int cellsPerPatch = 64;                  // layout.cells_per_patch (>= 1)
+  float cellSize = 1;                      // layout.cell_size (> 0): world size of one heightmap cell
+};
+
+enum class DisplacementKind : uint8_t {
+  None,   // "none": flat; heights are never sampled
+  Raw,    // "raw": 8- or 16-bit RAW heightmap file (16-bit little endian), values normalised to 0..1
+  Fbm,    // "fbm": procedural fBm of value noise baked into a texture at load
+  Ridge,  // "ridge": procedural ridged multifractal baked into a texture at load
+};
+
+struct Displacement {
+  DisplacementKind kind = DisplacementKind::Fbm; // displacement.kind
+  float heightScale = 4;           // displacement.height_scale (finite): world height of texel value 1
+  // raw
+  std::string file;                // displacement.file (relative to the scene file)
+  int width = 0, height = 0;       // displacement.width, displacement.height (raw: required; file size checked)
+  int bits = 16;                   // displacement.bits: 8 | 16
+  // fbm / ridge
+  uint64_t seed = 1;               // displacement.seed
+  int octaves = 6;                 // displacement.octaves (1..16)
+  float frequency = 4;             // displacement.frequency (> 0): base cells across the texture
+  float lacunarity = 2;            // displacement.lacunarity (> 0)
+  float gain = 0.5f;               // displacement.gain (> 0)
+  int resolution = 513;            // displacement.resolution (2..8192): generated texture is resolution^2
+  // Sampler (all kinds): bilinear, clamp addressing, texture spread over the terrain's extent.
+  int subtexelBits = 8;            // displacement.subtexel_bits (0..23, 0 = full float): filter weight precision
+  // Filled by loadScene: texels (row-major, z rows of x texels, 0..1), texture size.
+  std::shared_ptr<const std::vector<float>> texels;
+  int texWidth = 0, texHeight = 0;
+};
+
+enum class LodScheme : uint8_t {
+  Constant,       // "constant": every edge gets lod.factor
+  ScreenSphere,   // "screen_sphere": NVIDIA: sphere around each edge (diameter = edge length) projected to pixels
+                  // over lod.target_pixels
+  Distance,       // "distance": Luna/Richards: 2^lerp(max_tess, min_tess, saturate((d - min_d) / (max_d - min_d)))
+  Pow2Angle,      // "pow2_angle": Bonaventura: rounded-exponent pow2 with camera-angle correction
+  ClipSphere,     // "clip_sphere": clip-space sphere diameter over target pixels
+  PatchCenter,    // "patch_center": deliberately broken: each edge's factor from the patch centre, not the edge
+};
+
+// Clamp applied where a patch meets a neighbour of a different size (lod.adjacency_clamp; tile rings only).
+enum class AdjacencyClamp : uint8_t {
+  None,    // "none": the small patch takes half the factor of the rebuilt big edge, unrounded
+  Integer, // "integer": NVIDIA's integer recipe: big rounded up to even, small = big / 2 rounded up
+  Pow2,    // "pow2": rounded up to powers of two (big in [4,64], small in [2,32]), the sample's workaround
+};
+
+struct Lod {
+  LodScheme scheme = LodScheme::ScreenSphere; // lod.scheme
+  float targetPixels = 3;        // lod.target_pixels (> 0): screen_sphere, clip_sphere
+  float factor = 8;              // lod.factor: constant
+  float minDistance = 20;        // lod.min_distance: distance, pow2_angle
+  float maxDistance = 500;       // lod.max_distance (> min_distance): distance, pow2_angle
+  float minTess = 0;             // lod.min_tess: exponent at max_distance (distance, pow2_angle)
+  float maxTess = 6;             // lod.max_tess: exponent at min_distance (distance, pow2_angle)
+  bool frustumCull = true;       // lod.frustum_cull: schemes that cull (screen_sphere, distance) cull outside the view
+  bool displacedCorners = true;  // lod.displaced_corners: corners raised to their height for the LOD (NVIDIA VS)
+  AdjacencyClamp adjacencyClamp = AdjacencyClamp::Pow2; // lod.adjacency_clamp
+};
+
+// Domain-shader interpolation of the patch corners (domain.formula). lerp(a, b, t):
+enum class LerpFormula : uint8_t {
+  Nvidia,    // "nvidia" (default): the NVIDIA sample's Bilerp with HLSL lerp = a + t*(b - a), mul and add rounded
+             // separately; identical to "lerp"
+  Lerp,      // "lerp": a + t*(b - a)
+  LerpFma,   // "lerp_fma": fma(t, b - a, a)
+  Blend,     // "blend": a*(1 - t) + b*t
+  BlendFma,  // "blend_fma": fma(b, t, a*(1 - t))
+};
+
+enum class LerpOrder : uint8_t {
+  UFirst, // "u_first": lerp(lerp(c00, c10, u), lerp(c01, c11, u), v) (the NVIDIA sample)
+  VFirst, // "v_first": lerp(lerp(c00, c01, v), lerp(c10, c11, v), u)
+};
+
+// Where the height texture coordinate comes from (domain.height_uv).
+enum class HeightUv : uint8_t {
+  World,        // "world": from the interpolated world x/z (NVIDIA): equal x/z means equal height
+  Interpolated, // "interpolated": corner texture coordinates interpolated with domain.formula (Luna)
+};
+
+struct DomainShader {
+  LerpFormula formula = LerpFormula::Nvidia; // domain.formula
+  LerpOrder order = LerpOrder::UFirst;       // domain.order
+  HeightUv heightUv = HeightUv::World;       // domain.height_uv
+};
+
+// A camera. fovY in degrees, viewport in pixels.
+struct Camera {
+  Vec3 eye{0, 40, -60};      // camera.eye (finite)
+  Vec3 target{0, 0, 0};      // camera.target (finite, != eye)
+  Vec3 up{0, 1, 0};          // camera.up (finite, not parallel to target - eye)
+  float fovY = 60;           // camera.fov_y in (0, 180)
+  float nearZ = 0.1f;        // camera.near (> 0)
+  float farZ = 10000;        // camera.far (> near)
+  int width = 1920;          // camera.width (>= 1)
+  int height = 1200;         // camera.height (>= 1)
+};
+
+struct Scene {
+  std::string source;          // file name the scene came from ("<string>" for parseScene)
+  std::string name;            // name (optional)
+  Layout layout;               // [layout]
+  Displacement displacement;   // [displacement]
+  Lod lod;                     // [lod]
+  Partitioning partitioning = Partitioning::FractionalEven; // tessellation.partitioning
+  Stage stage{};               // tessellation.stage: hw | hlsl-avg | hlsl-min | hlsl-max (+ -1axis)
+  DomainShader domain;         // [domain]
+  Camera camera;               // [camera]
+  std::vector<Camera> cameraPath; // [[camera_path]]: each entry a full camera table (missing keys from [camera])
+};
+
+// Result of loading: either a scene or an error message "file:line:col: key: what is wrong".
+struct SceneResult {
+  bool ok = false;
+  Scene scene;
+  std::string error;
+  explicit operator bool() const { return ok; }
+};
+
+// Loads a scene file and applies overrides. Each override is "KEY=VALUE" with KEY a dotted path
+// (lod.adjacency_clamp=integer, camera.eye=[0,10,0]); VALUE is parsed as a TOML value, a bare word as a string.
+// Overrides are validated exactly like the file (unknown keys, types, ranges); their errors name "--set KEY".
+// A heightmap file is read and its size checked; procedural displacement is baked into scene.displacement.texels.
+SceneResult loadScene(const std::string& path, const std::vector<std::string>& overrides = {});
+// The same from text in memory; sourceName is used in messages and relative file paths resolve against baseDir.
+SceneResult parseScene(const std::string& text, const std::string& sourceName = "<string>",
+                       const std::vector<std::string>& overrides = {}, const std::string& baseDir = ".");
+
+// ---------------------------------------------------------------------------------------------------------------
+// Checking.
+
+enum class Kernel : uint8_t {
+  Epick,      // CGAL Exact_predicates_inexact_constructions_kernel: exact classification, gap in double (default)
+  Epeck,      // CGAL Exact_predicates_exact_constructions_kernel: exact classification and exact gap
+  FloatNaive, // CGAL Simple_cartesian<float>: predicates evaluated in float. Wrong on purpose (for comparison)
+};
+
+struct CheckOptions {
+  Kernel kernel = Kernel::Epick;  // classification is exact with Epick and Epeck; they agree on every verdict
+  size_t maxFindings = 1000;      // findings kept in Report::findings (stats always count all)
+  bool keepMatches = false;       // also keep matching pairs as findings
+  Options tessellator{};          // handed to fftess::edgePoints / Tessellator (flushDenormals)
+};
+
+enum class Classification : uint8_t {
+  Match,      // every vertex on one side coincides exactly with a vertex on the other, in order, endpoints included
+  TJunction,  // not a match, but every vertex of each side lies exactly on the other side's polyline
+  Crack,      // some vertex lies off the other side's polyline: a visible gap
+};
+
+struct PatchRef {
+  int index = -1;              // patch number in the layout's order
+  int ring = 0;                // tile ring (0 for grids)
+  int tile = 0;                // tile index in its ring (row-major over the ring's tile grid; 0 for grids)
+  int patch = 0;               // patch index in its tile (row-major; grids: row-major over the grid)
+  int level = 0;               // log2 of the patch size relative to the smallest patch
+};
+
+// One side of a shared edge.
+struct EdgeSide {
+  PatchRef patch;
+  int edge = 0;                // FactorIndex of the edge in its patch: Ueq0 Veq0 Ueq1 Veq1
+  float hullFactor = 0;        // factor the hull shader output (after the adjacency clamp)
+  float processedFactor = 0;   // after the tessellator's processing (EdgePoints::processedFactor)
+  bool culled = false;         // the patch is culled (some outer factor not > 0)
+  float paramLo = 0, paramHi = 1; // the part of this edge that is shared, in its own edge parameter
+  int pointCount = 0;          // edge points inside [paramLo, paramHi]
+  int firstMismatch = -1;      // index (into those points) of the first vertex that differs, -1 if none
+  DomainPoint mismatchDomain{};   // its (u, v)
+  Vec3 mismatchWorld{};           // its world position
+};
+
+struct Finding {
+  Classification classification = Classification::Match;
+  EdgeSide a;                  // the bigger (or, same size, lower-index) patch
+  EdgeSide b;
+  Partitioning partitioning = Partitioning::FractionalEven;
+  Vec3 edgeStart{}, edgeEnd{}; // the shared edge's ends (flat corners, world)
+  // Crack: the vertex farthest from the other side's polyline and that distance (exact with Epeck; converted to
+  // double for printing). T-junction / match: 0.
+  double gapWorld = 0;
+  double gapPixels = 0;        // gapWorld projected at the vertex's view depth (0 if at or behind the eye plane)
+  Vec3 gapVertex{};
+  int gapSide = 0;             // 0: the vertex is on side a, 1: on side b
+};
+
+struct Stats {
+  int64_t patches = 0;         // patches in the layout
+  int64_t culledPatches = 0;   // culled by the LOD (frustum) or by the tessellator (factor not > 0)
+  int64_t edgesChecked = 0;    // shared edge pairs classified (a 2x jump counts as two pairs)
+  int64_t skippedCulled = 0;   // shared edge pairs not classified because a side is culled
+  int64_t matches = 0;
+  int64_t tJunctions = 0;
+  int64_t cracks = 0;
+  double worstGapWorld = 0;
+  double worstGapPixels = 0;
+};
+
+struct Report {
+  std::vector<Finding> findings; // non-matching pairs (and matches with keepMatches), in layout order
+  bool truncated = false;        // more findings than maxFindings
+  Stats stats;
+};
+
+// Checks every shared edge of the scene's terrain from one camera.
+// scene: from loadScene/parseScene (or built by hand: displacement.texels must be set unless kind is None).
+// camera: finite values; a camera behind, inside or on a patch is fine (the LOD decides what is culled).
+Report checkScene(const Scene& scene, const Camera& camera, const CheckOptions& options = {});
+
+// Whole-mesh check: tessellates every patch fully (fftess::Tessellator), builds a CGAL polygon soup, merges
+// exactly-equal points, repairs degenerate polygons, converts it to a CGAL Surface_mesh and lists every border
+// edge (CGAL Polygon Mesh Processing) that is not on the terrain's outer boundary. Each such edge is attributed to
+// the patch edge it came from. Agrees with checkScene: the set of patch edges with inner border edges equals the
+// set of patch edges that take part in a T-junction or crack finding (see flaggedPatchEdges).
+struct PatchEdgeRef {
+  int patch = -1;              // PatchRef::index
+  int edge = 0;                // FactorIndex
+  bool operator<(const PatchEdgeRef& o) const { return patch != o.patch ? patch < o.patch : edge < o.edge; }
+  bool operator==(const PatchEdgeRef& o) const { return patch == o.patch && edge == o.edge; }
+};
+
+struct MeshReport {
+  int64_t patchesDrawn = 0;
+  int64_t triangles = 0;         // after removing degenerate (repeated-vertex) triangles
+  int64_t vertices = 0;          // after merging exactly-equal points
+  int64_t borderEdges = 0;       // all border edges
+  int64_t innerBorderEdges = 0;  // border edges not on the terrain's outer boundary (cracks and T-junctions)
+  std::vector<PatchEdgeRef> flagged; // sorted, unique: patch edges holding an inner border edge
+};
+
+MeshReport checkSceneMesh(const Scene& scene, const Camera& camera, const CheckOptions& options = {});
+
+// The patch edges of a report's non-matching findings (both sides), sorted and unique: compare with
+// MeshReport::flagged. Needs maxFindings large enough that the report is not truncated.
+std::vector<PatchEdgeRef> flaggedPatchEdges(const Report& report);
+
+// ---------------------------------------------------------------------------------------------------------------
+// Domain-shader emulation, public for tests and `fftess explain`.
+
+// World position of domain point (u, v) of patch `patchIndex` as the scene's domain shader computes it.
+// patchIndex: 0 .. patchCount(scene) - 1.
+Vec3 domainPosition(const Scene& scene, int patchIndex, float u, float v);
+// Patches in the scene's layout, and the reference of one.
+int patchCount(const Scene& scene);
+PatchRef patchRef(const Scene& scene, int patchIndex);
+// Terrain extent in x/z: [minX, maxX] x [minZ, maxZ].
+struct Extent {
+  float minX = 0, minZ = 0, maxX = 0, maxZ = 0;
+};
+Extent terrainExtent(const Scene& scene);
+
+// ---------------------------------------------------------------------------------------------------------------
+// Cameras for sweeps. All return cameras with the scene camera's fov, near, far and viewport.
+
+// The scene's camera path, or just the scene camera when it has none.
+std::vector<Camera> pathCameras(const Scene& scene);
+// count cameras on a circle around the terrain centre, looking at the centre. radius <= 0: half the extent;
+// height <= 0: a quarter of the radius.
+std::vector<Camera> orbitCameras(const Scene& scene, int count, float radius = 0, float height = 0);
+// count cameras on a straight line across the terrain (diagonal, -x-z to +x+z) at `height` above it (<= 0: 2% of
+// the extent plus the displacement scale), looking along the flight direction and slightly down.
+std::vector<Camera> flyoverCameras(const Scene& scene, int count, float height = 0);
+// count cameras at uniform random positions over the extent, heights in (0, 25% of extent], random yaw, pitch
+// in [-60, 0] degrees. Deterministic for a seed (own generator, same on every platform).
+std::vector<Camera> randomCameras(const Scene& scene, int count, uint64_t seed);
+
+struct SweepOptions {
+  int threads = 0;               // 0: std::thread::hardware_concurrency()
+  // Called after each camera from a worker thread (serialised by the driver): cameras done, cameras total.
+  std::function<void(size_t done, size_t total)> progress;
+  const std::atomic<bool>* cancel = nullptr; // set to true to stop; cameras not started are skipped
+  bool keepReports = false;      // keep every camera's full report (else only its stats and first finding)
+};
+
+struct CameraResult {
+  size_t cameraIndex = 0;
+  bool done = false;             // false: skipped because of cancel
+  Stats stats;
+  bool hasFinding = false;
+  Finding worst;                 // the finding with the largest gap (first crack or T-junction if no gap)
+};
+
+struct SweepResult {
+  std::vector<CameraResult> cameras; // one per input camera, in input order
+  std::vector<Report> reports;       // keepReports: one per camera (empty reports for skipped cameras)
+  Stats total;                       // summed over cameras done; worst gaps are maxima
+  size_t camerasDone = 0;
+  bool cancelled = false;
+};
+
+SweepResult sweep(const Scene& scene, const std::vector<Camera>& cameras, const CheckOptions& options = {},
+                  const SweepOptions& sweepOptions = {});
+
+// Names as the scene format spells them.
+const char* toString(Classification c);
+const char* toString(LayoutKind k);
+const char* toString(DisplacementKind k);
+const char* toString(LodScheme s);
+const char* toString(AdjacencyClamp c);
+const char* toString(LerpFormula f);
+const char* toString(Kernel k);
+bool parseKernel(const char* s, Kernel& out);
+
+} // namespace fftess::verify
