@@ -17,6 +17,7 @@
 // no exception escapes loadScene / parseScene.
 #pragma once
 
+#include "lod/lod.h"
 #include "tessellator/tessellator.h"
 
 #include <atomic>
@@ -97,33 +98,38 @@ struct Displacement {
 };
 
 enum class LodScheme : uint8_t {
-  Constant,       // "constant": every edge gets lod.factor
-  ScreenSphere,   // "screen_sphere": NVIDIA: sphere around each edge (diameter = edge length) projected to pixels
-                  // over lod.target_pixels
-  Distance,       // "distance": Luna/Richards: 2^lerp(max_tess, min_tess, saturate((d - min_d) / (max_d - min_d)))
-  Pow2Angle,      // "pow2_angle": Bonaventura: rounded-exponent pow2 with camera-angle correction
-  ClipSphere,     // "clip_sphere": clip-space sphere diameter over target pixels
-  PatchCenter,    // "patch_center": deliberately broken: each edge's factor from the patch centre, not the edge
+  Constant,       // "constant": every edge gets lod.factor (no camera)
+  ScreenSphere,   // "screen_sphere": NVIDIA (lod::screenSphere; on tile rings lod::nvidiaTile with the adjacency
+                  // fix and lod.adjacency_clamp)
+  DistancePow2,   // "distance_pow2": Luna/Richards (lod::distancePow2)
+  Bonaventura,    // "bonaventura": rounded-exponent pow2 with camera-angle correction (lod::bonaventura)
+  ClipDiameter,   // "clip_diameter": clip-space sphere diameter (lod::clipDiameter)
+  PatchCenter,    // "patch_center": deliberately broken: screen_sphere, but every edge's sphere sits at the patch
+                  // centre instead of the edge midpoint (neighbours disagree)
 };
 
-// Clamp applied where a patch meets a neighbour of a different size (lod.adjacency_clamp; tile rings only).
-enum class AdjacencyClamp : uint8_t {
-  None,    // "none": the small patch takes half the factor of the rebuilt big edge, unrounded
-  Integer, // "integer": NVIDIA's integer recipe: big rounded up to even, small = big / 2 rounded up
-  Pow2,    // "pow2": rounded up to powers of two (big in [4,64], small in [2,32]), the sample's workaround
-};
+// Clamp applied where a patch meets a neighbour of a different size (lod.adjacency_clamp = "none" | "integer" |
+// "pow2"; tile rings with screen_sphere only). See lod.h.
+using AdjacencyClamp = lod::AdjacencyClamp;
 
 struct Lod {
   LodScheme scheme = LodScheme::ScreenSphere; // lod.scheme
-  float targetPixels = 3;        // lod.target_pixels (> 0): screen_sphere, clip_sphere
+  float targetPixels = 3;        // lod.target_pixels (> 0): screen_sphere, patch_center (tessellatedTriWidth)
   float factor = 8;              // lod.factor: constant
-  float minDistance = 20;        // lod.min_distance: distance, pow2_angle
-  float maxDistance = 500;       // lod.max_distance (> min_distance): distance, pow2_angle
-  float minTess = 0;             // lod.min_tess: exponent at max_distance (distance, pow2_angle)
-  float maxTess = 6;             // lod.max_tess: exponent at min_distance (distance, pow2_angle)
-  bool frustumCull = true;       // lod.frustum_cull: schemes that cull (screen_sphere, distance) cull outside the view
+  float minFactor = 1;           // lod.min_factor: screen_sphere, patch_center, bonaventura, clip_diameter
+  float maxFactor = 64;          // lod.max_factor (>= min_factor)
+  float minDistance = 20;        // lod.min_distance: distance_pow2, bonaventura
+  float maxDistance = 500;       // lod.max_distance (> min_distance)
+  float minTess = 0;             // lod.min_tess: exponent at max_distance (distance_pow2, bonaventura)
+  float maxTess = 6;             // lod.max_tess: exponent at min_distance
+  bool angleCorrection = true;   // lod.angle_correction: bonaventura
+  float rank = 0.5f;             // lod.rank (0..2): bonaventura
+  float edgesPerScreenHeight = 16; // lod.edges_per_screen_height (> 0): clip_diameter
+  bool frustumCull = true;       // lod.frustum_cull: schemes that cull (all but constant and clip_diameter)
   bool displacedCorners = true;  // lod.displaced_corners: corners raised to their height for the LOD (NVIDIA VS)
   AdjacencyClamp adjacencyClamp = AdjacencyClamp::Pow2; // lod.adjacency_clamp
+  lod::Reconstruction reconstruction = lod::Reconstruction::EdgeVector; // lod.reconstruction: "edge_vector" |
+                                 // "far_corner" (how the small side rebuilds its big neighbour's edge)
 };
 
 // Domain-shader interpolation of the patch corners (domain.formula). lerp(a, b, t):
