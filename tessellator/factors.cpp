@@ -1,0 +1,140 @@
+#include "factors.h"
+
+#include <cmath>
+
+namespace fftess {
+namespace {
+
+// The reference decides integer parity from the float's integer part: (int)x & 1.
+bool isEvenFactor(float x) { return (int(x) & 1) == 0; }
+
+float clampHardware(float x, FactorRange r) { return fx::d3dMin(r.upper, fx::d3dMax(r.lower, x)); }
+
+bool culledBy(float x) { return !(x > 0.0f); } // NaN, +-0, negatives, -Inf; a positive denormal is NOT culled
+
+// Inside axes of integer partitioning: a factor of 1 is placed as even.
+bool insideOdd(float x, Partitioning p) {
+  if (isIntegerLike(p)) return !(isEvenFactor(x) || x == 1.0f);
+  return p == Partitioning::FractionalOdd;
+}
+
+AxisSpacing insideSpacing(float x, bool odd) {
+  AxisSpacing s = makeAxisSpacing(fx::floatToFixed(x), odd);
+  // D3D reference: inside axes have at least one interior ring's worth of points, degenerate when the factor is 1.
+  const int minimum = odd ? 4 : 3;
+  if (s.numPoints < minimum) s.numPoints = minimum;
+  return s;
+}
+
+} // namespace
+
+FactorRange hardwareRange(Partitioning p) {
+  switch (p) {
+  case Partitioning::FractionalEven: return {fx::kMinEvenFactor, fx::kMaxEvenFactor};
+  case Partitioning::FractionalOdd: return {fx::kMinOddFactor, fx::kMaxOddFactor};
+  case Partitioning::Integer:
+  case Partitioning::Pow2: break; // D3D11.3 11.7.4: hardware treats pow2 as integer
+  }
+  return {fx::kMinOddFactor, fx::kMaxEvenFactor};
+}
+
+ProcessedEdge processOuterEdge(float factor, Partitioning p) {
+  ProcessedEdge e;
+  if (culledBy(factor)) {
+    e.culled = true;
+    return e;
+  }
+  e.clamped = clampHardware(factor, hardwareRange(p));
+  e.rounded = isIntegerLike(p) ? std::ceil(e.clamped) : e.clamped;
+  e.odd = isIntegerLike(p) ? !isEvenFactor(e.rounded) : p == Partitioning::FractionalOdd;
+  e.fixed = fx::floatToFixed(e.rounded);
+  return e;
+}
+
+ProcessedQuad processQuadFactors(const float f[6], Partitioning p) {
+  ProcessedQuad q;
+  ProcessedEdge edge[4];
+  for (int i = 0; i < 4; ++i) {
+    edge[i] = processOuterEdge(f[i], p);
+    if (edge[i].culled) q.culled = true;
+  }
+  if (q.culled) return q;
+  FactorRange range = hardwareRange(p);
+  // fractional_odd: if any factor would still exceed 1 in 16.16, force the inside factors above 1 so that there
+  // is a picture frame (reference behaviour; the test uses the processed outer and the raw inside factors).
+  if (p == Partitioning::FractionalOdd) {
+    bool frame = f[InsideU] > fx::kOddPictureFrameThreshold || f[InsideV] > fx::kOddPictureFrameThreshold;
+    for (int i = 0; i < 4; ++i) frame = frame || edge[i].rounded > fx::kOddPictureFrameThreshold;
+    if (frame) range.lower = fx::kOddPictureFrameMinimum;
+  }
+  float inside[2];
+  for (int a = 0; a < 2; ++a) {
+    inside[a] = clampHardware(f[InsideU + a], range); // NaN -> lower bound
+    if (isIntegerLike(p)) inside[a] = std::ceil(inside[a]);
+  }
+  const fx::Fixed insideFixed[2] = {fx::floatToFixed(inside[0]), fx::floatToFixed(inside[1])};
+  if (p != Partitioning::FractionalEven) {
+    bool allOne = insideFixed[0] == fx::kOne && insideFixed[1] == fx::kOne;
+    for (int i = 0; i < 4; ++i) allOne = allOne && edge[i].fixed == fx::kOne;
+    if (allOne) {
+      q.minimum = true;
+      return q;
+    }
+  }
+  for (int i = 0; i < 4; ++i) q.outer[i] = makeAxisSpacing(edge[i].fixed, edge[i].odd);
+  for (int a = 0; a < 2; ++a) q.inside[a] = insideSpacing(inside[a], insideOdd(inside[a], p));
+  return q;
+}
+
+ProcessedTri processTriFactors(const float f[4], Partitioning p) {
+  ProcessedTri t;
+  ProcessedEdge edge[3];
+  for (int i = 0; i < 3; ++i) {
+    edge[i] = processOuterEdge(f[i], p);
+    if (edge[i].culled) t.culled = true;
+  }
+  if (t.culled) return t;
+  FactorRange range = hardwareRange(p);
+  // Same picture-frame rule as the quad, but only the outer factors are looked at (one inside factor).
+  if (p == Partitioning::FractionalOdd) {
+    bool frame = false;
+    for (int i = 0; i < 3; ++i) frame = frame || edge[i].rounded > fx::kOddPictureFrameThreshold;
+    if (frame) range.lower = fx::kOddPictureFrameMinimum;
+  }
+  float inside = clampHardware(f[TriInside], range);
+  if (isIntegerLike(p)) inside = std::ceil(inside);
+  if (p != Partitioning::FractionalEven) {
+    bool allOne = fx::floatToFixed(inside) == fx::kOne;
+    for (int i = 0; i < 3; ++i) allOne = allOne && edge[i].fixed == fx::kOne;
+    if (allOne) {
+      t.minimum = true;
+      return t;
+    }
+  }
+  for (int i = 0; i < 3; ++i) t.outer[i] = makeAxisSpacing(edge[i].fixed, edge[i].odd);
+  t.inside = insideSpacing(inside, insideOdd(inside, p));
+  return t;
+}
+
+ProcessedIsoline processIsolineFactors(float density, float detail, Partitioning p) {
+  ProcessedIsoline l;
+  if (culledBy(density) || culledBy(detail)) {
+    l.culled = true;
+    return l;
+  }
+  density = fx::d3dMin(fx::kMaxIsolineDensity, fx::d3dMax(fx::kMinIsolineDensity, density));
+  detail = clampHardware(detail, hardwareRange(p));
+  bool detailOdd = p == Partitioning::FractionalOdd;
+  if (isIntegerLike(p)) {
+    detail = std::ceil(detail);
+    detailOdd = !isEvenFactor(detail);
+  }
+  l.detail = makeAxisSpacing(fx::floatToFixed(detail), detailOdd);
+  // Line density is always integer partitioned.
+  density = std::ceil(density);
+  l.density = makeAxisSpacing(fx::floatToFixed(density), !isEvenFactor(density));
+  l.numLines = l.density.numPoints - 1;
+  return l;
+}
+
+} // namespace fftess
