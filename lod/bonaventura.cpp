@@ -1,0 +1,28 @@
+// fftess lod, scheme 4: rounded-exponent power of two with camera-angle correction.
+// The arithmetic is lod/shaders/bonaventura.glsl.
+#include "lod/glsl_cpp.h"
+#include "lod/lod.h"
+
+namespace fftess::lod {
+
+PatchLod bonaventura(const Patch& patch, const Camera& camera, const BonaventuraParams& params) {
+  glsl::BonaventuraSettings s;
+  s.minDistance = params.minDistance;
+  s.maxDistance = params.maxDistance;
+  s.minExponent = params.minExponent;
+  s.maxExponent = params.maxExponent;
+  s.angleCorrection = params.angleCorrection;
+  s.rank = params.rank;
+  s.up = params.up;
+  s.minFactor = params.minFactor;
+  s.maxFactor = params.maxFactor;
+  s.frustumCull = params.frustumCull;
+  s.culledFactor = params.culledFactor;
+  s.literalFourthCornerAngle = params.literalFourthCornerAngle;
+  const glm::vec3* c = patch.corners;
+  glsl::LodResult r = glsl::bonaventuraLod(c[0], c[1], c[2], c[3], patch.useHeightBounds, patch.minHeight,
+                                           patch.maxHeight, detail::toGlsl(camera), s);
+  return detail::fromGlsl(r, Scheme::Bonaventura);
+}
+
+} // namespace fftess::lod

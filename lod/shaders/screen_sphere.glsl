@@ -1,0 +1,49 @@
+// fftess lod, scheme 1: screen-space sphere (NVIDIA DX11 terrain tessellation sample). Needs common.glsl.
+//
+// Per edge: a sphere centred on the edge midpoint whose diameter is the edge length is moved to view space; a
+// second point one diameter along view-space x stands for its far side; both are projected and divided by w;
+// the pixel distance between them over the target triangle width is the factor, clamped to [minFactor, maxFactor].
+
+struct ScreenSphereSettings {
+  float triWidth;   // pixels per tessellated triangle edge
+  float minFactor;
+  float maxFactor;
+  int insideRule;   // kInsideAverage / kInsideMin / kInsideMax
+  bool frustumCull;
+  float culledFactor;
+};
+
+// Projected diameter, in pixels, of the sphere spanning p0-p1.
+// view0 = V * (centre, 1); view1 = view0 with x + diameter; clip = P * view; ndc = clip.xy / clip.w;
+// pixels = (ndc1 - ndc0) * viewport * 0.5; result = sqrt(px*px + py*py).
+float sphereDiameterPixels(vec3 p0, vec3 p1, LodCamera cam) {
+  vec3 centre = midpoint(p0, p1);
+  float diameter = distanceOrdered(p0, p1);
+  vec4 view0 = mulPoint(cam.view, vec4(centre, 1.0f));
+  vec4 view1 = view0;
+  view1.x = view1.x + diameter;
+  vec4 clip0 = mulPoint(cam.proj, view0);
+  vec4 clip1 = mulPoint(cam.proj, view1);
+  float px = (clip1.x / clip1.w - clip0.x / clip0.w) * (cam.viewport.x * 0.5f);
+  float py = (clip1.y / clip1.w - clip0.y / clip0.w) * (cam.viewport.y * 0.5f);
+  return sqrt(px * px + py * py);
+}
+
+// The factor of one edge: diameterPixels / triWidth, clamped.
+EdgeLod screenSphereEdge(vec3 p0, vec3 p1, LodCamera cam, ScreenSphereSettings s) {
+  float px = sphereDiameterPixels(p0, p1, cam);
+  return clampFactor(px, px / s.triWidth, 0.0f, 0, s.minFactor, s.maxFactor);
+}
+
+LodResult screenSphereLod(vec3 c0, vec3 c1, vec3 c2, vec3 c3, bool useHeightBounds, float minHeight,
+                          float maxHeight, LodCamera cam, ScreenSphereSettings s) {
+  if (s.frustumCull && patchOutsideFrustum(c0, c1, c2, c3, useHeightBounds, minHeight, maxHeight, cam)) {
+    return culledLodResult(s.culledFactor);
+  }
+  LodResult r = emptyLodResult();
+  r.e[0] = screenSphereEdge(c0, c2, cam, s);
+  r.e[1] = screenSphereEdge(c0, c1, cam, s);
+  r.e[2] = screenSphereEdge(c1, c3, cam, s);
+  r.e[3] = screenSphereEdge(c2, c3, cam, s);
+  return withInsideFromEdges(r, s.insideRule);
+}
