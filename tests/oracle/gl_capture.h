@@ -1,0 +1,111 @@
+// fftess GL oracle: captures what a real OpenGL tessellator (Mesa's llvmpipe, which runs Microsoft's D3D11
+// reference tessellator inside) produces for D3D11 hardware-stage patches.
+//
+// Independent of the fftess emulator on purpose: its own patch types, its own batch parser, no link to
+// fftess_tessellator. See docs/oracle.md for what is observed, what is rebuilt, and what is compared.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace fftess {
+namespace oracle {
+
+enum class Domain : uint8_t { Quad, Tri, Isoline };
+enum class Partitioning : uint8_t { Integer, Pow2, FractionalOdd, FractionalEven };
+enum class Topology : uint8_t { Point, Line, TriangleCw, TriangleCcw };
+
+// One hardware-stage patch. Factors as IEEE-754 bits, in the batch order:
+//   quad: Ueq0 Veq0 Ueq1 Veq1 insideU insideV; tri: Ueq0 Veq0 Weq0 inside; isoline: density detail.
+struct Patch {
+  Domain domain = Domain::Quad;
+  Partitioning partitioning = Partitioning::Integer;
+  Topology topology = Topology::TriangleCw;
+  uint32_t factorBits[6] = {0x3f800000u, 0x3f800000u, 0x3f800000u, 0x3f800000u, 0x3f800000u, 0x3f800000u};
+};
+
+// What the oracle gives back for one patch, in the batch output format's terms.
+//   points:  the domain points, 2 words (u bits, v bits) per point, in the order the tessellator emits them
+//            (observed: a point_mode draw captures one vertex per domain point, in order).
+//   indices: TriangleCw/Ccw and isoline Line: the primitive list (observed: vertex ids numbered by the TES invocation
+//            order, cross-checked against the point array, see docs/oracle.md); Point: 0..P-1; quad/tri Line:
+//            (i, i+1) for consecutive points (D3D's "points joined in generation order"; GL has no such topology,
+//            so it is derived from the observed point array, not observed).
+//   primitives: the observed primitives as coordinates, (u,v) bits per vertex, vertices per primitive = 3 for
+//            triangles, 2 for isoline lines (empty for Point and quad/tri Line). Independent of the vertex ids.
+struct Result {
+  std::vector<uint32_t> points;
+  std::vector<int32_t> indices;
+  std::vector<uint32_t> primitives;
+  int verticesPerPrimitive = 1;
+  int pointCount() const { return static_cast<int>(points.size() / 2); }
+};
+
+// Headless OpenGL 4.5 core context (EGL device platform, else surfaceless Mesa) with the programs and buffers the
+// capture needs. Not thread-safe; one per thread.
+class GlOracle {
+public:
+  ~GlOracle();
+  GlOracle(const GlOracle&) = delete;
+  GlOracle& operator=(const GlOracle&) = delete;
+
+  // Creates the context. Returns null and sets 'error' (what failed, with the EGL/GL error) when impossible.
+  static std::unique_ptr<GlOracle> create(std::string& error);
+
+  // GL_RENDERER / GL_VERSION of the context (e.g. "llvmpipe (LLVM 15.0.6, 256 bits)").
+  const std::string& renderer() const { return renderer_; }
+  const std::string& version() const { return version_; }
+  bool isLlvmpipe() const { return renderer_.find("llvmpipe") != std::string::npos; }
+
+  // Tessellates every patch; results[i] belongs to patches[i]. Returns false and sets 'error' if the driver did
+  // something the harness cannot trust (GL error, transform feedback overflow, a vertex id that does not match
+  // the observed point array, ...). Patches are grouped per program and drawn many per draw call.
+  bool run(const std::vector<Patch>& patches, std::vector<Result>& results, std::string& error);
+
+  // Statistics of the last run().
+  int drawCalls() const { return drawCalls_; }
+
+  struct Impl;
+
+private:
+  GlOracle();
+  std::unique_ptr<Impl> impl_;
+  std::string renderer_;
+  std::string version_;
+  int drawCalls_ = 0;
+};
+
+// ---- batch format (shared with the CLI's `tessellate --format hex`; parsed here independently) ----
+
+struct BatchLine {
+  Patch patch;
+  int lineNumber = 0;
+};
+
+// Parses the whole batch text. Blank lines and '#' comments are ignored. Only stage "hw" is accepted: a hardware
+// oracle has no HLSL stage. On error returns false and sets 'error' to "line N: ..." naming the bad token.
+bool parseBatch(const std::string& text, std::vector<BatchLine>& out, std::string& error);
+
+// Appends one patch block in the golden .out format ("patch N points P indices I", P lines of "uuuuuuuu vvvvvvvv",
+// then the indices: 3 per line for triangles, 2 for lines, 1 for points).
+void writePatchBlock(std::string& out, int patchNumber, const Patch& patch, const Result& result);
+
+const char* toString(Domain d);
+const char* toString(Partitioning p);
+const char* toString(Topology t);
+
+// "quad integer triangle_cw hw 0x........ x6": the batch line for a patch (to reproduce a failure).
+std::string batchLine(const Patch& patch);
+
+// Number of indices per output line / per primitive in the format: 3 triangles, 2 lines (isoline line and quad/tri
+// line), 1 points.
+int indicesPerPrimitive(const Patch& patch);
+
+// True when GL draws this patch's output primitives (quad/tri triangle_cw/ccw, isoline line); otherwise GL only
+// gives the point array and the indices are derived from it.
+bool hasGlPrimitives(const Patch& patch);
+
+} // namespace oracle
+} // namespace fftess
