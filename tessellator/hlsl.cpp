@@ -74,8 +74,8 @@ static void quadHlsl(const HlslMode& m, const Stage& stage, const float in[6], H
   const float edge[4] = {u0, v0, u1, v1};
   for (int i = 0; i < 4; ++i) out.rounded[i] = m.clamp(m.roundUp(edge[i]));
 
-  float inside[2];
-  bool odd[2];
+  float inside[2] = {0, 0};
+  bool odd[2] = {false, false};
   if (stage.axes == ReductionAxes::OneAxis) {
     // One inside factor from all four edges.
     switch (stage.reduction) {

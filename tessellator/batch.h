@@ -1,0 +1,43 @@
+// The batch text format shared by `fftess tessellate`, the golden data, the GPU oracle and the tests.
+//
+// Input, one patch per line (blank lines and lines starting with '#' are skipped by the caller):
+//   DOMAIN PARTITIONING TOPOLOGY STAGE f0 f1 f2 f3 f4 f5
+// Each factor is a decimal float or "0x" followed by exactly 8 hex digits (the IEEE-754 bits).
+// Output block per patch (every line ends in '\n'):
+//   patch N points P indices I
+//   P lines "UUUUUUUU VVVVVVVV" (float bits, lowercase hex)
+//   the I indices, 3 per line for triangles, 2 for lines (and every non-point isoline output), 1 for points.
+#pragma once
+
+#include <string>
+
+#include "tessellator.h"
+
+namespace fftess {
+
+struct BatchError {
+  int column = 0;    // 1-based token number on the line (0 = the line as a whole)
+  std::string token; // the offending token (empty when a token is missing)
+  std::string message;
+};
+
+// True for lines the format ignores: empty, only whitespace, or first non-blank character '#'.
+bool isBatchSkippable(const std::string& line);
+
+// Parses one patch line. On failure returns false and fills err (the caller adds the line number).
+// Extra tokens after f5 are an error; fewer than 10 tokens is an error.
+bool parseBatchLine(const std::string& line, Patch& patch, BatchError& err);
+
+// Parses one factor token: decimal float (std::strtof, whole token consumed) or 0x + exactly 8 hex digits.
+bool parseFactor(const std::string& token, float& out);
+
+// Appends the output block of one tessellated patch (index n) to out, exactly as the golden .out files.
+void appendHexBlock(std::string& out, int n, const Patch& patch, const Tessellator& result);
+
+// Number of indices per output line for this patch's topology (3, 2 or 1).
+int indicesPerLine(const Patch& patch);
+
+// FNV-1a 64-bit hash of a byte string (the golden .hashes files hash each output block).
+uint64_t fnv1a64(const std::string& bytes);
+
+} // namespace fftess
