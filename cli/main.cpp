@@ -1,0 +1,80 @@
+// fftess: the command-line tool. Subcommands: tessellate, explain, check, sweep, bench (docs/cli.md).
+// Exit statuses: 0 clean, 1 cracks found, 2 bad usage or input, 3 internal error. Errors go to stderr.
+#include "commands.h"
+#include "common.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <exception>
+#include <new>
+
+#ifdef FFTESS_HAVE_VERIFY
+#include "check.h"
+#endif
+
+int main(int argc, char** argv) {
+  using namespace fftess::cli;
+  CLI::App app{"fftess " FFTESS_VERSION
+               ": bit-exact D3D11 tessellator emulator and terrain crack checker.\n"
+               "Run 'fftess SUBCOMMAND --help' for details and an example."};
+  app.set_version_flag("--version", std::string("fftess ") + FFTESS_VERSION);
+  app.require_subcommand(1);
+  app.footer("Examples:\n"
+             "  fftess tessellate -e 'quad integer triangle_cw hw 4 4 4 4 4 4'\n"
+             "  fftess explain --why-pow2\n"
+#ifdef FFTESS_HAVE_VERIFY
+             "  fftess sweep docs/examples/terrain.toml\n"
+#endif
+             "Exit status: 0 clean, 1 cracks found, 2 bad usage or input, 3 internal error.");
+
+  TessellateArgs tessArgs;
+  ExplainArgs explainArgs;
+  BenchArgs benchArgs;
+  CLI::App* tess = addTessellate(app, tessArgs);
+  CLI::App* explain = addExplain(app, explainArgs);
+#ifdef FFTESS_HAVE_VERIFY
+  CheckArgs checkArgs;
+  SweepArgs sweepArgs;
+  CLI::App* check = addCheck(app, checkArgs);
+  CLI::App* sweep = addSweep(app, sweepArgs);
+#endif
+  CLI::App* bench = addBench(app, benchArgs);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::fprintf(stderr, "fftess: error: %s (see fftess --help)\n", e.what());
+    return kExitUsage;
+  }
+
+  try {
+    if (tess->parsed()) return runTessellate(tessArgs);
+    if (explain->parsed()) return runExplain(explainArgs);
+#ifdef FFTESS_HAVE_VERIFY
+    if (check->parsed()) return runCheck(checkArgs);
+    if (sweep->parsed()) return runSweep(sweepArgs);
+#endif
+    if (bench->parsed()) {
+      benchArgs.passThrough = bench->remaining();
+      return runBench(benchArgs, argv[0]);
+    }
+    std::fprintf(stderr, "fftess: error: no subcommand (see fftess --help)\n");
+    return kExitUsage;
+  } catch (const UsageError& e) {
+    std::fprintf(stderr, "fftess: error: %s\n", e.what());
+    return kExitUsage;
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "fftess: internal error: out of memory\n");
+    return kExitInternal;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "fftess: internal error: %s\n", e.what());
+    return kExitInternal;
+  }
+}

@@ -1,0 +1,441 @@
+// fftess tessellate: batch tessellation, one patch per input line, in the exact golden format or human formats.
+#include "commands.h"
+#include "common.h"
+
+#include "tessellator/tessellator.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+namespace fftess::cli {
+namespace {
+
+struct BatchPatch {
+  int line = 0;       // 1-based line number in the input
+  int index = 0;      // 0-based patch number: counts every patch line, malformed ones included
+  std::string text;   // the line with comments stripped and whitespace collapsed
+  Patch patch;
+};
+
+struct BatchError {
+  int line = 0;
+  std::string message;
+};
+
+const char* const kFactorNames[3][6] = {
+    {"Ueq0", "Veq0", "Ueq1", "Veq1", "insideU", "insideV"},
+    {"Ueq0", "Veq0", "Weq0", "inside", "f4", "f5"},
+    {"density", "detail", "f2", "f3", "f4", "f5"},
+};
+
+// Parses one batch line. Returns false with err set on a malformed line.
+bool parseLine(const std::string& raw, int lineNo, const std::string& source, BatchPatch& bp, std::string& err,
+               bool& isPatch) {
+  std::string s = raw;
+  if (auto hash = s.find('#'); hash != std::string::npos) s.erase(hash);
+  if (!s.empty() && s.back() == '\r') s.pop_back();
+  std::istringstream in(s);
+  std::vector<std::string> tok;
+  for (std::string t; in >> t;) tok.push_back(t);
+  isPatch = !tok.empty();
+  if (!isPatch) return true;
+  const std::string where = source + ":" + std::to_string(lineNo) + ": ";
+  auto fail = [&](size_t i, const std::string& what) {
+    err = where + "token " + std::to_string(i + 1) + " " + quoteToken(tok[i]) + ": " + what;
+    return false;
+  };
+  Patch p;
+  if (!parseDomain(tok[0].c_str(), p.domain)) return fail(0, "unknown domain (expected quad|tri|isoline)");
+  if (tok.size() < 2) {
+    err = where + "missing partitioning after " + quoteToken(tok[0]) +
+          " (expected DOMAIN PARTITIONING TOPOLOGY STAGE f0 f1 f2 f3 f4 f5)";
+    return false;
+  }
+  if (!parsePartitioning(tok[1].c_str(), p.partitioning))
+    return fail(1, "unknown partitioning (expected integer|pow2|fractional_even|fractional_odd)");
+  if (tok.size() < 3) {
+    err = where + "missing topology (expected point|line|triangle_cw|triangle_ccw)";
+    return false;
+  }
+  if (!parseOutputPrimitive(tok[2].c_str(), p.primitive))
+    return fail(2, "unknown topology (expected point|line|triangle_cw|triangle_ccw)");
+  if (p.domain == Domain::Isoline &&
+      (p.primitive == OutputPrimitive::TriangleCw || p.primitive == OutputPrimitive::TriangleCcw))
+    return fail(2, "isoline output is point or line");
+  if (tok.size() < 4) {
+    err = where + "missing stage (expected hw|hlsl-avg|hlsl-min|hlsl-max|hlsl-avg-1axis|hlsl-min-1axis|hlsl-max-1axis)";
+    return false;
+  }
+  if (!parseStage(tok[3].c_str(), p.stage))
+    return fail(3, "unknown stage (expected hw|hlsl-avg|hlsl-min|hlsl-max|hlsl-avg-1axis|hlsl-min-1axis|hlsl-max-1axis)");
+  if (tok.size() < 10) {
+    err = where + "expected 6 factors after the stage, got " + std::to_string(tok.size() - 4) +
+          " (format: DOMAIN PARTITIONING TOPOLOGY STAGE f0 f1 f2 f3 f4 f5)";
+    return false;
+  }
+  if (tok.size() > 10) return fail(10, "extra token after the 6 factors");
+  for (int i = 0; i < 6; ++i) {
+    std::string why;
+    if (!parseFactor(tok[4 + i], p.factors[i], why))
+      return fail(4 + i, std::string("factor ") + kFactorNames[static_cast<int>(p.domain)][i] + ": " + why);
+  }
+  bp.line = lineNo;
+  bp.patch = p;
+  bp.text.clear();
+  for (size_t i = 0; i < tok.size(); ++i) bp.text += (i ? " " : "") + tok[i];
+  return true;
+}
+
+int indicesPerPrimitive(const Patch& p) {
+  switch (p.primitive) {
+  case OutputPrimitive::TriangleCw:
+  case OutputPrimitive::TriangleCcw: return 3;
+  case OutputPrimitive::Line: return 2;
+  case OutputPrimitive::Point: return 1;
+  }
+  return 1;
+}
+
+// ---- formats -------------------------------------------------------------------------------------------------
+// hex: exactly the golden .out block.
+void formatHex(std::string& out, int n, const Tessellator& t, const Patch& p) {
+  const auto& pts = t.points();
+  const auto& idx = t.indices();
+  out += "patch " + std::to_string(n) + " points " + std::to_string(pts.size()) + " indices " +
+         std::to_string(idx.size()) + "\n";
+  char buf[32];
+  for (const DomainPoint& q : pts) {
+    std::snprintf(buf, sizeof buf, "%08x %08x\n", floatBits(q.u), floatBits(q.v));
+    out += buf;
+  }
+  const size_t per = static_cast<size_t>(indicesPerPrimitive(p));
+  for (size_t i = 0; i < idx.size(); ++i) {
+    out += std::to_string(idx[i]);
+    out += ((i + 1) % per == 0 || i + 1 == idx.size()) ? '\n' : ' ';
+  }
+}
+
+uint64_t fnv1a(const std::string& s) {
+  uint64_t h = 0xcbf29ce484222325ull;
+  for (unsigned char c : s) {
+    h ^= c;
+    h *= 0x100000001b3ull;
+  }
+  return h;
+}
+
+void formatTable(std::string& out, const BatchPatch& bp, const Tessellator& t) {
+  const Patch& p = bp.patch;
+  const int d = static_cast<int>(p.domain);
+  const int nf = p.domain == Domain::Quad ? 6 : p.domain == Domain::Tri ? 4 : 2;
+  out += "patch " + std::to_string(bp.index) + " (line " + std::to_string(bp.line) + "): " + toString(p.domain) + " " +
+         toString(p.partitioning) + " " + toString(p.primitive) + " " + toString(p.stage) + "\n";
+  out += "  factors:";
+  for (int i = 0; i < nf; ++i) {
+    out += std::string("  ") + kFactorNames[d][i];
+    if (p.stage.hlsl && ((p.domain == Domain::Quad && i >= 4) || (p.domain == Domain::Tri && i == 3)))
+      out += "(scale)";
+    out += "=" + formatFloat(p.factors[i]);
+    if (!std::isfinite(p.factors[i]) || (p.factors[i] != 0 && std::fabs(p.factors[i]) < 1.17549435e-38f))
+      out += " [" + hex8(floatBits(p.factors[i])) + "]";
+  }
+  out += "\n";
+  if (p.stage.hlsl) {
+    const HlslFactors& h = t.hlslFactors();
+    out += "  after HLSL stage (rounded / unrounded):";
+    for (int i = 0; i < nf; ++i)
+      out += std::string("  ") + kFactorNames[d][i] + "=" + formatFloat(h.rounded[i]) + "/" + formatFloat(h.unrounded[i]);
+    out += "\n";
+  }
+  const auto& pts = t.points();
+  const auto& idx = t.indices();
+  if (pts.empty()) {
+    out += "  culled: an outer factor is not > 0 (NaN, zero, negative or -inf): no points, no primitives\n\n";
+    return;
+  }
+  const int per = indicesPerPrimitive(p);
+  const char* prim = per == 3 ? "triangles" : per == 2 ? "segments" : "points";
+  out += "  " + std::to_string(pts.size()) + " points, " + std::to_string(idx.size() / static_cast<size_t>(per)) + " " +
+         prim + " (" + std::to_string(idx.size()) + " indices)\n";
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "  %6s  %-12s %-12s %-8s %-8s%s\n", "#", "u", "v", "u bits", "v bits",
+                p.domain == Domain::Tri ? "  w = 1-u-v" : "");
+  out += buf;
+  for (size_t i = 0; i < pts.size(); ++i) {
+    const DomainPoint& q = pts[i];
+    std::snprintf(buf, sizeof buf, "  %6zu  %-12s %-12s %08x %08x", i, formatFloat(q.u).c_str(), formatFloat(q.v).c_str(),
+                  floatBits(q.u), floatBits(q.v));
+    out += buf;
+    if (p.domain == Domain::Tri) out += "  " + formatFloat(1.0f - q.u - q.v);
+    out += "\n";
+  }
+  if (per > 1) {
+    out += std::string("  ") + prim + ":\n";
+    for (size_t i = 0; i + static_cast<size_t>(per) <= idx.size(); i += static_cast<size_t>(per)) {
+      std::snprintf(buf, sizeof buf, "  %6zu ", i / static_cast<size_t>(per));
+      out += buf;
+      for (int k = 0; k < per; ++k) {
+        std::snprintf(buf, sizeof buf, " %6d", idx[i + static_cast<size_t>(k)]);
+        out += buf;
+      }
+      out += "\n";
+    }
+  }
+  out += "\n";
+}
+
+// Planar position of a domain point: quad/isoline: (u, v); tri: barycentric (u, v, w) on an equilateral triangle
+// with the u = 1 corner on top, v = 1 bottom left, w = 1 bottom right.
+void planar(const Patch& p, const DomainPoint& q, double& x, double& y) {
+  if (p.domain == Domain::Tri) {
+    const double u = q.u, v = q.v, w = 1.0 - u - v;
+    x = u * 0.5 + v * 0.0 + w * 1.0;
+    y = u * 0.0 + v * 0.8660254037844386 + w * 0.8660254037844386;
+    y += (1.0 - 0.8660254037844386) / 2;
+  } else {
+    x = q.u;
+    y = q.v;
+  }
+}
+
+void formatObj(std::string& out, const BatchPatch& bp, const Tessellator& t, size_t& vertexBase) {
+  const Patch& p = bp.patch;
+  out += "o patch_" + std::to_string(bp.index) + "\n# " + bp.text + "\n";
+  char buf[96];
+  for (const DomainPoint& q : t.points()) {
+    double x, y;
+    planar(p, q, x, y);
+    // quad/isoline: x = u, y = v; tri: equilateral layout (see docs/cli.md). 9 significant digits round-trip floats.
+    std::snprintf(buf, sizeof buf, "v %.9g %.9g 0\n", x, y);
+    out += buf;
+  }
+  const auto& idx = t.indices();
+  const int per = indicesPerPrimitive(p);
+  const char* tag = per == 3 ? "f" : per == 2 ? "l" : "p";
+  for (size_t i = 0; i + static_cast<size_t>(per) <= idx.size(); i += static_cast<size_t>(per)) {
+    out += tag;
+    for (int k = 0; k < per; ++k) out += " " + std::to_string(vertexBase + 1 + static_cast<size_t>(idx[i + static_cast<size_t>(k)]));
+    out += "\n";
+  }
+  vertexBase += t.points().size();
+}
+
+std::string xmlEscape(const std::string& s) {
+  std::string o;
+  for (char c : s) {
+    switch (c) {
+    case '&': o += "&amp;"; break;
+    case '<': o += "&lt;"; break;
+    case '>': o += "&gt;"; break;
+    case '"': o += "&quot;"; break;
+    default: o += c;
+    }
+  }
+  return o;
+}
+
+constexpr int kSvgCell = 420;   // pixels per patch cell
+constexpr int kSvgDomain = 360; // pixels of the unit domain
+constexpr int kSvgColumns = 3;
+
+void formatSvgPatch(std::string& out, const BatchPatch& bp, const Tessellator& t, int cell) {
+  const Patch& p = bp.patch;
+  const int cx = (cell % kSvgColumns) * kSvgCell, cy = (cell / kSvgColumns) * (kSvgCell + 40);
+  const double ox = cx + (kSvgCell - kSvgDomain) / 2.0, oy = cy + 48;
+  char buf[256];
+  std::snprintf(buf, sizeof buf, "<g id=\"patch-%d\">\n<text x=\"%d\" y=\"%d\" class=\"t\">patch %d: %s</text>\n", bp.index,
+                cx + 10, cy + 18, bp.index, xmlEscape(std::string(toString(p.domain)) + " " + toString(p.partitioning) +
+                                                          " " + toString(p.primitive) + " " + toString(p.stage)).c_str());
+  out += buf;
+  std::string fac;
+  const int nf = p.domain == Domain::Quad ? 6 : p.domain == Domain::Tri ? 4 : 2;
+  for (int i = 0; i < nf; ++i) fac += std::string(i ? " " : "") + kFactorNames[static_cast<int>(p.domain)][i] + "=" + formatFloat(p.factors[i]);
+  std::snprintf(buf, sizeof buf, "<text x=\"%d\" y=\"%d\" class=\"s\">%s</text>\n", cx + 10, cy + 34, xmlEscape(fac).c_str());
+  out += buf;
+  const auto& pts = t.points();
+  const auto& idx = t.indices();
+  auto X = [&](const DomainPoint& q) { double x, y; planar(p, q, x, y); return ox + x * kSvgDomain; };
+  auto Y = [&](const DomainPoint& q) { double x, y; planar(p, q, x, y); return oy + y * kSvgDomain; };
+  // The domain outline.
+  if (p.domain == Domain::Tri) {
+    DomainPoint a{1, 0}, b{0, 1}, c{0, 0};
+    std::snprintf(buf, sizeof buf, "<polygon class=\"dom\" points=\"%.3f,%.3f %.3f,%.3f %.3f,%.3f\"/>\n", X(a), Y(a), X(b),
+                  Y(b), X(c), Y(c));
+  } else {
+    std::snprintf(buf, sizeof buf, "<rect class=\"dom\" x=\"%.3f\" y=\"%.3f\" width=\"%d\" height=\"%d\"/>\n", ox, oy,
+                  kSvgDomain, kSvgDomain);
+  }
+  out += buf;
+  if (pts.empty()) {
+    std::snprintf(buf, sizeof buf, "<text x=\"%.1f\" y=\"%.1f\" class=\"c\">culled</text>\n", ox + kSvgDomain / 2.0,
+                  oy + kSvgDomain / 2.0);
+    out += buf;
+  }
+  const int per = indicesPerPrimitive(p);
+  if (per == 3) {
+    for (size_t i = 0; i + 3 <= idx.size(); i += 3) {
+      const DomainPoint &a = pts[static_cast<size_t>(idx[i])], &b = pts[static_cast<size_t>(idx[i + 1])],
+                        &c = pts[static_cast<size_t>(idx[i + 2])];
+      std::snprintf(buf, sizeof buf, "<polygon class=\"tri\" points=\"%.3f,%.3f %.3f,%.3f %.3f,%.3f\"/>\n", X(a), Y(a),
+                    X(b), Y(b), X(c), Y(c));
+      out += buf;
+    }
+  } else if (per == 2) {
+    for (size_t i = 0; i + 2 <= idx.size(); i += 2) {
+      const DomainPoint &a = pts[static_cast<size_t>(idx[i])], &b = pts[static_cast<size_t>(idx[i + 1])];
+      std::snprintf(buf, sizeof buf, "<line class=\"seg\" x1=\"%.3f\" y1=\"%.3f\" x2=\"%.3f\" y2=\"%.3f\"/>\n", X(a), Y(a),
+                    X(b), Y(b));
+      out += buf;
+    }
+  }
+  for (const DomainPoint& q : pts) {
+    std::snprintf(buf, sizeof buf, "<circle class=\"pt\" cx=\"%.3f\" cy=\"%.3f\" r=\"1.6\"/>\n", X(q), Y(q));
+    out += buf;
+  }
+  std::snprintf(buf, sizeof buf, "<text x=\"%d\" y=\"%.1f\" class=\"s\">%zu points, %zu indices</text>\n</g>\n", cx + 10,
+                oy + kSvgDomain + 18, pts.size(), idx.size());
+  out += buf;
+}
+
+std::string svgHeader(int patches) {
+  const int cols = patches < kSvgColumns ? (patches < 1 ? 1 : patches) : kSvgColumns;
+  const int rows = (patches + kSvgColumns - 1) / kSvgColumns;
+  const int w = cols * kSvgCell, h = (rows < 1 ? 1 : rows) * (kSvgCell + 40);
+  char buf[1024];
+  std::snprintf(buf, sizeof buf,
+                "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+                "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%d\" height=\"%d\" viewBox=\"0 0 %d %d\">\n"
+                "<title>fftess tessellate</title>\n"
+                "<style>.dom{fill:#f4f6fa;stroke:#223;stroke-width:1.5}.tri{fill:#cfe0f7;fill-opacity:0.35;"
+                "stroke:#2a5599;stroke-width:0.6}.seg{stroke:#2a5599;stroke-width:0.8}.pt{fill:#b02020}"
+                ".t{font:bold 13px sans-serif}.s{font:11px monospace}.c{font:bold 20px sans-serif;fill:#b02020;"
+                "text-anchor:middle}</style>\n"
+                "<rect width=\"100%%\" height=\"100%%\" fill=\"white\"/>\n",
+                w, h, w, h);
+  return buf;
+}
+
+} // namespace
+
+CLI::App* addTessellate(CLI::App& app, TessellateArgs& a) {
+  CLI::App* sub = app.add_subcommand("tessellate", "Tessellate patches given one per line (batch format)");
+  sub->footer(
+      "Batch line: DOMAIN PARTITIONING TOPOLOGY STAGE f0 f1 f2 f3 f4 f5   (blank lines and # comments ignored)\n"
+      "  DOMAIN quad|tri|isoline   PARTITIONING integer|pow2|fractional_even|fractional_odd\n"
+      "  TOPOLOGY point|line|triangle_cw|triangle_ccw   STAGE hw|hlsl-avg|hlsl-min|hlsl-max|hlsl-*-1axis\n"
+      "  factor: decimal float, or 0x + 8 hex digits (IEEE-754 bits)\n"
+      "Examples:\n"
+      "  fftess tessellate -e 'quad fractional_odd triangle_cw hw 3.5 2 5 4 3 3'\n"
+      "  fftess tessellate --format hex patches.txt > patches.out\n"
+      "  fftess tessellate --format svg -e 'tri integer triangle_cw hw 4 4 4 4 0 0' -o tri.svg");
+  sub->add_option("input", a.input, "Batch file ('-' or omitted: standard input)");
+  sub->add_option("-e,--patch", a.patches, "A batch line given on the command line (repeatable; replaces INPUT)");
+  sub->add_option("-f,--format", a.format, "Output format")
+      ->check(CLI::IsMember({"hex", "table", "obj", "svg", "hashes"}))
+      ->capture_default_str();
+  sub->add_option("-o,--output", a.output, "Write to FILE (atomically: temp file + rename) instead of stdout");
+  sub->add_flag("--flush-denormals", a.flushDenormals, "Flush denormal factors to zero first (as llvmpipe does)");
+  sub->add_flag("--keep-going", a.keepGoing,
+                "Print the well-formed patches even if some lines are malformed (exit status is still 2)");
+  return sub;
+}
+
+int runTessellate(const TessellateArgs& a) {
+  // Read and parse everything first: with a malformed line nothing at all is printed (unless --keep-going).
+  std::vector<std::string> lines;
+  std::string source;
+  if (!a.patches.empty()) {
+    if (a.input != "-") throw UsageError("tessellate: give either INPUT or --patch lines, not both");
+    lines = a.patches;
+    source = "--patch";
+  } else if (a.input == "-") {
+    source = "<stdin>";
+    for (std::string l; std::getline(std::cin, l);) lines.push_back(l);
+    if (std::cin.bad()) throw UsageError("tessellate: cannot read standard input");
+  } else {
+    source = a.input;
+    std::ifstream f(a.input, std::ios::binary);
+    if (!f) throw UsageError("tessellate: cannot open input '" + a.input + "': " + std::strerror(errno));
+    for (std::string l; std::getline(f, l);) lines.push_back(l);
+    if (f.bad()) throw UsageError("tessellate: cannot read input '" + a.input + "'");
+  }
+
+  std::vector<BatchPatch> patches;
+  std::vector<std::string> errors;
+  int patchIndex = 0;
+  for (size_t i = 0; i < lines.size(); ++i) {
+    BatchPatch bp;
+    std::string err;
+    bool isPatch = false;
+    const int lineNo = static_cast<int>(i) + 1;
+    if (!parseLine(lines[i], lineNo, source, bp, err, isPatch)) {
+      errors.push_back(err);
+      ++patchIndex;
+      continue;
+    }
+    if (!isPatch) continue;
+    bp.index = patchIndex++;
+    patches.push_back(std::move(bp));
+  }
+  for (size_t i = 0; i < errors.size() && i < 20; ++i) std::fprintf(stderr, "fftess: error: %s\n", errors[i].c_str());
+  if (errors.size() > 20) std::fprintf(stderr, "fftess: error: ... and %zu more malformed lines\n", errors.size() - 20);
+  if (!errors.empty() && !a.keepGoing) return kExitUsage;
+
+  Options opt;
+  opt.flushDenormals = a.flushDenormals;
+  Tessellator tess;
+  const bool toStdout = a.output == "-";
+  AtomicFile file(a.output);
+  std::string block;
+  auto emit = [&](std::string& s) {
+    if (toStdout) {
+      writeStdout(s);
+    } else {
+      file.buffer() += s;
+    }
+    s.clear();
+  };
+  if (a.format == "svg") {
+    block = svgHeader(static_cast<int>(patches.size()));
+    emit(block);
+  }
+  size_t vertexBase = 0;
+  int cell = 0;
+  for (const BatchPatch& bp : patches) {
+    tess.tessellate(bp.patch, opt);
+    if (a.format == "hex") {
+      formatHex(block, bp.index, tess, bp.patch);
+    } else if (a.format == "hashes") {
+      std::string b;
+      formatHex(b, bp.index, tess, bp.patch);
+      char h[24];
+      std::snprintf(h, sizeof h, " %016llx\n", static_cast<unsigned long long>(fnv1a(b)));
+      block = bp.text + h;
+    } else if (a.format == "table") {
+      formatTable(block, bp, tess);
+    } else if (a.format == "obj") {
+      formatObj(block, bp, tess, vertexBase);
+    } else {
+      formatSvgPatch(block, bp, tess, cell++);
+    }
+    emit(block);
+  }
+  if (a.format == "svg") {
+    block = "</svg>\n";
+    emit(block);
+  }
+  if (toStdout) {
+    if (std::fflush(stdout) != 0) throw std::runtime_error(std::string("writing to stdout failed: ") + std::strerror(errno));
+  } else {
+    file.commit();
+  }
+  return errors.empty() ? kExitClean : kExitUsage;
+}
+
+} // namespace fftess::cli
