@@ -272,6 +272,7 @@ struct Stats {
 };
 
 struct Report {
+  std::string error;             // non-empty: the scene or camera is invalid and nothing was checked
   std::vector<Finding> findings; // non-matching pairs (and matches with keepMatches), in layout order
   bool truncated = false;        // more findings than maxFindings
   Stats stats;

@@ -1,0 +1,110 @@
+// Internal header of fftess_verify (not installed, not part of the contract). No CGAL here.
+#pragma once
+
+#include "verify/verify.h"
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace fftess::verify::detail {
+
+// ---------------------------------------------------------------------------------------------------------------
+// heightfield.cpp
+
+// Bakes a procedural generator (fbm / ridge) into texels; values in [0, 1].
+std::vector<float> generateHeightfield(const Displacement& d);
+// Reads a RAW heightmap; returns false with a message on a missing file or a wrong size.
+bool readRawHeightmap(const std::string& path, int width, int height, int bits, std::vector<float>& out,
+                      std::string& error);
+
+// Bilinear sampling as a GPU sampler does it, clamp addressing. (tx, tz) in texture coordinates 0..1.
+// Order of float operations:
+//   s = tx * width - 0.5; i0 = floor(s); f = s - i0; f quantised to subtexelBits (round to nearest);
+//   t = t0 + f * (t1 - t0) per row (x first), then across rows (z), each product and sum rounded to float.
+float sampleBilinear(const Displacement& d, float tx, float tz);
+
+// ---------------------------------------------------------------------------------------------------------------
+// terrain.cpp
+
+struct TerrainPatch {
+  PatchRef ref;
+  int64_t ux = 0, uz = 0;       // lower corner in base units (smallest patch size) from the terrain's min corner
+  int64_t size = 1;             // in base units (2^level)
+  Vec3 corners[4];              // flat corners (y = 0), corners[u + 2v] (lod.h's convention)
+  float tex[4][2];              // corner texture coordinates (domain.height_uv = interpolated)
+  // Neighbours across each edge (FactorIndex order): up to two patch indices, -1 where none.
+  std::array<std::array<int, 2>, 4> nb{{{-1, -1}, {-1, -1}, {-1, -1}, {-1, -1}}};
+};
+
+struct Terrain {
+  const Scene* scene = nullptr;
+  std::vector<TerrainPatch> patches;
+  Extent extent;
+  float invSizeX = 1, invSizeZ = 1; // 1 / extent size, float
+  int64_t unitsX = 0, unitsZ = 0;   // extent in base units
+  double unit = 1;                  // world size of a base unit
+  bool adjacency = false;           // patches of different sizes exist (tile rings with rings > 1)
+};
+
+// Builds the layout: patches, corners, neighbours. The scene must be valid (loadScene validated it).
+bool buildTerrain(const Scene& scene, Terrain& out, std::string& error);
+
+// Domain-shader emulation: world position of (u, v) on patch p.
+Vec3 evalDomain(const Terrain& t, const TerrainPatch& p, float u, float v);
+
+// Hull-shader factors of every patch for a camera: 6 factors per patch (lod.h order) plus whether the LOD culled it.
+struct PatchFactors {
+  float f[6];
+};
+void computeFactors(const Terrain& t, const Camera& camera, std::vector<PatchFactors>& out);
+
+lod::Camera toLodCamera(const Camera& c);
+
+// Edge points cache (per thread): edgePoints() keyed by the factor's bits.
+class EdgeCache {
+public:
+  EdgeCache(Partitioning p, const Stage& s, const Options& o) : partitioning_(p), stage_(s), options_(o) {}
+  const EdgePoints& get(float factor);
+
+private:
+  Partitioning partitioning_;
+  Stage stage_;
+  Options options_;
+  std::unordered_map<uint32_t, EdgePoints> map_;
+};
+
+// Domain coordinates of parameter t on edge e of a quad.
+inline DomainPoint edgeDomain(int e, float t) {
+  switch (e) {
+  case Ueq0: return {0.0f, t};
+  case Ueq1: return {1.0f, t};
+  case Veq0: return {t, 0.0f};
+  default: return {t, 1.0f};
+  }
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// check_exact.cpp (CGAL)
+
+struct ExactVerdict {
+  Classification classification = Classification::Match;
+  double gap = 0;      // crack: the largest distance of a vertex to the other polyline
+  int gapSide = 0;     // 0: side a, 1: side b
+  int gapIndex = -1;   // index into that side's points
+};
+
+// a: side a's points inside the shared part (in order); aFull: side a's whole polyline (a vertex of b is tested
+// against it); b: side b's points (all of them are in the shared part). All in the same direction.
+ExactVerdict classifyExact(Kernel kernel, const Vec3* a, int na, const Vec3* aFull, int naFull, const Vec3* b,
+                           int nb);
+
+// ---------------------------------------------------------------------------------------------------------------
+// check.cpp
+
+Report checkTerrain(const Terrain& t, const Camera& camera, const CheckOptions& options, EdgeCache& cache);
+bool validateCamera(const Camera& c, std::string& error);
+
+} // namespace fftess::verify::detail

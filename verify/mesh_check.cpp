@@ -1,0 +1,132 @@
+// Whole-mesh check: full tessellation of every drawn patch -> polygon soup -> exactly-equal points merged ->
+// degenerate polygons removed -> Surface_mesh -> border edges (CGAL Polygon Mesh Processing). Border edges on the
+// terrain's outer boundary (or beside a culled patch, which the edge check skips too) are not cracks.
+#include "verify/internal.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/border.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <algorithm>
+#include <cstring>
+#include <map>
+#include <unordered_map>
+
+namespace fftess::verify {
+
+namespace {
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = K::Point_3;
+using Mesh = CGAL::Surface_mesh<Point>;
+namespace PMP = CGAL::Polygon_mesh_processing;
+
+struct Key {
+  float x, y, z;
+  bool operator<(const Key& o) const {
+    if (x != o.x) return x < o.x;
+    if (y != o.y) return y < o.y;
+    return z < o.z;
+  }
+};
+
+// Patch edges a domain point lies on, as a bit mask over FactorIndex.
+unsigned edgeMask(const DomainPoint& d) {
+  unsigned m = 0;
+  if (d.u == 0.0f) m |= 1u << Ueq0;
+  if (d.u == 1.0f) m |= 1u << Ueq1;
+  if (d.v == 0.0f) m |= 1u << Veq0;
+  if (d.v == 1.0f) m |= 1u << Veq1;
+  return m;
+}
+
+} // namespace
+
+MeshReport checkSceneMesh(const Scene& scene, const Camera& camera, const CheckOptions& options) {
+  MeshReport rep;
+  detail::Terrain t;
+  std::string error;
+  if (!detail::buildTerrain(scene, t, error) || !detail::validateCamera(camera, error)) return rep;
+  std::vector<detail::PatchFactors> factors;
+  detail::computeFactors(t, camera, factors);
+
+  const size_t n = t.patches.size();
+  std::vector<char> drawn(n, 0);
+  std::vector<Point> points;
+  std::vector<std::vector<std::size_t>> polygons;
+  std::map<Key, std::vector<std::pair<int, unsigned>>> where; // point -> (patch, edge mask) for edge points
+  Tessellator tess;
+  for (size_t i = 0; i < n; ++i) {
+    Patch p;
+    p.domain = Domain::Quad;
+    p.partitioning = scene.partitioning;
+    p.primitive = OutputPrimitive::TriangleCw;
+    p.stage = scene.stage;
+    std::memcpy(p.factors, factors[i].f, sizeof p.factors);
+    const int count = tess.tessellate(p, options.tessellator);
+    if (count == 0) continue;
+    drawn[i] = 1;
+    ++rep.patchesDrawn;
+    const size_t base = points.size();
+    for (const DomainPoint& d : tess.points()) {
+      const Vec3 w = detail::evalDomain(t, t.patches[i], d.u, d.v);
+      points.emplace_back(w.x, w.y, w.z);
+      if (unsigned m = edgeMask(d)) where[Key{w.x, w.y, w.z}].push_back({static_cast<int>(i), m});
+    }
+    const auto& idx = tess.indices();
+    for (size_t k = 0; k + 2 < idx.size(); k += 3)
+      polygons.push_back({base + static_cast<size_t>(idx[k]), base + static_cast<size_t>(idx[k + 1]),
+                          base + static_cast<size_t>(idx[k + 2])});
+  }
+  if (polygons.empty()) return rep;
+
+  PMP::merge_duplicate_points_in_polygon_soup(points, polygons);
+  PMP::repair_polygon_soup(points, polygons); // drops polygons with a repeated vertex (zero-area duplicates)
+  rep.triangles = static_cast<int64_t>(polygons.size());
+  rep.vertices = static_cast<int64_t>(points.size());
+  PMP::orient_polygon_soup(points, polygons);
+  Mesh mesh;
+  PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+
+  std::vector<Mesh::Halfedge_index> border;
+  PMP::border_halfedges(faces(mesh), mesh, std::back_inserter(border));
+  rep.borderEdges = static_cast<int64_t>(border.size());
+
+  auto sideNeighboursDrawn = [&](int patch, int e) {
+    const auto& nb = t.patches[patch].nb[e];
+    if (nb[0] < 0) return false; // outer boundary
+    for (int q : nb)
+      if (q >= 0 && !drawn[q]) return false; // beside a culled patch: not checked by either check
+    return true;
+  };
+  for (auto h : border) {
+    const Point& p = mesh.point(mesh.source(h));
+    const Point& q = mesh.point(mesh.target(h));
+    const Key kp{static_cast<float>(p.x()), static_cast<float>(p.y()), static_cast<float>(p.z())};
+    const Key kq{static_cast<float>(q.x()), static_cast<float>(q.y()), static_cast<float>(q.z())};
+    auto ip = where.find(kp), iq = where.find(kq);
+    bool inner = false;
+    if (ip != where.end() && iq != where.end()) {
+      for (const auto& [pa, ma] : ip->second)
+        for (const auto& [pb, mb] : iq->second) {
+          if (pa != pb) continue;
+          const unsigned common = ma & mb;
+          for (int e = 0; e < 4; ++e)
+            if ((common >> e) & 1u) {
+              if (!sideNeighboursDrawn(pa, e)) continue;
+              inner = true;
+              rep.flagged.push_back({pa, e});
+            }
+        }
+    }
+    if (inner) ++rep.innerBorderEdges;
+  }
+  std::sort(rep.flagged.begin(), rep.flagged.end());
+  rep.flagged.erase(std::unique(rep.flagged.begin(), rep.flagged.end()), rep.flagged.end());
+  return rep;
+}
+
+} // namespace fftess::verify

@@ -1,0 +1,74 @@
+// Sweep driver: cameras on T threads, one terrain shared read-only, one edge cache per thread.
+#include "verify/internal.h"
+
+#include <algorithm>
+#include <mutex>
+#include <thread>
+
+namespace fftess::verify {
+
+SweepResult sweep(const Scene& scene, const std::vector<Camera>& cameras, const CheckOptions& options,
+                  const SweepOptions& sweepOptions) {
+  SweepResult out;
+  out.cameras.resize(cameras.size());
+  if (sweepOptions.keepReports) out.reports.resize(cameras.size());
+  for (size_t i = 0; i < cameras.size(); ++i) out.cameras[i].cameraIndex = i;
+
+  detail::Terrain terrain;
+  std::string error;
+  if (!detail::buildTerrain(scene, terrain, error)) return out;
+
+  int threads = sweepOptions.threads > 0 ? sweepOptions.threads
+                                         : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  threads = static_cast<int>(std::min<size_t>(static_cast<size_t>(threads), std::max<size_t>(cameras.size(), 1)));
+
+  std::atomic<size_t> next{0};
+  std::mutex mutex; // serialises the progress callback and the totals
+  size_t done = 0;
+  auto worker = [&]() {
+    detail::EdgeCache cache(scene.partitioning, scene.stage, options.tessellator);
+    for (;;) {
+      if (sweepOptions.cancel && sweepOptions.cancel->load()) return;
+      const size_t i = next.fetch_add(1);
+      if (i >= cameras.size()) return;
+      Report rep = detail::checkTerrain(terrain, cameras[i], options, cache);
+      CameraResult& cr = out.cameras[i];
+      cr.done = rep.error.empty();
+      cr.stats = rep.stats;
+      for (const Finding& f : rep.findings) {
+        if (f.classification == Classification::Match) continue;
+        if (!cr.hasFinding || f.gapWorld > cr.worst.gapWorld) {
+          cr.worst = f;
+          cr.hasFinding = true;
+        }
+      }
+      if (sweepOptions.keepReports) out.reports[i] = std::move(rep);
+      std::lock_guard<std::mutex> lock(mutex);
+      ++done;
+      if (sweepOptions.progress) sweepOptions.progress(done, cameras.size());
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int k = 1; k < threads; ++k) pool.emplace_back(worker);
+  worker();
+  for (auto& th : pool) th.join();
+
+  for (const CameraResult& cr : out.cameras) {
+    if (!cr.done) continue;
+    ++out.camerasDone;
+    Stats& s = out.total;
+    s.patches += cr.stats.patches;
+    s.culledPatches += cr.stats.culledPatches;
+    s.edgesChecked += cr.stats.edgesChecked;
+    s.skippedCulled += cr.stats.skippedCulled;
+    s.matches += cr.stats.matches;
+    s.tJunctions += cr.stats.tJunctions;
+    s.cracks += cr.stats.cracks;
+    s.worstGapWorld = std::max(s.worstGapWorld, cr.stats.worstGapWorld);
+    s.worstGapPixels = std::max(s.worstGapPixels, cr.stats.worstGapPixels);
+  }
+  out.cancelled = sweepOptions.cancel && sweepOptions.cancel->load() && out.camerasDone < cameras.size();
+  return out;
+}
+
+} // namespace fftess::verify
