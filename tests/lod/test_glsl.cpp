@@ -1,0 +1,215 @@
+// The GLSL side: every lod/shaders/*.glsl file compiles as a GLSL 4.50 tessellation control shader with
+// glslangValidator (with the files it needs in front), a TCS that calls every scheme compiles, the embedded copies
+// (lod::glslSource) equal the files, and the files keep to the shared subset (f-suffixed float literals).
+#include <catch2/catch.hpp>
+
+#include <cctype>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "lod/lod.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string readFile(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// Writes `text` as NAME.tesc under the test's temp folder and runs glslangValidator on it; returns its exit
+// status (0 = compiled) and puts its output in `log`.
+int compileTcs(const std::string& name, const std::string& text, std::string& log) {
+  const fs::path dir = FFTESS_LOD_TEST_TMP;
+  fs::create_directories(dir);
+  const fs::path src = dir / (name + ".tesc");
+  const fs::path out = dir / (name + ".log");
+  {
+    std::ofstream f(src, std::ios::binary);
+    f << text;
+  }
+  const std::string cmd =
+      std::string("\"") + FFTESS_GLSLANG_VALIDATOR + "\" -S tesc \"" + src.string() + "\" > \"" + out.string() + "\" 2>&1";
+  const int rc = std::system(cmd.c_str());
+  log = readFile(out);
+  return rc;
+}
+
+const char* const kHeader = "#version 450\nlayout(vertices = 4) out;\n";
+
+std::string sourcesUpTo(int last) {
+  std::string s;
+  for (int i = 0; i <= last; ++i) {
+    s += fftess::lod::glslSource(i);
+    s += "\n";
+  }
+  return s;
+}
+
+// Removes // and /* */ comments.
+std::string stripComments(const std::string& s) {
+  std::string o;
+  for (size_t i = 0; i < s.size(); ++i) {
+    if (s.compare(i, 2, "//") == 0) {
+      while (i < s.size() && s[i] != '\n') {
+        ++i;
+      }
+      o += '\n';
+    } else if (s.compare(i, 2, "/*") == 0) {
+      i = s.find("*/", i + 2);
+      if (i == std::string::npos) {
+        break;
+      }
+      ++i;
+    } else {
+      o += s[i];
+    }
+  }
+  return o;
+}
+
+} // namespace
+
+TEST_CASE("glsl: the harness rejects a broken shader", "[lod][glsl]") {
+  std::string log;
+  CHECK(compileTcs("broken", std::string(kHeader) + "void main() { gl_TessLevelOuter[0] = undeclared; }\n", log) != 0);
+  CHECK(log.find("undeclared") != std::string::npos);
+  CHECK(compileTcs("minimal", std::string(kHeader) + "void main() { gl_TessLevelOuter[0] = 1.0f; }\n", log) == 0);
+}
+
+TEST_CASE("glsl: every shader file compiles as a tessellation control shader", "[lod][glsl]") {
+  REQUIRE(fftess::lod::glslSourceCount() == 7);
+  for (int i = 0; i < fftess::lod::glslSourceCount(); ++i) {
+    const std::string name = fftess::lod::glslSourceName(i);
+    std::string log;
+    const std::string text =
+        std::string(kHeader) + sourcesUpTo(i) + "void main() { gl_TessLevelOuter[0] = 1.0f; }\n";
+    INFO(name << ":\n" << log);
+    CHECK(compileTcs(name, text, log) == 0);
+    INFO(log);
+  }
+}
+
+TEST_CASE("glsl: a TCS that calls every scheme compiles", "[lod][glsl]") {
+  const std::string main = R"glsl(
+layout(std140, binding = 0) uniform Lod {
+  mat4 uView;
+  mat4 uProj;
+  vec4 uViewportEye;  // xy viewport; z unused
+  vec4 uEye;
+  vec4 uNeighbours;   // per-edge sizes
+  vec4 uLevels;       // geomorph neighbour levels
+};
+layout(location = 0) in vec3 inPos[];
+layout(location = 0) out vec3 outPos[];
+
+void main() {
+  outPos[gl_InvocationID] = inPos[gl_InvocationID];
+  LodCamera cam;
+  cam.view = uView;
+  cam.proj = uProj;
+  cam.viewport = uViewportEye.xy;
+  cam.eye = uEye.xyz;
+  cam.depthZeroToOne = false;
+  ScreenSphereSettings ss;
+  ss.triWidth = 3.0f;
+  ss.minFactor = 1.0f;
+  ss.maxFactor = 64.0f;
+  ss.insideRule = kInsideAverage;
+  ss.frustumCull = true;
+  ss.culledFactor = -1.0f;
+  LodResult r = screenSphereLod(inPos[0], inPos[1], inPos[2], inPos[3], false, 0.0f, 0.0f, cam, ss);
+  TileSettings ts;
+  ts.sphere = ss;
+  ts.clampMode = kClampPow2;
+  ts.rebuild = kRebuildEdgeVector;
+  TileNeighbourInfo tn;
+  tn.size[0] = uNeighbours.x; tn.size[1] = uNeighbours.y; tn.size[2] = uNeighbours.z; tn.size[3] = uNeighbours.w;
+  tn.oddU = false;
+  tn.oddV = true;
+  for (int i = 0; i < 4; ++i) {
+    tn.farCorner[i] = vec3(0.0f);
+  }
+  LodResult t = nvidiaTileLod(inPos[0], inPos[1], inPos[2], inPos[3], false, 0.0f, 0.0f, tn, cam, ts);
+  DistancePow2Settings ds;
+  ds.minDistance = 20.0f; ds.maxDistance = 500.0f; ds.minExponent = 0.0f; ds.maxExponent = 6.0f;
+  ds.frustumCull = true;
+  LodResult d = distancePow2Lod(inPos[0], inPos[1], inPos[2], inPos[3], true, -10.0f, 10.0f, cam, ds);
+  BonaventuraSettings bs;
+  bs.minDistance = 20.0f; bs.maxDistance = 500.0f; bs.minExponent = 0.0f; bs.maxExponent = 6.0f;
+  bs.angleCorrection = true; bs.rank = 0.5f; bs.up = vec3(0.0f, 1.0f, 0.0f);
+  bs.minFactor = 1.0f; bs.maxFactor = 64.0f; bs.frustumCull = true; bs.culledFactor = 0.0f;
+  bs.literalFourthCornerAngle = false;
+  LodResult b = bonaventuraLod(inPos[0], inPos[1], inPos[2], inPos[3], false, 0.0f, 0.0f, cam, bs);
+  ClipDiameterSettings cs;
+  cs.edgesPerScreenHeight = 16.0f; cs.minFactor = 1.0f; cs.maxFactor = 64.0f; cs.insideRule = kInsideMax;
+  cs.frustumCull = false; cs.culledFactor = 0.0f;
+  LodResult c = clipDiameterLod(inPos[0], inPos[1], inPos[2], inPos[3], false, 0.0f, 0.0f, cam, cs);
+  GeomorphSettings gs;
+  gs.minDistance = 20.0f; gs.maxDistance = 500.0f; gs.finestLevel = 5.0f; gs.coarsestLevel = 0.0f;
+  gs.literalArticleWeight = false;
+  float level = geomorphLevelAt(patchCentre(inPos[0], inPos[1], inPos[2], inPos[3]), cam, gs);
+  LodResult g = geomorphLod(level, uLevels.x, uLevels.y, uLevels.z, uLevels.w);
+  float fine[65];
+  for (int i = 0; i < 65; ++i) {
+    fine[i] = float(i);
+  }
+  GeomorphBorder border = geomorphBorderHeights(level, uLevels.x, fine, gs);
+  if (gl_InvocationID == 0) {
+    // D3D Ueq0 Veq0 Ueq1 Veq1 = GL outer[0..3]; insideU insideV = inner[0..1].
+    for (int i = 0; i < 4; ++i) {
+      gl_TessLevelOuter[i] = max(max(r.e[i].factor, t.e[i].factor), max(d.e[i].factor, b.e[i].factor)) +
+                             c.e[i].factor * 0.0f + g.e[i].factor * 0.0f + border.heights[i] * 0.0f;
+    }
+    gl_TessLevelInner[0] = r.e[4].factor;
+    gl_TessLevelInner[1] = r.e[5].factor;
+  }
+}
+)glsl";
+  std::string log;
+  const int rc = compileTcs("all_schemes", std::string(kHeader) + sourcesUpTo(6) + main, log);
+  INFO(log);
+  CHECK(rc == 0);
+}
+
+TEST_CASE("glsl: embedded sources equal the files; files keep to the shared subset", "[lod][glsl]") {
+  for (int i = 0; i < fftess::lod::glslSourceCount(); ++i) {
+    const std::string name = fftess::lod::glslSourceName(i);
+    const std::string file = readFile(fs::path(FFTESS_LOD_SHADER_DIR) / name);
+    INFO(name);
+    CHECK(file == fftess::lod::glslSource(i));
+    const std::string code = stripComments(file);
+    // Every float literal ends in f (else C++ computes in double); no out / inout parameters; no uniforms.
+    for (size_t k = 0; k < code.size(); ++k) {
+      const bool startsNumber = std::isdigit(static_cast<unsigned char>(code[k])) &&
+                                (k == 0 || !(std::isalnum(static_cast<unsigned char>(code[k - 1])) ||
+                                             code[k - 1] == '_' || code[k - 1] == '.'));
+      if (!startsNumber) {
+        continue;
+      }
+      size_t e = k;
+      while (e < code.size() && std::isdigit(static_cast<unsigned char>(code[e]))) {
+        ++e;
+      }
+      if (e < code.size() && code[e] == '.') {
+        ++e;
+        while (e < code.size() && std::isdigit(static_cast<unsigned char>(code[e]))) {
+          ++e;
+        }
+        INFO("literal at offset " << k << ": " << code.substr(k, e - k + 1));
+        CHECK((e < code.size() && code[e] == 'f'));
+      }
+      k = e;
+    }
+    CHECK(code.find(" inout ") == std::string::npos);
+    CHECK(code.find("(out ") == std::string::npos);
+    CHECK(code.find(", out ") == std::string::npos);
+    CHECK(code.find("uniform") == std::string::npos);
+  }
+}

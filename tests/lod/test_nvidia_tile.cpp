@@ -1,0 +1,186 @@
+// Scheme 2: non-uniform patches in tile rings (rebuilt neighbour edge, half factor, integer / pow2 clamps).
+#include <catch2/catch.hpp>
+
+#include "lod_test_util.h"
+
+using namespace fftess::lod;
+using lodtest::bits;
+using lodtest::hex;
+
+namespace {
+
+NvidiaTileParams tileParams(float triWidth, AdjacencyClamp clamp, Reconstruction rebuild) {
+  NvidiaTileParams p;
+  p.sphere.tessellatedTriWidth = triWidth;
+  p.clamp = clamp;
+  p.reconstruction = rebuild;
+  return p;
+}
+
+} // namespace
+
+TEST_CASE("nvidiaTile: smaller side rebuilds the larger edge and halves its factor (hand-computed)",
+          "[lod][nvidia_tile]") {
+  // The patch's Ueq0 runs from (-1,-1,-8) to (-1,1,-8). Rebuilt (even: beyond the end corner) it runs to the far
+  // corner (-1,3,-8); odd: from (-1,-3,-8). (The patch faces the camera, so y is not a height here: FarCorner.) Either way a sphere of diameter 4 at distance 8: 4/8 * 960 = 480 px.
+  // 480 / 14 = 34.2857132 (float), so: none -> 17.1428566, integer -> 36 / 2 = 18, pow2 -> 64 / 2 = 32.
+  const Camera cam = lodtest::exactCamera();
+  const Patch patch = lodtest::facingPatch(0.0f, 0.0f, -8.0f);
+  const float f = 480.0f / 14.0f;
+  struct Case {
+    AdjacencyClamp clamp;
+    float want;
+    uint32_t fix;
+  } cases[] = {{AdjacencyClamp::None, f * 0.5f, 0u},
+               {AdjacencyClamp::Integer, 18.0f, FixIntegerClamp},
+               {AdjacencyClamp::Pow2, 32.0f, FixPow2Clamp}};
+  for (const Case& c : cases) {
+    for (bool odd : {false, true}) {
+      TileNeighbours n;
+      n.size[0] = 2.0f;
+      n.oddV = odd;
+      n.farCorner[0] = glm::vec3(-1.0f, odd ? -3.0f : 3.0f, -8.0f);
+      const PatchLod r = nvidiaTile(patch, n, cam, tileParams(14.0f, c.clamp, Reconstruction::FarCorner));
+      INFO("clamp " << static_cast<int>(c.clamp) << " odd " << odd << " got " << hex(r.factors[0]));
+      CHECK(bits(r.factors[0]) == bits(c.want));
+      CHECK(bits(r.why.factor[0].metric) == bits(480.0f));
+      CHECK(r.why.factor[0].fixes == (FixLargerNeighbour | c.fix));
+      // The other edges see same-size neighbours: 240 px / 14.
+      CHECK(bits(r.factors[1]) == bits(240.0f / 14.0f));
+      CHECK(r.why.factor[1].fixes == FixNone);
+      // Inside factors come from the patch's own edges, not the halved one.
+      CHECK(bits(r.factors[5]) == bits(240.0f / 14.0f));
+    }
+  }
+  CHECK(bits(f * 0.5f) == bits(17.1428566f));
+}
+
+TEST_CASE("nvidiaTile: larger side rounds its own factor", "[lod][nvidia_tile]") {
+  const Camera cam = lodtest::exactCamera();
+  const Patch patch = lodtest::facingPatch(0.0f, 0.0f, -8.0f); // 240 px per edge
+  TileNeighbours n;
+  n.size[2] = 0.5f;
+  // 240 / 14 = 17.142857: integer -> 18, pow2 -> 32, none -> as is.
+  CHECK(bits(nvidiaTile(patch, n, cam, tileParams(14.0f, AdjacencyClamp::Integer, Reconstruction::EdgeVector))
+                 .factors[2]) == bits(18.0f));
+  CHECK(bits(nvidiaTile(patch, n, cam, tileParams(14.0f, AdjacencyClamp::Pow2, Reconstruction::EdgeVector))
+                 .factors[2]) == bits(32.0f));
+  CHECK(bits(nvidiaTile(patch, n, cam, tileParams(14.0f, AdjacencyClamp::None, Reconstruction::EdgeVector))
+                 .factors[2]) == bits(240.0f / 14.0f));
+  // 240 / 120 = 2 -> pow2 lower bound 4; integer 2.
+  CHECK(bits(nvidiaTile(patch, n, cam, tileParams(120.0f, AdjacencyClamp::Pow2, Reconstruction::EdgeVector))
+                 .factors[2]) == bits(4.0f));
+  CHECK(bits(nvidiaTile(patch, n, cam, tileParams(120.0f, AdjacencyClamp::Integer, Reconstruction::EdgeVector))
+                 .factors[2]) == bits(2.0f));
+  const PatchLod r = nvidiaTile(patch, n, cam, tileParams(14.0f, AdjacencyClamp::Pow2, Reconstruction::EdgeVector));
+  CHECK(r.why.factor[2].fixes == (FixSmallerNeighbour | FixPow2Clamp));
+}
+
+TEST_CASE("nvidiaTile: clamp ranges over a camera sweep", "[lod][nvidia_tile]") {
+  // Pow2: larger side in {4, 8, 16, 32, 64}, smaller side in {2, .., 32}; integer: larger side even, smaller
+  // side its half; both sides of a jump agree (smaller == larger / 2) when the far corner is given.
+  const Patch big = lodtest::terrainPatch(0.0f, 0.0f, 16.0f, true);
+  Patch small0 = lodtest::terrainPatch(-8.0f, 0.0f, 8.0f, true); // its Ueq1 is the first half of big's Ueq0
+  Patch small1 = lodtest::terrainPatch(-8.0f, 8.0f, 8.0f, true); // the second half
+  TileNeighbours nb;
+  nb.size[0] = 0.5f;
+  TileNeighbours n0, n1;
+  n0.size[2] = 2.0f;
+  n0.oddV = false;
+  n0.farCorner[2] = big.corners[2];
+  n1.size[2] = 2.0f;
+  n1.oddV = true;
+  n1.farCorner[2] = big.corners[0];
+  int checked = 0;
+  for (AdjacencyClamp clamp : {AdjacencyClamp::None, AdjacencyClamp::Integer, AdjacencyClamp::Pow2}) {
+    for (int i = 0; i < 300; ++i) {
+      const Camera cam = lodtest::sweepCamera(i);
+      NvidiaTileParams p = tileParams(3.0f, clamp, Reconstruction::FarCorner);
+      p.sphere.frustumCull = false;
+      const float L = nvidiaTile(big, nb, cam, p).factors[0];
+      const float s0 = nvidiaTile(small0, n0, cam, p).factors[2];
+      const float s1 = nvidiaTile(small1, n1, cam, p).factors[2];
+      INFO("camera " << i << " clamp " << static_cast<int>(clamp) << " L " << hex(L) << " s0 " << hex(s0));
+      CHECK(bits(s0) == bits(s1));
+      CHECK(bits(s0) == bits(L * 0.5f));
+      if (clamp == AdjacencyClamp::Pow2) {
+        CHECK((L == 4.0f || L == 8.0f || L == 16.0f || L == 32.0f || L == 64.0f));
+        CHECK(s0 >= 2.0f);
+        CHECK(s0 <= 32.0f);
+      }
+      if (clamp == AdjacencyClamp::Integer) {
+        CHECK(std::fmod(L, 2.0f) == 0.0f);
+        CHECK(L >= 2.0f);
+        CHECK(L <= 64.0f);
+        CHECK(std::floor(s0) == s0);
+      }
+      ++checked;
+    }
+  }
+  CHECK(checked == 900);
+}
+
+TEST_CASE("nvidiaTile: EdgeVector rebuild agrees on flat exact terrain, can miss on displaced terrain",
+          "[lod][nvidia_tile]") {
+  // Flat, integer coordinates: p1 + (p1 - p0) is exact, so the rebuilt edge is the larger patch's edge.
+  const Patch big = lodtest::terrainPatch(0.0f, 0.0f, 16.0f, false);
+  const Patch small0 = lodtest::terrainPatch(-8.0f, 0.0f, 8.0f, false);
+  TileNeighbours nb;
+  nb.size[0] = 0.5f;
+  TileNeighbours n0;
+  n0.size[2] = 2.0f;
+  int mismatchesDisplaced = 0;
+  const Patch bigD = lodtest::terrainPatch(3.0f, 0.0f, 16.0f, true); // x = 3: heights vary along the edge
+  const Patch small0D = lodtest::terrainPatch(-5.0f, 0.0f, 8.0f, true);
+  for (int i = 0; i < 100; ++i) {
+    const Camera cam = lodtest::sweepCamera(i);
+    NvidiaTileParams p = tileParams(60.0f, AdjacencyClamp::None, Reconstruction::EdgeVector);
+    p.sphere.frustumCull = false;
+    CHECK(bits(nvidiaTile(small0, n0, cam, p).factors[2]) == bits(nvidiaTile(big, nb, cam, p).factors[0] * 0.5f));
+    CHECK(nvidiaTile(bigD, nb, cam, p).why.factor[0].fixes == FixSmallerNeighbour); // unclamped: 60 px triangles
+    if (bits(nvidiaTile(small0D, n0, cam, p).factors[2]) != bits(nvidiaTile(bigD, nb, cam, p).factors[0] * 0.5f)) {
+      ++mismatchesDisplaced;
+    }
+  }
+  // Displaced: the rebuilt far end has the wrong height, so the two sides compute different spheres.
+  CHECK(mismatchesDisplaced > 0);
+}
+
+TEST_CASE("nvidiaTile: culling writes -1", "[lod][nvidia_tile][culling]") {
+  const Camera cam = lodtest::exactCamera();
+  TileNeighbours n;
+  n.size[0] = 2.0f;
+  const PatchLod r = nvidiaTile(lodtest::facingPatch(0.0f, 0.0f, 8.0f), n, cam);
+  CHECK(r.why.culled);
+  for (float f : r.factors) {
+    CHECK(bits(f) == bits(-1.0f));
+  }
+}
+
+TEST_CASE("assignNeighbourSizes and patchNeighbours", "[lod][nvidia_tile]") {
+  // A ring 4 tiles wide with a 2-tile hole (tiles 1..2), not the outermost.
+  TileSides t = assignNeighbourSizes(0, 0, 2, 4, false);
+  CHECK((t.size[0] == 2.0f && t.size[1] == 2.0f && t.size[2] == 1.0f && t.size[3] == 1.0f));
+  t = assignNeighbourSizes(0, 1, 2, 4, false); // left of the hole
+  CHECK((t.size[0] == 2.0f && t.size[1] == 1.0f && t.size[2] == 0.5f && t.size[3] == 1.0f));
+  t = assignNeighbourSizes(3, 2, 2, 4, false); // right of the hole
+  CHECK((t.size[0] == 0.5f && t.size[1] == 1.0f && t.size[2] == 2.0f && t.size[3] == 1.0f));
+  t = assignNeighbourSizes(1, 0, 2, 4, false); // below the hole
+  CHECK((t.size[0] == 1.0f && t.size[1] == 2.0f && t.size[2] == 1.0f && t.size[3] == 0.5f));
+  t = assignNeighbourSizes(2, 3, 2, 4, true); // above the hole, outermost ring
+  CHECK((t.size[0] == 1.0f && t.size[1] == 0.5f && t.size[2] == 1.0f && t.size[3] == 1.0f));
+  t = assignNeighbourSizes(1, 1, 0, 4, false); // innermost ring (no hole), interior tile
+  CHECK((t.size[0] == 1.0f && t.size[1] == 1.0f && t.size[2] == 1.0f && t.size[3] == 1.0f));
+
+  TileSides side;
+  side.size[0] = 2.0f;
+  side.size[3] = 0.5f;
+  TileNeighbours n = patchNeighbours(side, 0, 7, 8);
+  CHECK((n.size[0] == 2.0f && n.size[1] == 1.0f && n.size[2] == 1.0f && n.size[3] == 0.5f));
+  CHECK_FALSE(n.oddU);
+  CHECK(n.oddV);
+  n = patchNeighbours(side, 3, 4, 8);
+  CHECK((n.size[0] == 1.0f && n.size[3] == 1.0f));
+  CHECK(n.oddU);
+  CHECK_FALSE(n.oddV);
+}
