@@ -2,6 +2,12 @@
 // without a denormal factor must agree exactly (points, primitives as coordinates, indices). Patches with a denormal
 // factor are counted apart: llvmpipe flushes denormal factors to zero, so a denormal outer factor culls the patch
 // there, while the reference tessellates it; anything else is a failure. Needs no emulator.
+// Only the full .out files are used: the stored hashes in the .hashes files do not follow the recipe in
+// golden/README.md (a culled patch's block hashes to none of them), so they cannot check anything yet.
+// Columns: compared/agree = patches without denormal factors and how many agree; primitive = of those agreeing,
+// patches where GL drew primitives (triangles, isoline lines); dup-prim = of those, patches with duplicate points
+// (where the index comparison says more than the coordinate one); denormal/agree/GL-culled = patches with a
+// denormal factor, how many agree anyway, how many llvmpipe culled instead.
 //
 //   fftess_oracle_golden_test [GOLDEN_DIR]      (default ../shared/golden)
 #include "test_support.h"
@@ -18,8 +24,8 @@ int main(int argc, char** argv) {
   const std::string dir = argc > 1 ? argv[1] : "../shared/golden";
   auto oracle = createOracleOrExit(name);
   int failures = 0;
-  std::printf("%-8s %8s %9s %9s %11s %9s %9s %11s %7s\n", "file", "patches", "compared", "agree", "denormal", "agree",
-              "culled-GL", "points", "seconds");
+  std::printf("%-8s %8s %9s %9s %10s %9s %9s %9s %9s %10s %7s\n", "file", "patches", "compared", "agree", "primitive",
+              "dup-prim", "denormal", "agree", "GL-culled", "points", "seconds");
   for (const char* domain : {"quad", "tri", "isoline"}) {
     const std::string base = dir + "/" + domain + "-hw";
     std::ifstream in(base + ".in");
@@ -49,7 +55,7 @@ int main(int argc, char** argv) {
       return 1;
     }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    int compared = 0, agree = 0, denormal = 0, denormalAgree = 0, denormalCulled = 0;
+    int compared = 0, agree = 0, withPrimitives = 0, duplicates = 0, denormal = 0, denormalAgree = 0, denormalCulled = 0;
     long long points = 0;
     for (size_t i = 0; i < patches.size(); ++i) {
       const Verdict v = compare(patches[i], results[i], expected[i]);
@@ -70,14 +76,18 @@ int main(int argc, char** argv) {
       ++compared;
       if (v.all()) {
         ++agree;
+        if (hasGlPrimitives(patches[i]) && results[i].pointCount() > 0) {
+          ++withPrimitives;
+          duplicates += hasDuplicatePoints(results[i]);
+        }
       } else {
         ++failures;
         std::fprintf(stderr, "%s.in line %d (patch %zu) differs: %s\n  %s\n", base.c_str(), lines[i].lineNumber, i,
                      batchLine(patches[i]).c_str(), v.firstDifference.c_str());
       }
     }
-    std::printf("%-8s %8zu %9d %9d %11d %9d %9d %11lld %7.2f\n", domain, patches.size(), compared, agree, denormal,
-                denormalAgree, denormalCulled, points, seconds);
+    std::printf("%-8s %8zu %9d %9d %10d %9d %9d %9d %9d %10lld %7.2f\n", domain, patches.size(), compared, agree,
+                withPrimitives, duplicates, denormal, denormalAgree, denormalCulled, points, seconds);
   }
   if (failures) {
     std::printf("oracle_golden: %d patch(es) differ from the reference\n", failures);

@@ -1,5 +1,6 @@
 #include "test_support.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -80,6 +81,14 @@ std::string hexPair(uint32_t u, uint32_t v) {
   return buf;
 }
 } // namespace
+
+bool hasDuplicatePoints(const Result& r) {
+  std::vector<uint64_t> keys;
+  keys.reserve(r.points.size() / 2);
+  for (size_t i = 0; i + 1 < r.points.size(); i += 2) keys.push_back(uint64_t(r.points[i]) << 32 | r.points[i + 1]);
+  std::sort(keys.begin(), keys.end());
+  return std::adjacent_find(keys.begin(), keys.end()) != keys.end();
+}
 
 bool hasDenormalFactor(const Patch& p) {
   for (int i = 0; i < usedFactors(p); ++i)

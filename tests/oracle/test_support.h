@@ -45,6 +45,10 @@ struct Verdict {
 };
 Verdict compare(const Patch& patch, const Result& got, const Expected& want);
 
+// True when two points of the result have the same (u,v) bits (the reference emits such duplicates for some
+// fractional factors): there, index equality says more than coordinate equality.
+bool hasDuplicatePoints(const Result& result);
+
 // True when a factor the domain uses is a denormal (either sign): llvmpipe flushes those to zero.
 bool hasDenormalFactor(const Patch& patch);
 // True when an outer factor the domain uses is a denormal.
