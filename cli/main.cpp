@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
+#include <string>
 #include <exception>
 #include <new>
 
@@ -41,6 +42,17 @@ int main(int argc, char** argv) {
 #endif
   CLI::App* bench = addBench(app, benchArgs);
 
+  std::string names;
+  bool known = false;
+  for (const CLI::App* sub : static_cast<const CLI::App&>(app).get_subcommands([](const CLI::App*) { return true; })) {
+    names += (names.empty() ? "" : "|") + sub->get_name();
+    known = known || (argc > 1 && sub->get_name() == argv[1]);
+  }
+  if (argc > 1 && argv[1][0] != '-' && !known) {
+    std::fprintf(stderr, "fftess: error: unknown subcommand '%s' (expected %s; see fftess --help)\n", argv[1],
+                 names.c_str());
+    return kExitUsage;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

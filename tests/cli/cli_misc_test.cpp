@@ -1,0 +1,68 @@
+// fftess: version, help on every subcommand, bad usage, bench launcher.
+#include "run.h"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+
+using clitest::run;
+
+TEST_CASE("fftess --version", "[cli]") {
+  const auto r = run({"--version"});
+  CHECK(r.status == 0);
+  CHECK(r.out.rfind("fftess ", 0) == 0);
+}
+
+TEST_CASE("--help on every subcommand shows an example line", "[cli]") {
+  std::vector<std::string> subs{"tessellate", "explain", "bench"};
+#ifdef FFTESS_HAVE_VERIFY
+  subs.push_back("check");
+  subs.push_back("sweep");
+#endif
+  const auto top = run({"--help"});
+  CHECK(top.status == 0);
+  for (const std::string& s : subs) {
+    INFO(s);
+    CHECK(top.out.find(s) != std::string::npos);
+    const auto r = run({s, "--help"});
+    CHECK(r.status == 0);
+    CHECK(r.out.find("Example") != std::string::npos);
+    CHECK(r.out.find("fftess " + s) != std::string::npos);
+  }
+}
+
+TEST_CASE("bad usage exits 2 with a one-line reason on stderr", "[cli]") {
+  struct Case {
+    std::vector<std::string> args;
+    const char* mention;
+  } cases[] = {
+      {{}, "subcommand"},
+      {{"frobnicate"}, "frobnicate"},
+      {{"tessellate", "--format", "png"}, "--format"},
+      {{"tessellate", "--no-such-option"}, "--no-such-option"},
+      {{"explain", "--partitioning", "quadratic", "12", "6"}, "--partitioning"},
+      {{"explain", "12"}, "BIG and SMALL"},
+      {{"explain", "12", "six"}, "'six'"},
+      {{"explain", "--why-pow2", "12", "6"}, "--why-pow2"},
+      {{"explain", "--stage", "gpu", "12", "6"}, "--stage"},
+  };
+  for (const Case& c : cases) {
+    std::string joined;
+    for (const auto& a : c.args) joined += a + " ";
+    INFO(joined);
+    const auto r = run(c.args);
+    CHECK(r.status == 2);
+    CHECK(r.out.empty());
+    CHECK(r.err.find(c.mention) != std::string::npos);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  }
+}
+
+#ifdef FFTESS_HAVE_BENCH
+TEST_CASE("fftess bench runs the benchmark program (listing only, nothing timed)", "[cli][bench]") {
+  const auto r = run({"bench", "--benchmark_list_tests=true"});
+  CHECK(r.status == 0);
+  CHECK(r.out.find("Tessellate") != std::string::npos);
+  CHECK(r.out.find("EdgePoints") != std::string::npos);
+}
+#endif
