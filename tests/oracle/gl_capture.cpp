@@ -238,6 +238,7 @@ struct GlOracle::Impl {
   };
   std::map<ProgramKey, Program> programs;
   std::vector<uint32_t> captured;
+  int drawCalls = 0;
 
   bool compile(GLuint shader, const std::string& src, std::string& error) {
     const char* p = src.c_str();
@@ -318,6 +319,7 @@ struct GlOracle::Impl {
     gl.glBeginQuery(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN, queryWritten);
     gl.glBeginTransformFeedback(mode);
     gl.glDrawArrays(GL_PATCHES, 0, count);
+    ++drawCalls;
     gl.glEndTransformFeedback();
     gl.glEndQuery(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN);
     gl.glEndQuery(GL_PRIMITIVES_GENERATED);
@@ -677,9 +679,11 @@ bool GlOracle::Impl::runGroup(const std::vector<Patch>& patches, const std::vect
   return true;
 }
 
+int GlOracle::drawCalls() const { return impl_->drawCalls; }
+
 bool GlOracle::run(const std::vector<Patch>& patches, std::vector<Result>& results, std::string& error) {
   results.assign(patches.size(), Result{});
-  drawCalls_ = 0;
+  impl_->drawCalls = 0;
   // Group by domain and spacing: one upload of factors and one program per pass.
   std::map<std::pair<int, int>, std::vector<int>> groups;
   for (size_t i = 0; i < patches.size(); ++i)

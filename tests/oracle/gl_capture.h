@@ -65,7 +65,7 @@ public:
   bool run(const std::vector<Patch>& patches, std::vector<Result>& results, std::string& error);
 
   // Statistics of the last run().
-  int drawCalls() const { return drawCalls_; }
+  int drawCalls() const;
 
   struct Impl;
 
@@ -74,7 +74,6 @@ private:
   std::unique_ptr<Impl> impl_;
   std::string renderer_;
   std::string version_;
-  int drawCalls_ = 0;
 };
 
 // ---- batch format (shared with the CLI's `tessellate --format hex`; parsed here independently) ----

@@ -85,7 +85,7 @@ int main(int argc, char** argv) {
     }
   }
   std::fwrite(out.data(), 1, out.size(), stdout);
-  std::fprintf(stderr, "fftess_gl_oracle: %zu patches on %s in %.2f s\n", patches.size(), oracle->renderer().c_str(),
-               seconds);
+  std::fprintf(stderr, "fftess_gl_oracle: %zu patches on %s in %.2f s (%d draw calls)\n", patches.size(),
+               oracle->renderer().c_str(), seconds, oracle->drawCalls());
   return std::fflush(stdout) == 0 ? 0 : 4;
 }
