@@ -1,0 +1,194 @@
+// The exact edge check: uniform patches never crack, a broken LOD is caught, exact vs float predicates, and the
+// whole-mesh check agrees with the edge check on every test scene. Both CGAL kernels throughout.
+#include "verify_test_util.h"
+
+#include "verify/internal.h"
+
+#include <cmath>
+#include <cstring>
+
+using namespace fftess::verify;
+using namespace fftess::verify::test;
+using fftess::Partitioning;
+
+namespace {
+
+const Kernel kKernels[] = {Kernel::Epick, Kernel::Epeck};
+
+uint32_t bitsOf(float f) {
+  uint32_t b;
+  std::memcpy(&b, &f, sizeof b);
+  return b;
+}
+
+} // namespace
+
+TEST_CASE("uniform_grid_never_cracks: every scheme and partitioning", "[verify][check]") {
+  const char* schemes[] = {"constant", "screen_sphere", "distance_pow2", "bonaventura", "clip_diameter"};
+  const char* parts[] = {"integer", "pow2", "fractional_odd", "fractional_even"};
+  for (const char* scheme : schemes)
+    for (const char* part : parts) {
+      Scene s = loadExample("grid.toml", {std::string("lod.scheme=") + scheme,
+                                          std::string("tessellation.partitioning=") + part, "lod.factor=7.3",
+                                          "layout.patches_x=10", "layout.patches_z=10",
+                                          "layout.corners=reconstructed"});
+      for (Kernel k : kKernels) {
+        for (const Camera& cam : orbitCameras(s, 2, 30.0f, 12.0f)) {
+          CheckOptions o;
+          o.kernel = k;
+          Report r = checkScene(s, cam, o);
+          INFO(scheme << " " << part << " " << toString(k));
+          REQUIRE(r.error.empty());
+          CHECK(r.stats.edgesChecked + r.stats.skippedCulled == 2 * 10 * 9);
+          CHECK(r.stats.edgesChecked > 0);
+          CHECK(r.stats.cracks == 0);
+          CHECK(r.stats.tJunctions == 0);
+          CHECK(r.findings.empty());
+        }
+      }
+    }
+}
+
+TEST_CASE("broken_lod_patch_center_is_caught", "[verify][check]") {
+  for (Kernel k : kKernels) {
+    CheckOptions o;
+    o.kernel = k;
+    Scene broken = loadExample("broken_lod.toml");
+    Report r = checkScene(broken, broken.camera, o);
+    INFO(toString(k));
+    CHECK(r.stats.cracks > 0);
+    REQUIRE_FALSE(r.findings.empty());
+    const Finding& f = r.findings.front();
+    CHECK(f.classification == Classification::Crack);
+    // The two sides of a same-size edge disagree on the factor: that is the bug the verifier points at.
+    CHECK(f.a.patch.level == f.b.patch.level);
+    CHECK(bitsOf(f.a.hullFactor) != bitsOf(f.b.hullFactor));
+    CHECK(f.gapWorld > 0);
+    CHECK(f.gapPixels > 0);
+    CHECK(f.a.firstMismatch >= 1); // the corners always agree
+    // The same scene with the edge-midpoint sphere is watertight.
+    Scene fixed = loadExample("broken_lod.toml", {"lod.scheme=screen_sphere"});
+    Report g = checkScene(fixed, fixed.camera, o);
+    CHECK(g.stats.cracks == 0);
+    CHECK(g.stats.tJunctions == 0);
+  }
+}
+
+// The float checker evaluates CGAL's collinearity determinant in float. Side b has a vertex at
+// (1, float(1/3), 0), side a the single segment (0,0,0)-(3,1,0). Exactly, float(1/3) = 0x3EAAAAAB =
+// 0.3333333432674407958984375 is 2^-25 / 3 above 1/3, so the vertex is off the segment: a crack of width
+// |3*float(1/3) - 1| / sqrt(10) = 2^-25 / sqrt(10) ~ 9.43e-9. In float, the determinant's products round the
+// difference away and the vertex appears to lie on the segment: a T-junction. The exact kernels are right:
+// displacing the two sides differently can only widen a gap that already exists.
+TEST_CASE("exact_and_float_checkers_disagree_on_a_sub_ulp_offset", "[verify][check]") {
+  const float third = 1.0f / 3.0f;
+  REQUIRE(bitsOf(third) == 0x3EAAAAABu);
+  const Vec3 a[] = {{0, 0, 0}, {3, 1, 0}};
+  const Vec3 b[] = {{0, 0, 0}, {1, third, 0}, {3, 1, 0}};
+  const double expected = std::ldexp(1.0, -25) / std::sqrt(10.0);
+  for (Kernel k : kKernels) {
+    detail::ExactVerdict v = detail::classifyExact(k, a, 2, a, 2, b, 3);
+    INFO(toString(k));
+    CHECK(v.classification == Classification::Crack);
+    CHECK(v.gapSide == 1);
+    CHECK(v.gapIndex == 1);
+    CHECK(v.gap == Approx(expected).epsilon(1e-6));
+  }
+  detail::ExactVerdict naive = detail::classifyExact(Kernel::FloatNaive, a, 2, a, 2, b, 3);
+  CHECK(naive.classification == Classification::TJunction);
+}
+
+TEST_CASE("t_junction_on_flat_terrain_crack_when_displaced", "[verify][check]") {
+  // Integer clamp at a 12 | 2x6 jump: flat terrain keeps every vertex on the big edge's line (T-junctions);
+  // displacement lifts the off-line vertices (cracks). Same pairs, same first mismatch.
+  for (Kernel k : kKernels) {
+    CheckOptions o;
+    o.kernel = k;
+    Scene flat = loadExample("terrain.toml", {"lod.adjacency_clamp=integer", "displacement.kind=none"});
+    Report rf = checkScene(flat, flat.camera, o);
+    CHECK(rf.stats.tJunctions > 0);
+    CHECK(rf.stats.cracks == 0);
+    for (const Finding& f : rf.findings) CHECK(f.gapWorld == 0);
+  }
+}
+
+TEST_CASE("whole_mesh_check_agrees_with_edge_check", "[verify][check][mesh]") {
+  struct Case {
+    const char* file;
+    std::vector<std::string> overrides;
+  };
+  const Case cases[] = {
+      {"rings_small.toml", {}},
+      {"rings_small.toml", {"lod.adjacency_clamp=none"}},
+      {"rings_small.toml", {"lod.adjacency_clamp=integer"}},
+      {"rings_small.toml", {"lod.adjacency_clamp=integer", "displacement.kind=none"}},
+      {"rings_small.toml", {"lod.displaced_corners=true"}},
+      {"grid.toml", {}},
+      {"broken_lod.toml", {}},
+      {"luna.toml", {}},
+  };
+  for (const Case& c : cases) {
+    Scene s = loadExample(c.file, c.overrides);
+    CheckOptions o;
+    o.maxFindings = 1000000;
+    Report r = checkScene(s, s.camera, o);
+    MeshReport m = checkSceneMesh(s, s.camera, o);
+    std::string label = c.file;
+    for (const auto& ov : c.overrides) label += " " + ov;
+    INFO(label << ": edge check " << r.stats.cracks << " cracks, " << r.stats.tJunctions << " T-junctions; mesh "
+               << m.innerBorderEdges << " inner border edges");
+    REQUIRE_FALSE(r.truncated);
+    CHECK(m.patchesDrawn == r.stats.patches - r.stats.culledPatches);
+    CHECK(m.triangles > 0);
+    CHECK((m.innerBorderEdges > 0) == (r.stats.cracks + r.stats.tJunctions > 0));
+    CHECK(flaggedPatchEdges(r) == m.flagged);
+  }
+}
+
+TEST_CASE("epick_and_epeck_agree_on_every_verdict", "[verify][check]") {
+  Scene s = loadExample("rings_small.toml", {"lod.adjacency_clamp=none"});
+  CheckOptions a, b;
+  a.kernel = Kernel::Epick;
+  b.kernel = Kernel::Epeck;
+  Report ra = checkScene(s, s.camera, a), rb = checkScene(s, s.camera, b);
+  REQUIRE(ra.findings.size() == rb.findings.size());
+  CHECK(ra.stats.cracks > 0);
+  CHECK(ra.stats.cracks == rb.stats.cracks);
+  CHECK(ra.stats.tJunctions == rb.stats.tJunctions);
+  for (size_t i = 0; i < ra.findings.size(); ++i) {
+    CHECK(ra.findings[i].classification == rb.findings[i].classification);
+    CHECK(ra.findings[i].gapWorld == Approx(rb.findings[i].gapWorld).epsilon(1e-9));
+  }
+}
+
+// Domain-shader formulas, hand-checked: one patch of size 0.5 centred at 0.02 has corners x = -0.23f (0xBE6B851F)
+// and 0.27f (0x3E8A3D71). At u = 1, "lerp" computes -0.23f + 1*(0.27f - -0.23f): the difference 0.5 rounds, and
+// the sum lands one ulp below the corner, 0x3E8A3D70; "blend" computes -0.23f*0 + 0.27f*1 = the corner exactly.
+// That ulp is why two patches can disagree at a shared corner although they read the same vertex buffer.
+TEST_CASE("domain_formula_order_decides_corner_bits", "[verify][domain]") {
+  const char* base = R"([layout]
+kind = "grid"
+patches_x = 1
+patches_z = 1
+patch_size = 0.5
+center = [0.02, 0.02]
+corners = "shared"
+[lod]
+scheme = "constant"
+[tessellation]
+partitioning = "integer"
+[camera]
+eye = [0.0, 5.0, -5.0]
+target = [0.0, 0.0, 0.0]
+)";
+  SceneResult lerp = parseScene(base, "f.toml", {"domain.formula=lerp"});
+  SceneResult blend = parseScene(base, "f.toml", {"domain.formula=blend"});
+  REQUIRE(lerp.ok);
+  REQUIRE(blend.ok);
+  const Extent e = terrainExtent(lerp.scene);
+  REQUIRE(bitsOf(e.minX) == 0xBE6B851Fu);
+  REQUIRE(bitsOf(e.maxX) == 0x3E8A3D71u);
+  CHECK(bitsOf(domainPosition(lerp.scene, 0, 1.0f, 0.0f).x) == 0x3E8A3D70u);
+  CHECK(bitsOf(domainPosition(blend.scene, 0, 1.0f, 0.0f).x) == 0x3E8A3D71u);
+  CHECK(bitsOf(domainPosition(lerp.scene, 0, 0.0f, 0.0f).x) == 0xBE6B851Fu);
+}

@@ -1,0 +1,165 @@
+// Scene files: the bundled examples load; every malformed scene is rejected with the key and the file position.
+#include "verify_test_util.h"
+
+#include <cmath>
+
+using namespace fftess::verify;
+using namespace fftess::verify::test;
+
+namespace {
+
+const char* kBase = R"(name = "t"
+[layout]
+kind = "tile_rings"
+rings = 2
+tiles_per_ring_edge = 4
+patches_per_tile_edge = 2
+base_patch_size = 1.0
+[displacement]
+kind = "none"
+[lod]
+scheme = "screen_sphere"
+adjacency_clamp = "pow2"
+[tessellation]
+partitioning = "fractional_even"
+[camera]
+eye = [0.0, 10.0, -20.0]
+target = [0.0, 0.0, 0.0]
+)";
+
+std::string replaced(std::string s, const std::string& from, const std::string& to) {
+  const size_t at = s.find(from);
+  REQUIRE(at != std::string::npos);
+  return s.replace(at, from.size(), to);
+}
+
+void requireError(const SceneResult& r, const std::vector<std::string>& parts) {
+  INFO(r.error);
+  REQUIRE_FALSE(r.ok);
+  for (const std::string& p : parts) CHECK(r.error.find(p) != std::string::npos);
+}
+
+} // namespace
+
+TEST_CASE("bundled example scenes load", "[verify][scene]") {
+  for (const char* name : {"terrain.toml", "grid.toml", "rings_small.toml", "broken_lod.toml", "luna.toml"}) {
+    INFO(name);
+    Scene s = loadExample(name);
+    CHECK(patchCount(s) > 0);
+    CHECK(s.source.find(name) != std::string::npos);
+  }
+}
+
+TEST_CASE("default scene is the NVIDIA sample setup", "[verify][scene]") {
+  Scene s = loadExample("terrain.toml");
+  CHECK(s.layout.kind == LayoutKind::TileRings);
+  CHECK(s.layout.patchesPerTileEdge == 8);
+  CHECK(s.lod.scheme == LodScheme::ScreenSphere);
+  CHECK(s.lod.targetPixels == 3.0f);
+  CHECK(s.camera.width == 1920);
+  CHECK(s.camera.height == 1200);
+  CHECK(s.partitioning == fftess::Partitioning::FractionalEven);
+  CHECK(s.lod.adjacencyClamp == AdjacencyClamp::Pow2);
+  CHECK(s.displacement.kind == DisplacementKind::Fbm);
+  REQUIRE(s.displacement.texels);
+  CHECK(s.displacement.texels->size() == size_t(513) * 513);
+  // rings 3 of 8x8 tiles of 8x8 patches: 64 tiles + 2 x 48 tiles.
+  CHECK(patchCount(s) == (64 + 48 + 48) * 64);
+}
+
+TEST_CASE("tile ring layout: sizes and extent", "[verify][scene]") {
+  SceneResult r = parseScene(kBase, "t.toml");
+  REQUIRE(r.ok);
+  // ring 0: 4x4 tiles of 2x2 patches; ring 1: 12 tiles of 2x2 patches of size 2.
+  CHECK(patchCount(r.scene) == 16 * 4 + 12 * 4);
+  Extent e = terrainExtent(r.scene);
+  CHECK(e.minX == -8.0f);
+  CHECK(e.maxX == 8.0f);
+  CHECK(patchRef(r.scene, 0).ring == 0);
+  CHECK(patchRef(r.scene, 16 * 4).ring == 1);
+  CHECK(patchRef(r.scene, 16 * 4).level == 1);
+}
+
+TEST_CASE("malformed scenes name the key and the file position", "[verify][scene]") {
+  SECTION("syntax error") { requireError(parseScene("[layout\nkind = 1", "bad.toml"), {"bad.toml:1:"}); }
+  SECTION("missing table") {
+    requireError(parseScene(replaced(kBase, "[lod]\nscheme = \"screen_sphere\"\nadjacency_clamp = \"pow2\"\n", ""),
+                            "t.toml"),
+                 {"t.toml:", "lod: missing table"});
+  }
+  SECTION("missing key") {
+    requireError(parseScene(replaced(kBase, "partitioning = \"fractional_even\"\n", ""), "t.toml"),
+                 {"tessellation.partitioning: missing key"});
+  }
+  SECTION("wrong type") {
+    requireError(parseScene(replaced(kBase, "rings = 2", "rings = \"two\""), "t.toml"),
+                 {"t.toml:4:9: layout.rings: expected an integer, got a string"});
+  }
+  SECTION("negative size") {
+    requireError(parseScene(replaced(kBase, "base_patch_size = 1.0", "base_patch_size = -1.0"), "t.toml"),
+                 {"t.toml:7:", "layout.base_patch_size: must be > 0"});
+  }
+  SECTION("odd tile count") {
+    requireError(parseScene(replaced(kBase, "tiles_per_ring_edge = 4", "tiles_per_ring_edge = 6"), "t.toml"),
+                 {"t.toml:5:", "layout.tiles_per_ring_edge"});
+  }
+  SECTION("NaN in a camera") {
+    requireError(parseScene(replaced(kBase, "eye = [0.0, 10.0, -20.0]", "eye = [0.0, nan, -20.0]"), "t.toml"),
+                 {"t.toml:16:", "camera.eye", "finite"});
+  }
+  SECTION("camera looking at itself") {
+    requireError(parseScene(replaced(kBase, "target = [0.0, 0.0, 0.0]", "target = [0.0, 10.0, -20.0]"), "t.toml"),
+                 {"t.toml:17:", "camera.target"});
+  }
+  SECTION("unknown key") {
+    requireError(parseScene(replaced(kBase, "rings = 2", "rings = 2\nringz = 3"), "t.toml"),
+                 {"t.toml:5:", "layout.ringz: unknown key"});
+  }
+  SECTION("unknown table") {
+    requireError(parseScene(std::string(kBase) + "[lighting]\nsun = 1\n", "t.toml"), {"t.toml:", "lighting: unknown key"});
+  }
+  SECTION("unknown enum value") {
+    requireError(parseScene(replaced(kBase, "adjacency_clamp = \"pow2\"", "adjacency_clamp = \"pow3\""), "t.toml"),
+                 {"t.toml:12:", "lod.adjacency_clamp: unknown value \"pow3\""});
+  }
+  SECTION("heightmap of the wrong size") {
+    std::string text = replaced(kBase, "kind = \"none\"",
+                                "kind = \"raw\"\nfile = \"luna_heightmap.raw\"\nwidth = 100\nheight = 129\nbits = 8");
+    requireError(parseScene(text, "t.toml", {}, FFTESS_EXAMPLES_DIR),
+                 {"t.toml:10:", "displacement.file", "16641 bytes, expected 12900"});
+  }
+  SECTION("missing heightmap file") {
+    std::string text = replaced(kBase, "kind = \"none\"",
+                                "kind = \"raw\"\nfile = \"nope.raw\"\nwidth = 4\nheight = 4");
+    requireError(parseScene(text, "t.toml", {}, FFTESS_EXAMPLES_DIR), {"displacement.file", "cannot open"});
+  }
+  SECTION("raw keys on a procedural displacement") {
+    requireError(parseScene(replaced(kBase, "kind = \"none\"", "kind = \"fbm\"\nwidth = 4"), "t.toml"),
+                 {"t.toml:10:", "displacement.width: only allowed with kind = \"raw\""});
+  }
+}
+
+TEST_CASE("overrides are validated like the file", "[verify][scene]") {
+  SceneResult ok = parseScene(kBase, "t.toml", {"lod.adjacency_clamp=integer", "camera.eye=[1, 2, 3]",
+                                                 "layout.rings=3", "displacement.kind=fbm"});
+  INFO(ok.error);
+  REQUIRE(ok.ok);
+  CHECK(ok.scene.lod.adjacencyClamp == AdjacencyClamp::Integer);
+  CHECK(ok.scene.camera.eye.z == 3.0f);
+  CHECK(ok.scene.layout.rings == 3);
+  CHECK(ok.scene.displacement.kind == DisplacementKind::Fbm);
+
+  requireError(parseScene(kBase, "t.toml", {"lod.adjacency_clamp=sometimes"}),
+               {"--set lod.adjacency_clamp: unknown value \"sometimes\""});
+  requireError(parseScene(kBase, "t.toml", {"lod.bogus=1"}), {"--set lod.bogus: unknown key"});
+  requireError(parseScene(kBase, "t.toml", {"camera.eye=[0, nan, 0]"}), {"--set camera.eye", "finite"});
+  requireError(parseScene(kBase, "t.toml", {"layout.rings=-2"}), {"--set layout.rings: must be in [1, 16]"});
+  requireError(parseScene(kBase, "t.toml", {"no-equals-sign"}), {"--set no-equals-sign: expected KEY=VALUE"});
+  requireError(parseScene(kBase, "t.toml", {"layout=3"}), {"--set layout", "table"});
+}
+
+TEST_CASE("loadScene reports a missing file", "[verify][scene]") {
+  SceneResult r = loadScene("/nonexistent/scene.toml");
+  REQUIRE_FALSE(r.ok);
+  CHECK(r.error.find("/nonexistent/scene.toml") != std::string::npos);
+}

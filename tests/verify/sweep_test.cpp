@@ -1,0 +1,104 @@
+// Sweep driver and camera generators: deterministic cameras, threads give the same results as one thread,
+// progress is reported per camera, cancel stops early.
+#include "verify_test_util.h"
+
+#include <atomic>
+
+using namespace fftess::verify;
+using namespace fftess::verify::test;
+
+TEST_CASE("camera generators are deterministic and sized", "[verify][sweep]") {
+  Scene s = loadExample("rings_small.toml");
+  CHECK(randomCameras(s, 17, 5).size() == 17);
+  CHECK(orbitCameras(s, 9).size() == 9);
+  CHECK(flyoverCameras(s, 4).size() == 4);
+  CHECK(pathCameras(s).size() == 1);
+  auto a = randomCameras(s, 10, 42), b = randomCameras(s, 10, 42), c = randomCameras(s, 10, 43);
+  for (size_t i = 0; i < a.size(); ++i) {
+    CHECK(a[i].eye.x == b[i].eye.x);
+    CHECK(a[i].target.z == b[i].target.z);
+    CHECK(a[i].width == s.camera.width);
+  }
+  CHECK(a[0].eye.x != c[0].eye.x);
+  const Extent e = terrainExtent(s);
+  for (const Camera& cam : randomCameras(s, 200, 7)) {
+    CHECK(cam.eye.x >= e.minX);
+    CHECK(cam.eye.x <= e.maxX);
+    CHECK(cam.eye.y > 0);
+  }
+}
+
+TEST_CASE("scene camera path", "[verify][sweep]") {
+  SceneResult r = parseScene(R"([layout]
+kind = "grid"
+[lod]
+scheme = "constant"
+[tessellation]
+partitioning = "integer"
+[camera]
+eye = [0.0, 5.0, -5.0]
+target = [0.0, 0.0, 0.0]
+[[camera_path]]
+eye = [1.0, 5.0, -5.0]
+[[camera_path]]
+eye = [2.0, 5.0, -5.0]
+fov_y = 45.0
+)",
+                             "path.toml");
+  INFO(r.error);
+  REQUIRE(r.ok);
+  auto cams = pathCameras(r.scene);
+  REQUIRE(cams.size() == 2);
+  CHECK(cams[1].eye.x == 2.0f);
+  CHECK(cams[1].fovY == 45.0f);
+  CHECK(cams[0].fovY == 60.0f);
+  CHECK(cams[0].target.z == 0.0f);
+}
+
+TEST_CASE("sweep on threads equals one thread, with progress", "[verify][sweep]") {
+  Scene s = loadExample("rings_small.toml", {"lod.adjacency_clamp=integer"});
+  auto cams = randomCameras(s, 24, 99);
+  SweepOptions one, two;
+  one.threads = 1;
+  two.threads = 2;
+  std::vector<size_t> seen;
+  two.progress = [&](size_t done, size_t total) {
+    CHECK(total == cams.size());
+    seen.push_back(done);
+  };
+  SweepResult a = sweep(s, cams, {}, one), b = sweep(s, cams, {}, two);
+  REQUIRE(seen.size() == cams.size());
+  for (size_t i = 0; i < seen.size(); ++i) CHECK(seen[i] == i + 1);
+  CHECK(a.camerasDone == cams.size());
+  CHECK(b.camerasDone == cams.size());
+  CHECK_FALSE(b.cancelled);
+  CHECK(a.total.cracks == b.total.cracks);
+  CHECK(a.total.edgesChecked == b.total.edgesChecked);
+  CHECK(a.total.worstGapWorld == b.total.worstGapWorld);
+  CHECK(a.total.cracks > 0);
+  for (size_t i = 0; i < cams.size(); ++i) {
+    CHECK(a.cameras[i].stats.cracks == b.cameras[i].stats.cracks);
+    CHECK(a.cameras[i].hasFinding == (a.cameras[i].stats.cracks > 0));
+    // The same as checking the camera alone.
+    if (i < 3) CHECK(checkScene(s, cams[i]).stats.cracks == a.cameras[i].stats.cracks);
+  }
+}
+
+TEST_CASE("sweep cancel stops early", "[verify][sweep]") {
+  Scene s = loadExample("rings_small.toml");
+  auto cams = randomCameras(s, 200, 1);
+  std::atomic<bool> cancel{false};
+  SweepOptions so;
+  so.threads = 2;
+  so.cancel = &cancel;
+  so.progress = [&](size_t done, size_t) {
+    if (done >= 3) cancel = true;
+  };
+  SweepResult r = sweep(s, cams, {}, so);
+  CHECK(r.cancelled);
+  CHECK(r.camerasDone >= 3);
+  CHECK(r.camerasDone < cams.size());
+  size_t done = 0;
+  for (const CameraResult& c : r.cameras) done += c.done;
+  CHECK(done == r.camerasDone);
+}

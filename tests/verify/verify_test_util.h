@@ -1,0 +1,24 @@
+// Shared helpers of the verifier tests.
+#pragma once
+
+#include "verify/verify.h"
+
+#include <catch2/catch.hpp>
+
+#include <string>
+#include <vector>
+
+namespace fftess::verify::test {
+
+inline std::string examplePath(const std::string& name) { return std::string(FFTESS_EXAMPLES_DIR) + "/" + name; }
+
+inline Scene loadExample(const std::string& name, const std::vector<std::string>& overrides = {}) {
+  SceneResult r = loadScene(examplePath(name), overrides);
+  INFO(r.error);
+  REQUIRE(r.ok);
+  return r.scene;
+}
+
+inline const char* kernelName(Kernel k) { return toString(k); }
+
+} // namespace fftess::verify::test
