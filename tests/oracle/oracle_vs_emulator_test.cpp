@@ -1,4 +1,5 @@
-// The independent oracle: seeded random hardware-stage patches (every domain, partitioning and topology; factors
+// The independent oracle: a sweep of uniform factors 0..66 in steps of 1/8 for every domain and partitioning, then
+// seeded random hardware-stage patches (every domain, partitioning and topology; factors
 // rich in special values) tessellated by Mesa's llvmpipe (Microsoft's reference inside) and by fftess, compared
 // bit for bit: point arrays, primitives as coordinates, index arrays (docs/oracle.md). fftess runs with
 // flushDenormals = true, which is what llvmpipe does to denormal factors.
@@ -163,9 +164,25 @@ int main(int argc, char** argv) {
   std::map<std::string, std::pair<long, long>> perMode; // "domain partitioning" -> (patches, failures)
   std::vector<Patch> patches;
   std::vector<Result> results;
-  for (long done = 0; done < total; done += kChunk) {
+  // First a systematic sweep: every domain and partitioning with all factors equal to k/8, k = 0..528 (0..66),
+  // topologies taken in turn; then the random patches.
+  std::vector<Patch> sweep;
+  for (int d = 0; d < 3; ++d)
+    for (int part = 0; part < 4; ++part)
+      for (int k = 0; k <= 528; ++k) {
+        Patch p;
+        p.domain = static_cast<Domain>(d);
+        p.partitioning = static_cast<Partitioning>(part);
+        p.topology = p.domain == Domain::Isoline ? (k % 2 ? Topology::Line : Topology::Point)
+                                                 : static_cast<Topology>((k + part) % 4);
+        for (uint32_t& f : p.factorBits) f = bitsOf(static_cast<float>(k) / 8.0f);
+        sweep.push_back(p);
+      }
+  const long sweepCount = static_cast<long>(sweep.size());
+  for (long done = 0; done < sweepCount + total; done += kChunk) {
     patches.clear();
-    for (long i = done; i < total && i < done + kChunk; ++i) patches.push_back(randomPatch(rng));
+    for (long i = done; i < sweepCount + total && i < done + kChunk; ++i)
+      patches.push_back(i < sweepCount ? sweep[static_cast<size_t>(i)] : randomPatch(rng));
     std::string error;
     const auto t0 = std::chrono::steady_clock::now();
     if (!oracle->run(patches, results, error)) {
@@ -203,16 +220,18 @@ int main(int argc, char** argv) {
       }
       ++mode.second;
       if (printed++ < 20)
-        std::printf("DIFFERS (patch %ld): %s\n  %s\n", done + static_cast<long>(i), batchLine(patches[i]).c_str(),
+        std::printf("DIFFERS (%s %ld): %s\n  %s\n", done + static_cast<long>(i) < sweepCount ? "sweep" : "random",
+                    done + static_cast<long>(i) - (done + static_cast<long>(i) < sweepCount ? 0 : sweepCount),
+                    batchLine(patches[i]).c_str(),
                     v.firstDifference.c_str());
     }
   }
   std::printf("%-24s %8s %8s\n", "mode", "patches", "differ");
   for (const auto& kv : perMode) std::printf("%-24s %8ld %8ld\n", kv.first.c_str(), kv.second.first, kv.second.second);
-  std::printf("%s: %ld patches compared (%ld culled, %ld with GL primitives of which %ld with duplicate points, %ld "
+  std::printf("%s: %ld patches compared (%ld sweep + %ld random; %ld culled, %ld with GL primitives of which %ld with duplicate points, %ld "
               "with a denormal factor), %lld points, %lld primitives; %ld agree bit for bit, %ld differ. "
               "llvmpipe %.2f s, fftess %.3f s\n",
-              name, compared, culled, withPrimitives, duplicates, denormal, points, primitives, agree, compared - agree,
+              name, compared, sweepCount, total, culled, withPrimitives, duplicates, denormal, points, primitives, agree, compared - agree,
               glSeconds, emuSeconds);
   return agree == compared ? 0 : 1;
 }
