@@ -74,18 +74,18 @@ TEST_CASE("broken_lod_patch_center_is_caught", "[verify][check]") {
   }
 }
 
-// The float checker evaluates CGAL's collinearity determinant in float. Side b has a vertex at
-// (1, float(1/3), 0), side a the single segment (0,0,0)-(3,1,0). Exactly, float(1/3) = 0x3EAAAAAB =
-// 0.3333333432674407958984375 is 2^-25 / 3 above 1/3, so the vertex is off the segment: a crack of width
-// |3*float(1/3) - 1| / sqrt(10) = 2^-25 / sqrt(10) ~ 9.43e-9. In float, the determinant's products round the
-// difference away and the vertex appears to lie on the segment: a T-junction. The exact kernels are right:
-// displacing the two sides differently can only widen a gap that already exists.
+// The float checker evaluates CGAL's collinearity determinant in float. Side a is the single segment
+// (0,0,0)-(5,1,0); side b has a vertex at (1, 0.2f, 0). Exactly, 0.2f = 0x3E4CCCCD = 0.20000000298023223876953125
+// lies 2^-24 * 0.05 above 1/5, so the vertex is off the segment: a crack of width (5 * 0.2f - 1) / sqrt(26)
+// ~ 2.92e-9. In float the determinant 5 * 0.2f - 1 * 1 rounds to 0 (5 * 0.2f = 1.0000000149 rounds to 1.0f) and
+// the vertex appears to lie on the segment: a T-junction. The exact kernels are right: the two sides do not share
+// the point, and displacing them differently can only widen the gap.
 TEST_CASE("exact_and_float_checkers_disagree_on_a_sub_ulp_offset", "[verify][check]") {
-  const float third = 1.0f / 3.0f;
-  REQUIRE(bitsOf(third) == 0x3EAAAAABu);
-  const Vec3 a[] = {{0, 0, 0}, {3, 1, 0}};
-  const Vec3 b[] = {{0, 0, 0}, {1, third, 0}, {3, 1, 0}};
-  const double expected = std::ldexp(1.0, -25) / std::sqrt(10.0);
+  const float fifth = 0.2f;
+  REQUIRE(bitsOf(fifth) == 0x3E4CCCCDu);
+  const Vec3 a[] = {{0, 0, 0}, {5, 1, 0}};
+  const Vec3 b[] = {{0, 0, 0}, {1, fifth, 0}, {5, 1, 0}};
+  const double expected = (5.0 * double(fifth) - 1.0) / std::sqrt(26.0);
   for (Kernel k : kKernels) {
     detail::ExactVerdict v = detail::classifyExact(k, a, 2, a, 2, b, 3);
     INFO(toString(k));

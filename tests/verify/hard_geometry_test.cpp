@@ -11,11 +11,11 @@ using namespace fftess::verify::test;
 namespace {
 
 // 128 km: a uniform grid of 128 x 128 patches of 1 km, and NVIDIA tile rings (5 rings of 8x8 tiles of 8x8
-// patches of 31.25 m: ring 4's outer edge is 8 * 8 * 31.25 * 16 = 128 km).
+// patches of 125 m: ring 4's outer edge is 8 * 8 * 125 * 16 = 128 km).
 Scene world(bool rings, const std::vector<std::string>& extra = {}) {
   std::vector<std::string> ov;
   if (rings) {
-    ov = {"layout.rings=5", "layout.tiles_per_ring_edge=8", "layout.base_patch_size=31.25",
+    ov = {"layout.rings=5", "layout.tiles_per_ring_edge=8", "layout.base_patch_size=125",
           "displacement.height_scale=900", "displacement.resolution=257"};
   } else {
     ov = {"layout.kind=grid", "layout.patches_x=128", "layout.patches_z=128", "layout.patch_size=1000",
@@ -90,7 +90,7 @@ TEST_CASE("hard_geometry_patches_behind_the_camera", "[verify][hard]") {
 }
 
 TEST_CASE("hard_geometry_far_patches_at_the_minimum_factor", "[verify][hard]") {
-  Scene s = world(false, {"lod.frustum_cull=false"});
+  Scene s = world(false, {"lod.frustum_cull=false", "lod.target_pixels=20"});
   Camera cam = s.camera;
   cam.eye = Vec3{-63500.0f, 30.0f, -63500.0f}; // one corner of the world
   cam.target = Vec3{0.0f, 0.0f, 0.0f};
