@@ -1,0 +1,42 @@
+// fftess check / fftess sweep: the crack checker people run (verify/ does the checking; this turns its reports into
+// text, JSON, SVG and an exit status).
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace fftess::cli {
+
+struct SceneArgs {
+  std::string scene;
+  std::vector<std::string> overrides; // --set KEY=VALUE
+  std::string eye, target;            // --eye X,Y,Z / --target X,Y,Z: shorthands for --set camera.eye=[X,Y,Z]
+  std::string kernel = "epick";
+  bool flushDenormals = false;
+  std::string json, svg;
+  bool quiet = false;
+  bool failOnTJunctions = false;
+};
+
+struct CheckArgs : SceneArgs {
+  int pathCamera = -1; // --path-camera N: the scene path's camera N instead of [camera]
+  int show = 20;       // finding lines printed
+  bool mesh = false;   // also run the whole-mesh check and compare
+};
+
+struct SweepArgs : SceneArgs {
+  int orbit = 0, flyover = 0, random = 0;
+  uint64_t seed = 1;
+  int threads = 0;
+  std::string label;   // --label TEXT: name printed in the summary (default: the scene name)
+};
+
+CLI::App* addCheck(CLI::App& app, CheckArgs& a);
+CLI::App* addSweep(CLI::App& app, SweepArgs& a);
+int runCheck(const CheckArgs& a);
+int runSweep(const SweepArgs& a);
+
+} // namespace fftess::cli
