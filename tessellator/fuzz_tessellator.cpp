@@ -1,4 +1,4 @@
-// libFuzzer target: any 26 bytes are a patch (domain, partitioning, primitive, stage, six raw float factors, option).
+// libFuzzer target: any 29 bytes are a patch (domain, partitioning, primitive, stage, six raw float factors, option).
 // Checks what must hold for every input: no crash or sanitizer report, sizes equal the closed-form counts, indices
 // in range, coordinates in [0,1], every outer edge equal to the edge query.
 // Build: cmake -S . -B build-fuzz -G Ninja -DCMAKE_CXX_COMPILER=clang++ -DFFTESS_FUZZ=ON
@@ -12,7 +12,7 @@
 using namespace fftess;
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  if (size < 26) return 0;
+  if (size < 29) return 0;
   static Tessellator t;
   Patch p;
   p.domain = Domain(data[0] % 3);
@@ -23,7 +23,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   parseStage(stages[data[3] % 7], p.stage);
   std::memcpy(p.factors, data + 4, sizeof p.factors);
   Options o;
-  o.flushDenormals = data[25] & 1;
+  o.flushDenormals = data[28] & 1;
   const int n = t.tessellate(p, o);
   const OutputCounts c = outputCounts(p, o);
   if (n != c.points || int(t.indices().size()) != c.indices) std::abort();
