@@ -1,0 +1,169 @@
+// fftess check / sweep end to end on the bundled scenes: exit statuses, JSON shape (docs/cli.md), SVG well-formed,
+// bad scene files and overrides, no partial report files.
+#include "run.h"
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+using clitest::run;
+using nlohmann::json;
+
+namespace {
+
+const std::string kScene = clitest::source("docs/examples/terrain.toml");
+
+void checkStatsShape(const json& s) {
+  for (const char* k : {"patches", "culled_patches", "edges_checked", "skipped_culled", "matches", "t_junctions", "cracks"})
+    CHECK(s.at(k).is_number_integer());
+  CHECK(s.at("worst_gap_world").is_number());
+  CHECK(s.at("worst_gap_pixels").is_number());
+  CHECK(s.at("edges_checked").get<int64_t>() ==
+        s.at("matches").get<int64_t>() + s.at("t_junctions").get<int64_t>() + s.at("cracks").get<int64_t>());
+}
+
+void checkFindingShape(const json& f) {
+  const std::string c = f.at("classification");
+  CHECK((c == "match" || c == "t_junction" || c == "crack"));
+  CHECK(f.at("cause").is_string());
+  CHECK(f.at("partitioning").is_string());
+  for (const char* side : {"a", "b"}) {
+    const json& s = f.at(side);
+    CHECK(s.at("patch").at("index").is_number_integer());
+    CHECK(s.at("patch").at("level").is_number_integer());
+    const std::string e = s.at("edge");
+    CHECK((e == "Ueq0" || e == "Veq0" || e == "Ueq1" || e == "Veq1"));
+    CHECK(s.at("processed_factor").is_number());
+    CHECK(s.at("param_range").size() == 2);
+  }
+  CHECK(f.at("gap_world").is_number());
+  CHECK(f.at("gap_vertex").size() == 3);
+}
+
+std::string svgOk(const std::string& path) {
+  std::string why, root;
+  const std::string text = clitest::readFile(path);
+  CHECK(clitest::wellFormedXml(text, why, &root));
+  INFO(why);
+  CHECK(root == "svg");
+  return text;
+}
+
+} // namespace
+
+TEST_CASE("check: the bundled scene is watertight with the pow2 workaround, cracks without it", "[cli][check]") {
+  const std::string js = clitest::tmpDir() + "/check.json", svg = clitest::tmpDir() + "/check.svg";
+  auto r = run({"check", kScene, "--json", js, "--svg", svg});
+  CHECK(r.status == 0);
+  CHECK(r.out.find("verdict: watertight") != std::string::npos);
+  json j = json::parse(clitest::readFile(js));
+  CHECK(j.at("version") == 1);
+  CHECK(j.at("kind") == "check");
+  checkStatsShape(j.at("stats"));
+  CHECK(j.at("stats").at("cracks") == 0);
+  CHECK(j.at("scene").at("adjacency_clamp") == "pow2");
+  svgOk(svg);
+
+  r = run({"check", kScene, "--set", "lod.adjacency_clamp=none", "--json", js, "--svg", svg});
+  CHECK(r.status == 1);
+  CHECK(r.out.find("crack ") != std::string::npos);
+  j = json::parse(clitest::readFile(js));
+  checkStatsShape(j.at("stats"));
+  CHECK(j.at("stats").at("cracks").get<int64_t>() > 0);
+  CHECK(j.at("verdict") == "cracks");
+  REQUIRE_FALSE(j.at("findings").empty());
+  for (const json& f : j.at("findings")) checkFindingShape(f);
+  CHECK(svgOk(svg).find("id=\"inset\"") != std::string::npos);
+
+  // The integer clamp alone still cracks where B is not a power of two (the 16.16 rounding).
+  r = run({"check", kScene, "--set", "lod.adjacency_clamp=integer", "-q"});
+  CHECK((r.status == 0 || r.status == 1));
+  CHECK(r.out.empty());
+}
+
+TEST_CASE("check: --json - prints only JSON; --quiet prints nothing", "[cli][check]") {
+  auto r = run({"check", kScene, "--set", "lod.adjacency_clamp=none", "--json", "-"});
+  CHECK(r.status == 1);
+  CHECK(json::parse(r.out).at("kind") == "check");
+  r = run({"check", kScene, "-q"});
+  CHECK(r.status == 0);
+  CHECK(r.out.empty());
+  CHECK(r.err.empty());
+}
+
+TEST_CASE("check/sweep: bad scenes and overrides exit 2 with one line naming the key or file", "[cli][check]") {
+  const std::string bad = clitest::tmpDir() + "/bad.toml";
+  clitest::writeFile(bad, "[layout]\nkind = \"tile_rings\"\nrings = \"three\"\n");
+  const std::string report = clitest::tmpDir() + "/never.json";
+  struct Case {
+    std::vector<std::string> args;
+    const char* mention;
+  } cases[] = {
+      {{"check", "no/such/scene.toml"}, "no/such/scene.toml"},
+      {{"check", bad, "--json", report}, "rings"},
+      {{"check", kScene, "--set", "lod.adjacency_clamp=sometimes", "--json", report}, "adjacency_clamp"},
+      {{"check", kScene, "--set", "lod.no_such_key=1"}, "no_such_key"},
+      {{"check", kScene, "--set", "novalue"}, "novalue"},
+      {{"check", kScene, "--kernel", "exactish"}, "--kernel"},
+      {{"check", kScene, "--path-camera", "3"}, "--path-camera"},
+      {{"sweep", kScene, "--orbit", "3", "--random", "3"}, "--random"},
+      {{"sweep", bad, "--svg", report}, "rings"},
+      {{"check"}, "scene"},
+  };
+  for (const Case& c : cases) {
+    std::string joined;
+    for (const auto& a : c.args) joined += a + " ";
+    INFO(joined);
+    const auto r = run(c.args);
+    CHECK(r.status == 2);
+    CHECK(r.out.empty());
+    CHECK(r.err.find(c.mention) != std::string::npos);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK_FALSE(clitest::fileExists(report));
+  }
+  // A report that cannot be written: exit 2, naming the file, nothing left behind.
+  const auto r = run({"check", kScene, "-q", "--json", clitest::tmpDir() + "/missing-dir/r.json"});
+  CHECK(r.status == 2);
+  CHECK(r.err.find("missing-dir/r.json") != std::string::npos);
+  for (const std::string& f : clitest::listDir(clitest::tmpDir())) CHECK(f.find(".tmp.") == std::string::npos);
+}
+
+TEST_CASE("sweep: workaround on is clean, off cracks; summary names causes; JSON and SVG", "[cli][sweep]") {
+  const std::string js = clitest::tmpDir() + "/sweep.json", svg = clitest::tmpDir() + "/sweep.svg";
+  auto r = run({"sweep", kScene, "--orbit", "12", "--threads", "2"});
+  CHECK(r.status == 0);
+  CHECK(r.out.find("watertight from every camera") != std::string::npos);
+  CHECK(r.err.find("12/12 cameras") != std::string::npos); // not a terminal: plain progress lines
+
+  r = run({"sweep", kScene, "--random", "16", "--seed", "5", "--set", "lod.adjacency_clamp=integer", "--json", js,
+           "--svg", svg});
+  CHECK(r.status == 1);
+  CHECK(r.out.find("causes") != std::string::npos);
+  CHECK(r.out.find("not a power of two") != std::string::npos);
+  const json j = json::parse(clitest::readFile(js));
+  CHECK(j.at("version") == 1);
+  CHECK(j.at("kind") == "sweep");
+  CHECK(j.at("cameras_total") == 16);
+  CHECK(j.at("cameras_done") == 16);
+  CHECK(j.at("cancelled") == false);
+  checkStatsShape(j.at("stats"));
+  REQUIRE(j.at("cameras").size() == 16);
+  int64_t cracks = 0;
+  for (const json& c : j.at("cameras")) {
+    checkStatsShape(c.at("stats"));
+    cracks += c.at("stats").at("cracks").get<int64_t>();
+    if (!c.at("worst").is_null()) checkFindingShape(c.at("worst"));
+  }
+  CHECK(cracks == j.at("stats").at("cracks").get<int64_t>());
+  REQUIRE_FALSE(j.at("causes").empty());
+  for (const json& c : j.at("causes")) {
+    CHECK(c.at("cause").is_string());
+    CHECK(c.at("first_camera").get<int>() < 16);
+    CHECK(c.at("cameras").get<int>() >= 1);
+  }
+  svgOk(svg);
+
+  r = run({"sweep", kScene, "--flyover", "4", "-q"});
+  CHECK(r.status == 0);
+  CHECK(r.out.empty());
+  CHECK(r.err.empty());
+}
