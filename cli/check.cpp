@@ -91,9 +91,12 @@ Cause causeOf(const vf::Finding& f) {
   }
   if (jump > 1)
     return {"size jump larger than 2x", "patch sizes differ by 2^" + std::to_string(jump) + " (" + pair + ")"};
-  if (B != 2 * S)
+  if (B != 2 * S) {
+    const float minimum = f.partitioning == Partitioning::FractionalEven ? 2.0f : 1.0f;
     return {"2x jump: the small side's factor is not half the big side's",
-            "2x jump: " + pair + " (" + part + "): the small side's factor is not half the big side's"};
+            "2x jump: " + pair + " (" + part + "): the small side's factor is not half the big side's" +
+                (S == minimum && B < 2 * minimum ? " (half of it is below " + part + "'s minimum " + formatFloat(minimum) + ")" : "")};
+  }
   if (B != std::floor(B) || S != std::floor(S))
     return {"2x jump: fractional factors do not nest",
             "2x jump: fractional factors " + pair + " (" + part + ") do not nest"};
@@ -534,7 +537,7 @@ int runSweep(const SweepArgs& a) {
   else if (a.random > 0)
     cams = vf::randomCameras(scene, a.random, a.seed), how = std::to_string(a.random) + " random, seed " + std::to_string(a.seed);
   else if (!scene.cameraPath.empty()) cams = vf::pathCameras(scene), how = "the scene's camera path";
-  else cams = vf::flyoverCameras(scene, kDefaultFlyover), how = "flyover of " + std::to_string(kDefaultFlyover) + " (the scene has no camera path)";
+  else cams = vf::flyoverCameras(scene, kDefaultFlyover), how = "flyover of " + std::to_string(kDefaultFlyover) + ", the scene has no camera path";
   const bool jsonToStdout = a.json == "-";
   const bool talk = !a.quiet && !jsonToStdout;
   const std::string label = a.label.empty() ? (scene.name.empty() ? a.scene : scene.name) : a.label;
@@ -610,9 +613,9 @@ int runSweep(const SweepArgs& a) {
   std::string text;
   if (talk) {
     char buf[256];
-    text += "\n" + label + (a.overrides.empty() ? "" : " [--set");
-    for (const std::string& s : a.overrides) text += " " + s;
-    text += a.overrides.empty() ? "\n" : "]\n";
+    text += "\n== " + label + ": lod.adjacency_clamp = " + vf::toString(scene.lod.adjacencyClamp) +
+            (scene.lod.adjacencyClamp == vf::AdjacencyClamp::Pow2 ? " (the power-of-two workaround on)" : "") + " ==\n";
+    for (const std::string& s : overridesOf(a)) text += "  --set " + s + "\n";
     std::snprintf(buf, sizeof buf, "  cameras        %zu of %zu%s (%s, %.1f s, %s threads)\n", res.camerasDone,
                   cams.size(), res.cancelled ? " (interrupted)" : "", how.c_str(), elapsed,
                   a.threads > 0 ? std::to_string(a.threads).c_str() : "all");
@@ -635,10 +638,12 @@ int runSweep(const SweepArgs& a) {
       }
     }
     text += std::string("verdict: ") +
-            (res.total.cracks > 0 ? "CRACKS in " + std::to_string(crackCameras) + " of " + std::to_string(res.camerasDone) + " cameras"
+            (res.total.cracks > 0 ? "CRACKS seen from " + std::to_string(crackCameras) + " of " + std::to_string(res.camerasDone) +
+                                        " cameras (worst gap " + fmtWorld(res.total.worstGapWorld) + " world units, " +
+                                        fmtWorld(res.total.worstGapPixels) + " px)"
              : res.cancelled ? "no cracks so far (interrupted)"
              : res.total.tJunctions > 0 ? "no cracks (T-junctions only)"
-             : "watertight from every camera") +
+             : "WATERTIGHT from all " + std::to_string(res.camerasDone) + " cameras") +
             "\n";
   }
   if (!a.json.empty()) {

@@ -131,7 +131,7 @@ TEST_CASE("sweep: workaround on is clean, off cracks; summary names causes; JSON
   const std::string js = clitest::tmpDir() + "/sweep.json", svg = clitest::tmpDir() + "/sweep.svg";
   auto r = run({"sweep", kScene, "--orbit", "12", "--threads", "2"});
   CHECK(r.status == 0);
-  CHECK(r.out.find("watertight from every camera") != std::string::npos);
+  CHECK(r.out.find("WATERTIGHT from all 12 cameras") != std::string::npos);
   CHECK(r.err.find("12/12 cameras") != std::string::npos); // not a terminal: plain progress lines
 
   r = run({"sweep", kScene, "--random", "16", "--seed", "5", "--set", "lod.adjacency_clamp=integer", "--json", js,
