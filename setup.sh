@@ -13,7 +13,7 @@ BUILD_TYPE=${BUILD_TYPE:-Release}
 JOBS=${JOBS:-$(nproc)}
 
 packages=(
-  g++ cmake ninja-build pkg-config python3 libxml2-utils
+  g++ cmake ninja-build
   catch2 libcli11-dev libglm-dev libcgal-dev nlohmann-json3-dev libtomlplusplus-dev libbenchmark-dev
   glslang-tools
   libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
