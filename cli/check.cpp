@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <map>
 #include <mutex>
+#include <set>
 #include <unistd.h>
 
 namespace fftess::cli {
@@ -500,6 +501,52 @@ int runCheck(const CheckArgs& a) {
   return status;
 }
 
+// Causes over a sweep: every finding of every camera names a cause (classification + causeOf key). Per cause: the
+// findings, the cameras where it appeared, and the first camera where it appeared (lowest camera index; within that
+// camera the first finding in layout order, whose explanation is the example). Fed by SweepOptions::onReport, which
+// sweep serialises, in whatever order the cameras finish: the result does not depend on that order.
+struct CauseInfo {
+  std::string detail;     // explanation of the first finding with this cause
+  int64_t findings = 0;   // findings with this cause, over all cameras
+  size_t cameras = 0;     // cameras with at least one finding with this cause
+  size_t first = 0;       // first camera (index) where it appeared
+  size_t firstFinding = 0; // index of that finding in the first camera's report
+};
+
+struct CauseTally {
+  std::map<std::string, CauseInfo> causes;
+
+  void add(size_t camera, const vf::Report& r) {
+    std::set<std::string> here;
+    for (size_t k = 0; k < r.findings.size(); ++k) {
+      const vf::Finding& f = r.findings[k];
+      if (f.classification == vf::Classification::Match) continue;
+      const Cause cause = causeOf(f);
+      const std::string key = std::string(vf::toString(f.classification)) + ": " + cause.key;
+      auto [it, added] = causes.try_emplace(key);
+      CauseInfo& c = it->second;
+      ++c.findings;
+      if (here.insert(key).second) ++c.cameras;
+      if (added || camera < c.first || (camera == c.first && k < c.firstFinding)) {
+        c.first = camera;
+        c.firstFinding = k;
+        c.detail = cause.detail;
+      }
+    }
+  }
+
+  // Cause keys in the order they first appeared (by first camera, then first finding).
+  std::vector<std::string> order() const {
+    std::vector<std::string> keys;
+    for (const auto& kv : causes) keys.push_back(kv.first);
+    std::stable_sort(keys.begin(), keys.end(), [&](const std::string& x, const std::string& y) {
+      const CauseInfo &a = causes.at(x), &b = causes.at(y);
+      return a.first != b.first ? a.first < b.first : a.firstFinding < b.firstFinding;
+    });
+    return keys;
+  }
+};
+
 // ---- sweep -------------------------------------------------------------------------------------------------------
 CLI::App* addSweep(CLI::App& app, SweepArgs& a) {
   CLI::App* sub = app.add_subcommand("sweep", "Check a scene from many cameras (a path, an orbit, a flyover, random)");
@@ -529,7 +576,8 @@ int runSweep(const SweepArgs& a) {
   if (a.orbit < 0 || a.flyover < 0 || a.random < 0) throw UsageError("sweep: camera counts must be positive");
   if (a.threads < 0) throw UsageError("--threads " + std::to_string(a.threads) + ": must be >= 0");
   const vf::Scene scene = load(a);
-  const vf::CheckOptions opt = checkOptions(a);
+  vf::CheckOptions opt = checkOptions(a);
+  opt.maxFindings = static_cast<size_t>(-1); // every finding reaches onReport, so the cause counts are complete
   std::vector<vf::Camera> cams;
   std::string how;
   if (a.orbit > 0) cams = vf::orbitCameras(scene, a.orbit), how = "orbit of " + std::to_string(a.orbit);
@@ -574,6 +622,8 @@ int runSweep(const SweepArgs& a) {
       std::fflush(stderr);
     };
   }
+  CauseTally tally;
+  so.onReport = [&tally](size_t camera, const vf::Report& r) { tally.add(camera, r); };
   gCancel.store(false);
   auto previous = std::signal(SIGINT, onSigint);
   if (talk)
@@ -583,30 +633,13 @@ int runSweep(const SweepArgs& a) {
   if (barShown) std::fputs("\n", stderr);
   const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
-  // Causes: each camera's worst finding names a cause; count cameras per cause and remember the first camera.
-  struct CauseInfo {
-    std::string detail;
-    size_t cameras = 0;
-    size_t first = 0;
-    int64_t cracks = 0;
-  };
-  std::vector<std::string> order;
-  std::map<std::string, CauseInfo> causes;
+  const std::vector<std::string> order = tally.order();
+  const std::map<std::string, CauseInfo>& causes = tally.causes;
   size_t crackCameras = 0, tjCameras = 0;
   for (const vf::CameraResult& c : res.cameras) {
     if (!c.done) continue;
     if (c.stats.cracks > 0) ++crackCameras;
     else if (c.stats.tJunctions > 0) ++tjCameras;
-    if (!c.hasFinding) continue;
-    const Cause cause = causeOf(c.worst);
-    const std::string key = std::string(vf::toString(c.worst.classification)) + ": " + cause.key;
-    auto it = causes.find(key);
-    if (it == causes.end()) {
-      order.push_back(key);
-      it = causes.emplace(key, CauseInfo{cause.detail, 0, c.cameraIndex, 0}).first;
-    }
-    ++it->second.cameras;
-    it->second.cracks += c.stats.cracks;
   }
   const int status = res.cancelled && res.total.cracks == 0 ? 130 : verdictStatus(a, res.total);
 
@@ -626,13 +659,13 @@ int runSweep(const SweepArgs& a) {
     std::snprintf(buf, sizeof buf, "  cameras with cracks %zu, with T-junctions only %zu\n", crackCameras, tjCameras);
     text += buf;
     if (!order.empty()) {
-      text += "  causes (worst finding per camera; first camera where each appeared):\n";
+      text += "  causes (findings of each cause, cameras where it appeared, the first camera where it appeared):\n";
       for (const std::string& k : order) {
-        const CauseInfo& c = causes[k];
+        const CauseInfo& c = causes.at(k);
         const vf::Camera& cam = cams[c.first];
-        std::snprintf(buf, sizeof buf, "    %-75s %5zu cameras, first #%zu eye (%.1f, %.1f, %.1f)\n", k.c_str(),
-                      c.cameras, c.first, static_cast<double>(cam.eye.x), static_cast<double>(cam.eye.y),
-                      static_cast<double>(cam.eye.z));
+        std::snprintf(buf, sizeof buf, "    %-75s %7lld findings on %5zu cameras, first #%zu eye (%.1f, %.1f, %.1f)\n",
+                      k.c_str(), static_cast<long long>(c.findings), c.cameras, c.first, static_cast<double>(cam.eye.x),
+                      static_cast<double>(cam.eye.y), static_cast<double>(cam.eye.z));
         text += buf;
         text += "      e.g. " + c.detail + "\n";
       }
@@ -660,8 +693,9 @@ int runSweep(const SweepArgs& a) {
     j["verdict"] = res.total.cracks > 0 ? "cracks" : "clean";
     json cs = json::array();
     for (const std::string& k : order) {
-      const CauseInfo& c = causes[k];
-      cs.push_back({{"cause", k}, {"cameras", c.cameras}, {"cracks", c.cracks}, {"first_camera", c.first}, {"example", c.detail}});
+      const CauseInfo& c = causes.at(k);
+      cs.push_back({{"cause", k}, {"findings", c.findings}, {"cameras", c.cameras}, {"first_camera", c.first},
+                    {"example", c.detail}});
     }
     j["causes"] = cs;
     json cl = json::array();
@@ -721,7 +755,7 @@ int runSweep(const SweepArgs& a) {
     o += "</g>\n";
     int line = 0;
     for (const std::string& k : order) {
-      const vf::Camera& cam = cams[causes[k].first];
+      const vf::Camera& cam = cams[causes.at(k).first];
       std::snprintf(buf, sizeof buf, "<text class=\"s\" x=\"%.2f\" y=\"%.2f\">%d</text>\n", v.x(cam.eye.x) + 5,
                     v.y(cam.eye.z) - 5, ++line);
       o += buf;

@@ -23,7 +23,7 @@ SweepResult sweep(const Scene& scene, const std::vector<Camera>& cameras, const 
   threads = static_cast<int>(std::min<size_t>(static_cast<size_t>(threads), std::max<size_t>(cameras.size(), 1)));
 
   std::atomic<size_t> next{0};
-  std::mutex mutex; // serialises the progress callback and the totals
+  std::mutex mutex; // serialises the onReport and progress callbacks
   size_t done = 0;
   auto worker = [&]() {
     detail::EdgeCache cache(scene.partitioning, scene.stage, options.tessellator);
@@ -42,10 +42,13 @@ SweepResult sweep(const Scene& scene, const std::vector<Camera>& cameras, const 
           cr.hasFinding = true;
         }
       }
+      {
+        std::lock_guard<std::mutex> lock(mutex);
+        if (sweepOptions.onReport) sweepOptions.onReport(i, rep);
+        ++done;
+        if (sweepOptions.progress) sweepOptions.progress(done, cameras.size());
+      }
       if (sweepOptions.keepReports) out.reports[i] = std::move(rep);
-      std::lock_guard<std::mutex> lock(mutex);
-      ++done;
-      if (sweepOptions.progress) sweepOptions.progress(done, cameras.size());
     }
   };
   std::vector<std::thread> pool;

@@ -346,6 +346,14 @@ struct SweepOptions {
   std::function<void(size_t done, size_t total)> progress;
   const std::atomic<bool>* cancel = nullptr; // set to true to stop; cameras not started are skipped
   bool keepReports = false;      // keep every camera's full report (else only its stats and first finding)
+  // Called once per camera checked, with the camera's index into `cameras` and its full report (findings as
+  // CheckOptions::maxFindings keeps them; Report::error set if the camera was invalid), before `progress` for that
+  // camera. Thread-safety: called from worker threads, but never concurrently: sweep serialises it (with
+  // `progress`) under one lock, so the callback needs no locking of its own. Order: the order cameras finish,
+  // which with threads > 1 is not camera order; order-sensitive callers key their results by cameraIndex.
+  // Cameras skipped because of cancel are not reported. The report is only valid during the call. Must not throw
+  // (an exception on a worker thread ends the process).
+  std::function<void(size_t cameraIndex, const Report& report)> onReport;
 };
 
 struct CameraResult {
