@@ -210,18 +210,6 @@ std::string statsText(const vf::Stats& s) {
 }
 
 // ---- SVG ---------------------------------------------------------------------------------------------------------
-std::string svgEscape(const std::string& s) {
-  std::string o;
-  for (char c : s) {
-    if (c == '&') o += "&amp;";
-    else if (c == '<') o += "&lt;";
-    else if (c == '>') o += "&gt;";
-    else if (c == '"') o += "&quot;";
-    else o += c;
-  }
-  return o;
-}
-
 struct MapView {
   vf::Extent e;
   double size = 760, margin = 20, scale = 1;
@@ -339,7 +327,7 @@ std::string checkSvg(const vf::Scene& scene, const vf::Report& r, const std::str
   std::snprintf(buf, sizeof buf,
                 "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" "
                 "height=\"%.0f\" viewBox=\"0 0 %.0f %.0f\">\n<title>%s</title>\n",
-                std::max(W, 780.0), totalH, std::max(W, 780.0), totalH, svgEscape(title).c_str());
+                std::max(W, 780.0), totalH, std::max(W, 780.0), totalH, xmlEscape(title).c_str());
   o += buf;
   o += kSvgStyle;
   o += "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
@@ -726,7 +714,7 @@ int runSweep(const SweepArgs& a) {
     std::snprintf(buf, sizeof buf,
                   "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" "
                   "height=\"%.0f\" viewBox=\"0 0 %.0f %.0f\">\n<title>%s</title>\n",
-                  std::max(W, 780.0), H + 60, std::max(W, 780.0), H + 60, svgEscape("fftess sweep " + a.scene).c_str());
+                  std::max(W, 780.0), H + 60, std::max(W, 780.0), H + 60, xmlEscape("fftess sweep " + a.scene).c_str());
     o += buf;
     o += kSvgStyle;
     o += "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";

@@ -1,6 +1,5 @@
 #include "common.h"
 
-#include <cctype>
 #include <cerrno>
 #include <cstdlib>
 #include <cmath>
@@ -64,12 +63,6 @@ uint32_t floatBits(float f) {
   return b;
 }
 
-float bitsFloat(uint32_t b) {
-  float f;
-  std::memcpy(&f, &b, sizeof f);
-  return f;
-}
-
 std::string hex8(uint32_t v) {
   char buf[9];
   std::snprintf(buf, sizeof buf, "%08x", v);
@@ -120,39 +113,18 @@ std::string quoteToken(const std::string& s) {
   return out + "'";
 }
 
-// A factor: a decimal float (strtof, correctly rounded; nan/inf accepted) or 0x + exactly 8 hex digits (IEEE bits).
-bool parseFactor(const std::string& tok, float& out, std::string& why) {
-  if (tok.size() >= 2 && tok[0] == '0' && (tok[1] == 'x' || tok[1] == 'X')) {
-    if (tok.size() != 10) {
-      why = "hex factor needs 0x and exactly 8 hex digits";
-      return false;
+std::string xmlEscape(const std::string& s) {
+  std::string o;
+  for (char c : s) {
+    switch (c) {
+    case '&': o += "&amp;"; break;
+    case '<': o += "&lt;"; break;
+    case '>': o += "&gt;"; break;
+    case '"': o += "&quot;"; break;
+    default: o += c;
     }
-    uint32_t bits = 0;
-    for (size_t i = 2; i < 10; ++i) {
-      if (!std::isxdigit(static_cast<unsigned char>(tok[i]))) {
-        why = "hex factor needs 0x and exactly 8 hex digits";
-        return false;
-      }
-      bits = bits * 16 + static_cast<uint32_t>(std::isdigit(static_cast<unsigned char>(tok[i]))
-                                                   ? tok[i] - '0'
-                                                   : std::tolower(static_cast<unsigned char>(tok[i])) - 'a' + 10);
-    }
-    out = bitsFloat(bits);
-    return true;
   }
-  if (tok.find_first_of("xX") != std::string::npos && tok.find_first_of("nN") == std::string::npos) {
-    why = "not a decimal float (hex factors are 0x and exactly 8 hex digits)";
-    return false;
-  }
-  errno = 0;
-  char* end = nullptr;
-  float v = std::strtof(tok.c_str(), &end);
-  if (end == tok.c_str() || *end != '\0') {
-    why = "not a number";
-    return false;
-  }
-  out = v; // out of range decimals become +-inf or denormals/zero, as a float conversion does
-  return true;
+  return o;
 }
 
 } // namespace fftess::cli

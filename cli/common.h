@@ -43,17 +43,14 @@ private:
 void writeStdout(const std::string& s);
 
 uint32_t floatBits(float f);
-float bitsFloat(uint32_t b);
 std::string hex8(uint32_t v);                 // 8 lowercase hex digits
 std::string formatFloat(float f);             // shortest round-trip decimal (%.9g trimmed), nan/inf spelled out
 std::string formatNumber(double v);           // for human text: up to 6 significant digits
 std::string fixed16(uint32_t v);              // 16.16 value as 0xHHHHHHHH
 std::string fractionOf65536(int64_t units2);  // value given in 1/131072 units -> "k/65536" with .5 when needed
 std::string quoteToken(const std::string& s); // 'token' with control characters escaped
+std::string xmlEscape(const std::string& s);  // & < > " as XML entities (SVG text and attributes)
 
-// A factor token: a decimal float (strtof: correctly rounded; nan/inf accepted; out-of-range decimals become +-inf,
-// denormals or zero as a float conversion does) or 0x + exactly 8 hex digits (the IEEE-754 bits).
-// Returns false and a reason in why.
-bool parseFactor(const std::string& tok, float& out, std::string& why);
+// Factor tokens, batch lines and the hex output format: tessellator/batch.h (fftess::parseFactor and friends).
 
 } // namespace fftess::cli

@@ -7,6 +7,7 @@
 #include "commands.h"
 #include "common.h"
 
+#include "tessellator/batch.h"
 #include "tessellator/tessellator.h"
 
 #include <nlohmann/json.hpp>
@@ -341,7 +342,7 @@ int explainPair(const ExplainArgs& a, Partitioning part, const Stage& stage) {
   float f[2];
   for (int i = 0; i < 2; ++i) {
     std::string why;
-    if (!parseFactor(a.factors[i], f[i], why))
+    if (!fftess::parseFactor(a.factors[i], f[i], &why))
       throw UsageError(std::string("explain: ") + (i ? "SMALL" : "BIG") + " " + quoteToken(a.factors[i]) + ": " + why);
   }
   Comparison c = compare(f[0], f[1], part, stage);

@@ -2,6 +2,7 @@
 #include "commands.h"
 #include "common.h"
 
+#include "tessellator/batch.h"
 #include "tessellator/tessellator.h"
 
 #include <cerrno>
@@ -23,122 +24,38 @@ struct BatchPatch {
   Patch patch;
 };
 
-struct BatchError {
-  int line = 0;
-  std::string message;
-};
-
-const char* const kFactorNames[3][6] = {
-    {"Ueq0", "Veq0", "Ueq1", "Veq1", "insideU", "insideV"},
-    {"Ueq0", "Veq0", "Weq0", "inside", "f4", "f5"},
-    {"density", "detail", "f2", "f3", "f4", "f5"},
-};
-
-// Parses one batch line. Returns false with err set on a malformed line.
+// Parses one input line with the batch format's parser (tessellator/batch.h). The CLI also allows a trailing
+// "# comment" after a patch. Returns false with err set on a malformed line; isPatch is false for blank and comment
+// lines.
 bool parseLine(const std::string& raw, int lineNo, const std::string& source, BatchPatch& bp, std::string& err,
                bool& isPatch) {
   std::string s = raw;
   if (auto hash = s.find('#'); hash != std::string::npos) s.erase(hash);
-  if (!s.empty() && s.back() == '\r') s.pop_back();
-  std::istringstream in(s);
-  std::vector<std::string> tok;
-  for (std::string t; in >> t;) tok.push_back(t);
-  isPatch = !tok.empty();
+  isPatch = !isBatchSkippable(s);
   if (!isPatch) return true;
-  const std::string where = source + ":" + std::to_string(lineNo) + ": ";
-  auto fail = [&](size_t i, const std::string& what) {
-    err = where + "token " + std::to_string(i + 1) + " " + quoteToken(tok[i]) + ": " + what;
-    return false;
-  };
   Patch p;
-  if (!parseDomain(tok[0].c_str(), p.domain)) return fail(0, "unknown domain (expected quad|tri|isoline)");
-  if (tok.size() < 2) {
-    err = where + "missing partitioning after " + quoteToken(tok[0]) +
-          " (expected DOMAIN PARTITIONING TOPOLOGY STAGE f0 f1 f2 f3 f4 f5)";
+  fftess::BatchError be;
+  if (!parseBatchLine(s, p, be)) {
+    err = source + ":" + std::to_string(lineNo) + ": " +
+          (be.token.empty() ? "" : "token " + std::to_string(be.column) + " " + quoteToken(be.token) + ": ") + be.message;
     return false;
-  }
-  if (!parsePartitioning(tok[1].c_str(), p.partitioning))
-    return fail(1, "unknown partitioning (expected integer|pow2|fractional_even|fractional_odd)");
-  if (tok.size() < 3) {
-    err = where + "missing topology (expected point|line|triangle_cw|triangle_ccw)";
-    return false;
-  }
-  if (!parseOutputPrimitive(tok[2].c_str(), p.primitive))
-    return fail(2, "unknown topology (expected point|line|triangle_cw|triangle_ccw)");
-  if (p.domain == Domain::Isoline &&
-      (p.primitive == OutputPrimitive::TriangleCw || p.primitive == OutputPrimitive::TriangleCcw))
-    return fail(2, "isoline output is point or line");
-  if (tok.size() < 4) {
-    err = where + "missing stage (expected hw|hlsl-avg|hlsl-min|hlsl-max|hlsl-avg-1axis|hlsl-min-1axis|hlsl-max-1axis)";
-    return false;
-  }
-  if (!parseStage(tok[3].c_str(), p.stage))
-    return fail(3, "unknown stage (expected hw|hlsl-avg|hlsl-min|hlsl-max|hlsl-avg-1axis|hlsl-min-1axis|hlsl-max-1axis)");
-  if (tok.size() < 10) {
-    err = where + "expected 6 factors after the stage, got " + std::to_string(tok.size() - 4) +
-          " (format: DOMAIN PARTITIONING TOPOLOGY STAGE f0 f1 f2 f3 f4 f5)";
-    return false;
-  }
-  if (tok.size() > 10) return fail(10, "extra token after the 6 factors");
-  for (int i = 0; i < 6; ++i) {
-    std::string why;
-    if (!parseFactor(tok[4 + i], p.factors[i], why))
-      return fail(4 + i, std::string("factor ") + kFactorNames[static_cast<int>(p.domain)][i] + ": " + why);
   }
   bp.line = lineNo;
   bp.patch = p;
   bp.text.clear();
-  for (size_t i = 0; i < tok.size(); ++i) bp.text += (i ? " " : "") + tok[i];
+  std::istringstream in(s);
+  for (std::string t; in >> t;) bp.text += (bp.text.empty() ? "" : " ") + t;
   return true;
-}
-
-int indicesPerPrimitive(const Patch& p) {
-  switch (p.primitive) {
-  case OutputPrimitive::TriangleCw:
-  case OutputPrimitive::TriangleCcw: return 3;
-  case OutputPrimitive::Line: return 2;
-  case OutputPrimitive::Point: return 1;
-  }
-  return 1;
-}
-
-// ---- formats -------------------------------------------------------------------------------------------------
-// hex: exactly the golden .out block.
-void formatHex(std::string& out, int n, const Tessellator& t, const Patch& p) {
-  const auto& pts = t.points();
-  const auto& idx = t.indices();
-  out += "patch " + std::to_string(n) + " points " + std::to_string(pts.size()) + " indices " +
-         std::to_string(idx.size()) + "\n";
-  char buf[32];
-  for (const DomainPoint& q : pts) {
-    std::snprintf(buf, sizeof buf, "%08x %08x\n", floatBits(q.u), floatBits(q.v));
-    out += buf;
-  }
-  const size_t per = static_cast<size_t>(indicesPerPrimitive(p));
-  for (size_t i = 0; i < idx.size(); ++i) {
-    out += std::to_string(idx[i]);
-    out += ((i + 1) % per == 0 || i + 1 == idx.size()) ? '\n' : ' ';
-  }
-}
-
-uint64_t fnv1a(const std::string& s) {
-  uint64_t h = 0xcbf29ce484222325ull;
-  for (unsigned char c : s) {
-    h ^= c;
-    h *= 0x100000001b3ull;
-  }
-  return h;
 }
 
 void formatTable(std::string& out, const BatchPatch& bp, const Tessellator& t) {
   const Patch& p = bp.patch;
-  const int d = static_cast<int>(p.domain);
   const int nf = p.domain == Domain::Quad ? 6 : p.domain == Domain::Tri ? 4 : 2;
   out += "patch " + std::to_string(bp.index) + " (line " + std::to_string(bp.line) + "): " + toString(p.domain) + " " +
          toString(p.partitioning) + " " + toString(p.primitive) + " " + toString(p.stage) + "\n";
   out += "  factors:";
   for (int i = 0; i < nf; ++i) {
-    out += std::string("  ") + kFactorNames[d][i];
+    out += std::string("  ") + factorName(p.domain, i);
     if (p.stage.hlsl && ((p.domain == Domain::Quad && i >= 4) || (p.domain == Domain::Tri && i == 3)))
       out += "(scale)";
     out += "=" + formatFloat(p.factors[i]);
@@ -150,7 +67,7 @@ void formatTable(std::string& out, const BatchPatch& bp, const Tessellator& t) {
     const HlslFactors& h = t.hlslFactors();
     out += "  after HLSL stage (rounded / unrounded):";
     for (int i = 0; i < nf; ++i)
-      out += std::string("  ") + kFactorNames[d][i] + "=" + formatFloat(h.rounded[i]) + "/" + formatFloat(h.unrounded[i]);
+      out += std::string("  ") + factorName(p.domain, i) + "=" + formatFloat(h.rounded[i]) + "/" + formatFloat(h.unrounded[i]);
     out += "\n";
   }
   const auto& pts = t.points();
@@ -159,7 +76,7 @@ void formatTable(std::string& out, const BatchPatch& bp, const Tessellator& t) {
     out += "  culled: an outer factor is not > 0 (NaN, zero, negative or -inf): no points, no primitives\n\n";
     return;
   }
-  const int per = indicesPerPrimitive(p);
+  const int per = indicesPerLine(p);
   const char* prim = per == 3 ? "triangles" : per == 2 ? "segments" : "points";
   out += "  " + std::to_string(pts.size()) + " points, " + std::to_string(idx.size() / static_cast<size_t>(per)) + " " +
          prim + " (" + std::to_string(idx.size()) + " indices)\n";
@@ -216,7 +133,7 @@ void formatObj(std::string& out, const BatchPatch& bp, const Tessellator& t, siz
     out += buf;
   }
   const auto& idx = t.indices();
-  const int per = indicesPerPrimitive(p);
+  const int per = indicesPerLine(p);
   const char* tag = per == 3 ? "f" : per == 2 ? "l" : "p";
   for (size_t i = 0; i + static_cast<size_t>(per) <= idx.size(); i += static_cast<size_t>(per)) {
     out += tag;
@@ -224,20 +141,6 @@ void formatObj(std::string& out, const BatchPatch& bp, const Tessellator& t, siz
     out += "\n";
   }
   vertexBase += t.points().size();
-}
-
-std::string xmlEscape(const std::string& s) {
-  std::string o;
-  for (char c : s) {
-    switch (c) {
-    case '&': o += "&amp;"; break;
-    case '<': o += "&lt;"; break;
-    case '>': o += "&gt;"; break;
-    case '"': o += "&quot;"; break;
-    default: o += c;
-    }
-  }
-  return o;
 }
 
 constexpr int kSvgCell = 420;   // pixels per patch cell
@@ -255,7 +158,7 @@ void formatSvgPatch(std::string& out, const BatchPatch& bp, const Tessellator& t
   out += buf;
   std::string fac;
   const int nf = p.domain == Domain::Quad ? 6 : p.domain == Domain::Tri ? 4 : 2;
-  for (int i = 0; i < nf; ++i) fac += std::string(i ? " " : "") + kFactorNames[static_cast<int>(p.domain)][i] + "=" + formatFloat(p.factors[i]);
+  for (int i = 0; i < nf; ++i) fac += std::string(i ? " " : "") + factorName(p.domain, i) + "=" + formatFloat(p.factors[i]);
   std::snprintf(buf, sizeof buf, "<text x=\"%d\" y=\"%d\" class=\"s\">%s</text>\n", cx + 10, cy + 34, xmlEscape(fac).c_str());
   out += buf;
   const auto& pts = t.points();
@@ -277,7 +180,7 @@ void formatSvgPatch(std::string& out, const BatchPatch& bp, const Tessellator& t
                   oy + kSvgDomain / 2.0);
     out += buf;
   }
-  const int per = indicesPerPrimitive(p);
+  const int per = indicesPerLine(p);
   if (per == 3) {
     for (size_t i = 0; i + 3 <= idx.size(); i += 3) {
       const DomainPoint &a = pts[static_cast<size_t>(idx[i])], &b = pts[static_cast<size_t>(idx[i + 1])],
@@ -410,12 +313,12 @@ int runTessellate(const TessellateArgs& a) {
   for (const BatchPatch& bp : patches) {
     tess.tessellate(bp.patch, opt);
     if (a.format == "hex") {
-      formatHex(block, bp.index, tess, bp.patch);
+      appendHexBlock(block, bp.index, bp.patch, tess);
     } else if (a.format == "hashes") {
       std::string b;
-      formatHex(b, bp.index, tess, bp.patch);
+      appendHexBlock(b, bp.index, bp.patch, tess);
       char h[24];
-      std::snprintf(h, sizeof h, " %016llx\n", static_cast<unsigned long long>(fnv1a(b)));
+      std::snprintf(h, sizeof h, " %016llx\n", static_cast<unsigned long long>(fnv1a64(b)));
       block = bp.text + h;
     } else if (a.format == "table") {
       formatTable(block, bp, tess);

@@ -1,5 +1,6 @@
 #include "batch.h"
 
+#include <cctype>
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
@@ -38,34 +39,60 @@ void appendHex8(std::string& out, uint32_t v) {
 bool isBatchSkippable(const std::string& line) {
   for (char c : line) {
     if (c == '#') return true;
-    if (c != ' ' && c != '\t' && c != '\r' && c != '\n') return false;
+    if (!std::isspace(static_cast<unsigned char>(c))) return false; // blank as the tokenizer sees it
   }
   return true;
 }
 
-bool parseFactor(const std::string& token, float& out) {
+bool parseFactor(const std::string& token, float& out, std::string* why) {
+  auto fail = [&](const char* reason) {
+    if (why) *why = reason;
+    return false;
+  };
   if (token.size() >= 2 && token[0] == '0' && (token[1] == 'x' || token[1] == 'X')) {
-    if (token.size() != 10) return false;
+    if (token.size() != 10) return fail("hex factor needs 0x and exactly 8 hex digits");
     uint32_t bits = 0;
     for (size_t i = 2; i < 10; ++i) {
       const int d = hexDigit(token[i]);
-      if (d < 0) return false;
+      if (d < 0) return fail("hex factor needs 0x and exactly 8 hex digits");
       bits = (bits << 4) | uint32_t(d);
     }
     out = fx::floatOf(bits);
     return true;
   }
-  if (token.empty()) return false;
+  if (token.empty()) return fail("not a number");
+  // strtof also reads C99 hex floats; an 'x' in a token that is not nan/inf (which have an 'n') is one of those.
+  if (token.find_first_of("xX") != std::string::npos && token.find_first_of("nN") == std::string::npos)
+    return fail("not a decimal float (hex factors are 0x and exactly 8 hex digits)");
   // Decimal: digits, sign, point, exponent, or the words strtof knows (inf, nan).
   char* end = nullptr;
   errno = 0;
   const float v = std::strtof(token.c_str(), &end);
-  if (end != token.c_str() + token.size()) return false;
+  if (end == token.c_str() || end != token.c_str() + token.size()) return fail("not a number");
   out = v; // overflow gives +-Inf and underflow a denormal or zero, as a float literal would
   return true;
 }
 
+const char* factorName(Domain domain, int i) {
+  static const char* const names[3][6] = {
+      {"Ueq0", "Veq0", "Ueq1", "Veq1", "insideU", "insideV"},
+      {"Ueq0", "Veq0", "Weq0", "inside", "f4", "f5"},
+      {"density", "detail", "f2", "f3", "f4", "f5"},
+  };
+  static const char* const plain[6] = {"f0", "f1", "f2", "f3", "f4", "f5"};
+  if (i < 0 || i > 5) return "?";
+  switch (domain) {
+  case Domain::Quad: return names[0][i];
+  case Domain::Tri: return names[1][i];
+  case Domain::Isoline: return names[2][i];
+  }
+  return plain[i];
+}
+
 bool parseBatchLine(const std::string& line, Patch& patch, BatchError& err) {
+  static const char* const kFormat = "DOMAIN PARTITIONING TOPOLOGY STAGE f0 f1 f2 f3 f4 f5";
+  static const char* const kTopologies = "point|line|triangle_cw|triangle_ccw";
+  static const char* const kStages = "hw|hlsl-avg|hlsl-min|hlsl-max|hlsl-avg-1axis|hlsl-min-1axis|hlsl-max-1axis";
   const std::vector<std::string> t = tokens(line);
   auto fail = [&](int column, const std::string& token, const std::string& message) {
     err.column = column;
@@ -73,21 +100,30 @@ bool parseBatchLine(const std::string& line, Patch& patch, BatchError& err) {
     err.message = message;
     return false;
   };
+  Patch p;
+  if (t.empty()) return fail(1, "", std::string("empty line (expected ") + kFormat + ")");
+  if (!parseDomain(t[0].c_str(), p.domain)) return fail(1, t[0], "unknown domain (expected quad|tri|isoline)");
+  if (t.size() < 2)
+    return fail(2, "", "missing partitioning after '" + t[0] + "' (expected " + kFormat + ")");
+  if (!parsePartitioning(t[1].c_str(), p.partitioning))
+    return fail(2, t[1], "unknown partitioning (expected integer|pow2|fractional_even|fractional_odd)");
+  if (t.size() < 3) return fail(3, "", std::string("missing topology (expected ") + kTopologies + ")");
+  if (!parseOutputPrimitive(t[2].c_str(), p.primitive))
+    return fail(3, t[2], std::string("unknown topology (expected ") + kTopologies + ")");
+  if (p.domain == Domain::Isoline &&
+      (p.primitive == OutputPrimitive::TriangleCw || p.primitive == OutputPrimitive::TriangleCcw))
+    return fail(3, t[2], "isoline output is point or line");
+  if (t.size() < 4) return fail(4, "", std::string("missing stage (expected ") + kStages + ")");
+  if (!parseStage(t[3].c_str(), p.stage)) return fail(4, t[3], std::string("unknown stage (expected ") + kStages + ")");
   if (t.size() < 10)
     return fail(int(t.size()) + 1, "",
-                "expected 10 tokens (DOMAIN PARTITIONING TOPOLOGY STAGE f0..f5), got " + std::to_string(t.size()));
-  if (t.size() > 10) return fail(11, t[10], "unexpected extra token after f5");
-  Patch p;
-  if (!parseDomain(t[0].c_str(), p.domain)) return fail(1, t[0], "unknown domain (quad|tri|isoline)");
-  if (!parsePartitioning(t[1].c_str(), p.partitioning))
-    return fail(2, t[1], "unknown partitioning (integer|pow2|fractional_odd|fractional_even)");
-  if (!parseOutputPrimitive(t[2].c_str(), p.primitive))
-    return fail(3, t[2], "unknown topology (point|line|triangle_cw|triangle_ccw)");
-  if (!parseStage(t[3].c_str(), p.stage))
-    return fail(4, t[3], "unknown stage (hw|hlsl-avg|hlsl-min|hlsl-max|hlsl-avg-1axis|hlsl-min-1axis|hlsl-max-1axis)");
-  for (int i = 0; i < 6; ++i)
-    if (!parseFactor(t[4 + i], p.factors[i]))
-      return fail(5 + i, t[4 + i], "bad factor f" + std::to_string(i) + " (decimal float or 0x + 8 hex digits)");
+                "expected 6 factors after the stage, got " + std::to_string(t.size() - 4) + " (format: " + kFormat + ")");
+  if (t.size() > 10) return fail(11, t[10], "extra token after the 6 factors");
+  for (int i = 0; i < 6; ++i) {
+    std::string why;
+    if (!parseFactor(t[4 + i], p.factors[i], &why))
+      return fail(5 + i, t[4 + i], std::string("factor ") + factorName(p.domain, i) + ": " + why);
+  }
   patch = p;
   return true;
 }

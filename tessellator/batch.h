@@ -18,18 +18,28 @@ namespace fftess {
 struct BatchError {
   int column = 0;    // 1-based token number on the line (0 = the line as a whole)
   std::string token; // the offending token (empty when a token is missing)
-  std::string message;
+  std::string message; // the reason, naming what was expected (e.g. "factor Ueq1: hex factor needs 0x and exactly 8
+                       // hex digits"); callers print "FILE:LINE: token COLUMN 'TOKEN': MESSAGE", or without the
+                       // token part when token is empty
 };
 
 // True for lines the format ignores: empty, only whitespace, or first non-blank character '#'.
 bool isBatchSkippable(const std::string& line);
 
-// Parses one patch line. On failure returns false and fills err (the caller adds the line number).
-// Extra tokens after f5 are an error; fewer than 10 tokens is an error.
+// Parses one patch line (no comment: '#' is not special here). On failure returns false and fills err (the caller
+// adds the source and line number). Tokens are checked left to right, so the first bad or missing token is the one
+// reported. Errors: an unknown word; isoline with a triangle topology (isoline output is point or line); fewer than
+// 10 tokens (token empty, column = the first missing one); extra tokens after f5; a bad factor.
 bool parseBatchLine(const std::string& line, Patch& patch, BatchError& err);
 
-// Parses one factor token: decimal float (std::strtof, whole token consumed) or 0x + exactly 8 hex digits.
-bool parseFactor(const std::string& token, float& out);
+// Parses one factor token: a decimal float (std::strtof, whole token consumed: correctly rounded; nan/inf accepted;
+// out-of-range decimals become +-inf, denormals or zero) or 0x + exactly 8 hex digits (the IEEE-754 bits). C99 hex
+// floats ("0x1p3", "-0x40800000") are not decimals and are refused. why (optional): the reason on failure.
+bool parseFactor(const std::string& token, float& out, std::string* why = nullptr);
+
+// Name of factor i (0..5) of a batch line for the domain: quad Ueq0 Veq0 Ueq1 Veq1 insideU insideV; tri Ueq0 Veq0
+// Weq0 inside f4 f5; isoline density detail f2 f3 f4 f5 (the names unused by a domain are "fN").
+const char* factorName(Domain domain, int i);
 
 // Appends the output block of one tessellated patch (index n) to out, exactly as the golden .out files.
 void appendHexBlock(std::string& out, int n, const Patch& patch, const Tessellator& result);

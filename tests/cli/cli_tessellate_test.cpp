@@ -68,6 +68,12 @@ TEST_CASE("tessellate: a malformed line is an error naming line and token; nothi
       {"quad integer triangle_cw hw 4 4 4 four 4 4\n", "token 8 'four'"},
       {"quad integer triangle_cw hw 4 4 4 4 4 4,\n", "token 10 '4,'"},
       {"isoline integer triangle_cw hw 4 4 0 0 0 0\n", "token 3 'triangle_cw'"},
+      {"quad integer triangle_cw hw 4 4 -0x40800000 4 4 4\n", "token 7 '-0x40800000': factor Ueq1: not a decimal"},
+      {"quad integer triangle_cw hw 4 4 0x1p3 4 4 4\n", "token 7 '0x1p3': factor Ueq1: hex factor needs"},
+      {"tri integer triangle_cw hw 4 4 4 4..0 0 0\n", "token 8 '4..0': factor inside: not a number"},
+      {"quad\n", ":1: missing partitioning after 'quad'"},
+      {"quad integer\n", ":1: missing topology"},
+      {"quad integer point\n", ":1: missing stage"},
   };
   for (const Case& c : cases) {
     INFO(c.line);
