@@ -223,43 +223,51 @@ struct MapView {
 };
 
 const char* kSvgStyle =
-    "<style>.p{fill:none;stroke:#bbb;stroke-width:0.4}.tj{stroke:#e08a00;stroke-width:2.5}"
+    "<style>.p{fill:none;stroke:#bbb;stroke-width:0.3}.tl{fill:none;stroke:#777;stroke-width:0.8}.tj{stroke:#e08a00;stroke-width:2.5}"
     ".cr{stroke:#d01010;stroke-width:3}.mk{fill:none;stroke:#d01010;stroke-width:0.8}.t{font:13px sans-serif}"
     ".s{font:11px monospace}.ok{fill:#2a8a2a}.warn{fill:#e08a00}.bad{fill:#d01010}.path{fill:none;stroke:#446;"
     "stroke-width:1}.ins{fill:#fff;stroke:#222}.a{stroke:#2a5599;stroke-width:1.2}.b{stroke:#7a2a99;stroke-width:1.2}"
     ".x{stroke:#d01010;stroke-width:2}</style>\n";
 
-// The layout from above: tile grids of each ring (tile rings), the patch grid (uniform grid), else the extent.
-// Drawn from the documented layout parameters (verify.h), one terrain extent query: verify's per-patch queries
-// rebuild the terrain on every call.
+// The layout from above, from verify's real patch geometry (one terrain build for all patches): every patch outlined
+// thinly, and each tile (ring, tile) of a tile-ring layout outlined around its patches. Very large layouts (more
+// than kSvgMaxPatches patches) are drawn as their extent only.
+constexpr size_t kSvgMaxPatches = 200000;
+
 void svgPatches(std::string& o, const vf::Scene& scene, const MapView& v) {
   char buf[256];
   o += "<g id=\"layout\">\n";
-  auto rect = [&](double x0, double z0, double x1, double z1) {
-    std::snprintf(buf, sizeof buf, "<rect class=\"p\" x=\"%.2f\" y=\"%.2f\" width=\"%.2f\" height=\"%.2f\"/>\n", v.x(x0),
-                  v.y(z1), v.x(x1) - v.x(x0), v.y(z0) - v.y(z1));
-    o += buf;
+  const std::vector<vf::PatchGeometry> geo = vf::patchGeometry(scene);
+  if (geo.empty() || geo.size() > kSvgMaxPatches) {
+    std::snprintf(buf, sizeof buf, "<rect class=\"tl\" x=\"%.2f\" y=\"%.2f\" width=\"%.2f\" height=\"%.2f\"/>\n",
+                  v.x(v.e.minX), v.y(v.e.maxZ), v.x(v.e.maxX) - v.x(v.e.minX), v.y(v.e.minZ) - v.y(v.e.maxZ));
+    o += buf + std::string("</g>\n");
+    return;
+  }
+  // Patches: one path, a closed quadrilateral per patch through its corners in order (u0v0, u1v0, u1v1, u0v1).
+  o += "<path class=\"p\" d=\"";
+  struct Box {
+    double x0 = 1e300, z0 = 1e300, x1 = -1e300, z1 = -1e300;
   };
-  const vf::Layout& L = scene.layout;
-  const double cx = (v.e.minX + v.e.maxX) / 2.0, cz = (v.e.minZ + v.e.maxZ) / 2.0;
-  if (L.kind == vf::LayoutKind::TileRings) {
-    const int n = L.tilesPerRingEdge;
-    for (int r = 0; r < L.rings; ++r) {
-      const double tile = static_cast<double>(L.patchesPerTileEdge) * L.basePatchSize * std::ldexp(1.0, r);
-      const double half = tile * n / 2.0;
-      for (int i = 0; i < n; ++i)
-        for (int k = 0; k < n; ++k) {
-          const bool inner = r > 0 && i >= n / 4 && i < n - n / 4 && k >= n / 4 && k < n - n / 4;
-          if (inner) continue;
-          rect(cx - half + i * tile, cz - half + k * tile, cx - half + (i + 1) * tile, cz - half + (k + 1) * tile);
-        }
+  std::map<std::pair<int, int>, Box> tiles;
+  for (const vf::PatchGeometry& g : geo) {
+    const vf::Vec3* c = g.corners;
+    std::snprintf(buf, sizeof buf, "M%.2f %.2fL%.2f %.2fL%.2f %.2fL%.2f %.2fZ", v.x(c[0].x), v.y(c[0].z), v.x(c[1].x),
+                  v.y(c[1].z), v.x(c[3].x), v.y(c[3].z), v.x(c[2].x), v.y(c[2].z));
+    o += buf;
+    Box& b = tiles[{g.ref.ring, g.ref.tile}];
+    for (int k = 0; k < 4; ++k) {
+      b.x0 = std::min(b.x0, static_cast<double>(c[k].x)), b.x1 = std::max(b.x1, static_cast<double>(c[k].x));
+      b.z0 = std::min(b.z0, static_cast<double>(c[k].z)), b.z1 = std::max(b.z1, static_cast<double>(c[k].z));
     }
-  } else if (L.kind == vf::LayoutKind::Grid && static_cast<int64_t>(L.patchesX) * L.patchesZ <= 100000) {
-    const double w = (static_cast<double>(v.e.maxX) - v.e.minX) / L.patchesX, h = (static_cast<double>(v.e.maxZ) - v.e.minZ) / L.patchesZ;
-    for (int i = 0; i < L.patchesX; ++i)
-      for (int k = 0; k < L.patchesZ; ++k) rect(v.e.minX + i * w, v.e.minZ + k * h, v.e.minX + (i + 1) * w, v.e.minZ + (k + 1) * h);
-  } else {
-    rect(v.e.minX, v.e.minZ, v.e.maxX, v.e.maxZ);
+  }
+  o += "\"/>\n";
+  // Tiles (a grid or heightmap grid is one tile: its outline is the terrain's).
+  for (const auto& kv : tiles) {
+    const Box& b = kv.second;
+    std::snprintf(buf, sizeof buf, "<rect class=\"tl\" x=\"%.2f\" y=\"%.2f\" width=\"%.2f\" height=\"%.2f\"/>\n",
+                  v.x(b.x0), v.y(b.z1), v.x(b.x1) - v.x(b.x0), v.y(b.z0) - v.y(b.z1));
+    o += buf;
   }
   o += "</g>\n";
 }

@@ -397,6 +397,19 @@ PatchRef patchRef(const Scene& scene, int patchIndex) {
   return t.patches[patchIndex].ref;
 }
 
+std::vector<PatchGeometry> patchGeometry(const Scene& scene) {
+  detail::Terrain t;
+  std::string err;
+  std::vector<PatchGeometry> out;
+  if (!detail::buildTerrain(scene, t, err)) return out;
+  out.resize(t.patches.size());
+  for (size_t i = 0; i < t.patches.size(); ++i) {
+    out[i].ref = t.patches[i].ref;
+    for (int c = 0; c < 4; ++c) out[i].corners[c] = t.patches[i].corners[c];
+  }
+  return out;
+}
+
 Extent terrainExtent(const Scene& scene) {
   detail::Terrain t;
   std::string err;

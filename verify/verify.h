@@ -319,6 +319,15 @@ Vec3 domainPosition(const Scene& scene, int patchIndex, float u, float v);
 // Patches in the scene's layout, and the reference of one.
 int patchCount(const Scene& scene);
 PatchRef patchRef(const Scene& scene, int patchIndex);
+// Every patch of the layout at once (one terrain build; the per-patch queries above rebuild it on each call):
+// patchGeometry(scene)[i] is patch i, its ref as patchRef(scene, i) and its four flat corners (y = 0) exactly as the
+// checker and domain shader use them (layout.corners decides how they are computed), corners[u + 2v]: [0] (u0, v0),
+// [1] (u1, v0), [2] (u0, v1), [3] (u1, v1). Empty for an invalid scene.
+struct PatchGeometry {
+  PatchRef ref;
+  Vec3 corners[4];
+};
+std::vector<PatchGeometry> patchGeometry(const Scene& scene);
 // Terrain extent in x/z: [minX, maxX] x [minZ, maxZ].
 struct Extent {
   float minX = 0, minZ = 0, maxX = 0, maxZ = 0;

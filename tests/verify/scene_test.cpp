@@ -163,3 +163,50 @@ TEST_CASE("loadScene reports a missing file", "[verify][scene]") {
   REQUIRE_FALSE(r.ok);
   CHECK(r.error.find("/nonexistent/scene.toml") != std::string::npos);
 }
+
+TEST_CASE("patchGeometry: every patch's ref and corners at once, as the per-patch queries give them", "[verify][scene]") {
+  // kBase: hand-counted 16 * 4 ring-0 patches of size 1 and 12 * 4 ring-1 patches of size 2 over [-8, 8]^2.
+  for (const char* corners : {"reconstructed", "shared"}) {
+    INFO(corners);
+    SceneResult r = parseScene(kBase, "t.toml", {std::string("layout.corners=") + corners});
+    REQUIRE(r.ok);
+    const std::vector<PatchGeometry> geo = patchGeometry(r.scene);
+    REQUIRE(static_cast<int>(geo.size()) == patchCount(r.scene));
+    REQUIRE(geo.size() == 16 * 4 + 12 * 4);
+    double area = 0;
+    for (size_t i = 0; i < geo.size(); ++i) {
+      INFO("patch " << i);
+      const PatchGeometry& g = geo[i];
+      const PatchRef ref = patchRef(r.scene, static_cast<int>(i));
+      CHECK(g.ref.index == static_cast<int>(i));
+      CHECK(g.ref.ring == ref.ring);
+      CHECK(g.ref.tile == ref.tile);
+      CHECK(g.ref.patch == ref.patch);
+      CHECK(g.ref.level == ref.level);
+      // Flat terrain: the domain shader at the corner (u, v) = (0, 0) is corner 0 exactly; all corners have y = 0.
+      const Vec3 p = domainPosition(r.scene, static_cast<int>(i), 0.0f, 0.0f);
+      CHECK(p.x == g.corners[0].x);
+      CHECK(p.z == g.corners[0].z);
+      // corners[u + 2v]: an axis-aligned square of side 2^level.
+      const float side = static_cast<float>(1 << g.ref.level);
+      CHECK(g.corners[1].x - g.corners[0].x == side);
+      CHECK(g.corners[1].z == g.corners[0].z);
+      CHECK(g.corners[2].z - g.corners[0].z == side);
+      CHECK(g.corners[2].x == g.corners[0].x);
+      CHECK(g.corners[3].x == g.corners[1].x);
+      CHECK(g.corners[3].z == g.corners[2].z);
+      for (const Vec3& c : g.corners) {
+        CHECK(c.y == 0.0f);
+        CHECK(std::fabs(c.x) <= 8.0f);
+        CHECK(std::fabs(c.z) <= 8.0f);
+      }
+      area += static_cast<double>(side) * side;
+    }
+    CHECK(area == 16.0 * 16.0); // the rings tile the extent without gaps or overlaps (with the square check above)
+  }
+  SceneResult bad = parseScene(kBase, "t.toml");
+  REQUIRE(bad.ok);
+  bad.scene.displacement.kind = DisplacementKind::Fbm; // built by hand without its texture: no terrain
+  bad.scene.displacement.texels.reset();
+  CHECK(patchGeometry(bad.scene).empty());
+}
