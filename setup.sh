@@ -16,7 +16,7 @@ packages=(
   g++ cmake ninja-build
   catch2 libcli11-dev libglm-dev libcgal-dev nlohmann-json3-dev libtomlplusplus-dev libbenchmark-dev
   glslang-tools
-  libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
+  libegl-dev libgl-dev libopengl-dev libegl-mesa0 libgl1-mesa-dri
 )
 
 install_packages() {
