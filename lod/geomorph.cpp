@@ -21,8 +21,7 @@ float geomorphLevel(const Patch& patch, const Camera& camera, const GeomorphPara
   return glsl::geomorphLevelAt(glsl::patchCentre(c[0], c[1], c[2], c[3]), detail::toGlsl(camera), toGlsl(params));
 }
 
-PatchLod geomorph(float level, const float neighbourLevel[4], const GeomorphParams& params) {
-  (void)params; // the factors depend on the levels only; params kept for symmetry with the other schemes
+PatchLod geomorph(float level, const float neighbourLevel[4]) {
   glsl::LodResult r =
       glsl::geomorphLod(level, neighbourLevel[0], neighbourLevel[1], neighbourLevel[2], neighbourLevel[3]);
   return detail::fromGlsl(r, Scheme::Geomorph);

@@ -265,7 +265,7 @@ float geomorphLevel(const Patch& patch, const Camera& camera, const GeomorphPara
 
 // Factors from the patch's level and its neighbours' levels (per edge, FactorIndex order; pass the patch's own
 // level where there is no neighbour). Edges: 2^(floor(min(L, Ln)) + 1); inside: 2^(floor(L) + 1).
-PatchLod geomorph(float level, const float neighbourLevel[4], const GeomorphParams& params = {});
+PatchLod geomorph(float level, const float neighbourLevel[4]);
 
 // The vertex heights one side produces along a shared border. fineHeights: the true heights at t = i/64,
 // i = 0..64, in the same order for both sides. Output: segments n (a power of two, 2..64) and heights[k] at
