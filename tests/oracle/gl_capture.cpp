@@ -1,10 +1,7 @@
 // Capture of a real OpenGL tessellator (Mesa llvmpipe) through transform feedback. See gl_capture.h and
 // docs/oracle.md.
 #include "gl_capture.h"
-
-#include <EGL/egl.h>
-#include <EGL/eglext.h>
-#include <GL/glcorearb.h>
+#include "gl_context.h"
 
 #include <algorithm>
 #include <cmath>
@@ -18,61 +15,7 @@ namespace oracle {
 
 namespace {
 
-// GL entry points, loaded through eglGetProcAddress (EGL 1.5 returns core functions too).
-#define FFTESS_GL_FUNCTIONS(X)                                                                                        \
-  X(PFNGLGETSTRINGPROC, glGetString)                                                                                   \
-  X(PFNGLGETERRORPROC, glGetError)                                                                                     \
-  X(PFNGLGETINTEGERVPROC, glGetIntegerv)                                                                               \
-  X(PFNGLENABLEPROC, glEnable)                                                                                         \
-  X(PFNGLFINISHPROC, glFinish)                                                                                         \
-  X(PFNGLCREATESHADERPROC, glCreateShader)                                                                             \
-  X(PFNGLSHADERSOURCEPROC, glShaderSource)                                                                             \
-  X(PFNGLCOMPILESHADERPROC, glCompileShader)                                                                           \
-  X(PFNGLGETSHADERIVPROC, glGetShaderiv)                                                                               \
-  X(PFNGLGETSHADERINFOLOGPROC, glGetShaderInfoLog)                                                                     \
-  X(PFNGLDELETESHADERPROC, glDeleteShader)                                                                             \
-  X(PFNGLCREATEPROGRAMPROC, glCreateProgram)                                                                           \
-  X(PFNGLATTACHSHADERPROC, glAttachShader)                                                                             \
-  X(PFNGLTRANSFORMFEEDBACKVARYINGSPROC, glTransformFeedbackVaryings)                                                   \
-  X(PFNGLLINKPROGRAMPROC, glLinkProgram)                                                                               \
-  X(PFNGLGETPROGRAMIVPROC, glGetProgramiv)                                                                             \
-  X(PFNGLGETPROGRAMINFOLOGPROC, glGetProgramInfoLog)                                                                   \
-  X(PFNGLDELETEPROGRAMPROC, glDeleteProgram)                                                                           \
-  X(PFNGLUSEPROGRAMPROC, glUseProgram)                                                                                 \
-  X(PFNGLGETUNIFORMLOCATIONPROC, glGetUniformLocation)                                                                 \
-  X(PFNGLUNIFORM1UIPROC, glUniform1ui)                                                                                 \
-  X(PFNGLGENVERTEXARRAYSPROC, glGenVertexArrays)                                                                       \
-  X(PFNGLBINDVERTEXARRAYPROC, glBindVertexArray)                                                                       \
-  X(PFNGLDELETEVERTEXARRAYSPROC, glDeleteVertexArrays)                                                                 \
-  X(PFNGLGENBUFFERSPROC, glGenBuffers)                                                                                 \
-  X(PFNGLBINDBUFFERPROC, glBindBuffer)                                                                                 \
-  X(PFNGLBUFFERDATAPROC, glBufferData)                                                                                 \
-  X(PFNGLBUFFERSUBDATAPROC, glBufferSubData)                                                                           \
-  X(PFNGLGETBUFFERSUBDATAPROC, glGetBufferSubData)                                                                     \
-  X(PFNGLBINDBUFFERBASEPROC, glBindBufferBase)                                                                         \
-  X(PFNGLDELETEBUFFERSPROC, glDeleteBuffers)                                                                           \
-  X(PFNGLGENFRAMEBUFFERSPROC, glGenFramebuffers)                                                                       \
-  X(PFNGLBINDFRAMEBUFFERPROC, glBindFramebuffer)                                                                       \
-  X(PFNGLFRAMEBUFFERPARAMETERIPROC, glFramebufferParameteri)                                                           \
-  X(PFNGLCHECKFRAMEBUFFERSTATUSPROC, glCheckFramebufferStatus)                                                         \
-  X(PFNGLDELETEFRAMEBUFFERSPROC, glDeleteFramebuffers)                                                                 \
-  X(PFNGLVIEWPORTPROC, glViewport)                                                                                     \
-  X(PFNGLPATCHPARAMETERIPROC, glPatchParameteri)                                                                       \
-  X(PFNGLGENQUERIESPROC, glGenQueries)                                                                                 \
-  X(PFNGLDELETEQUERIESPROC, glDeleteQueries)                                                                           \
-  X(PFNGLBEGINQUERYPROC, glBeginQuery)                                                                                 \
-  X(PFNGLENDQUERYPROC, glEndQuery)                                                                                     \
-  X(PFNGLGETQUERYOBJECTUIVPROC, glGetQueryObjectuiv)                                                                   \
-  X(PFNGLBEGINTRANSFORMFEEDBACKPROC, glBeginTransformFeedback)                                                         \
-  X(PFNGLENDTRANSFORMFEEDBACKPROC, glEndTransformFeedback)                                                             \
-  X(PFNGLDRAWARRAYSPROC, glDrawArrays)                                                                                 \
-  X(PFNGLMEMORYBARRIERPROC, glMemoryBarrier)
-
-struct GlFunctions {
-#define FFTESS_DECLARE(type, name) type name = nullptr;
-  FFTESS_GL_FUNCTIONS(FFTESS_DECLARE)
-#undef FFTESS_DECLARE
-};
+using gltest::GlFunctions;
 
 // llvmpipe numbers the tessellated vertices of one draw with 16-bit indices (each patch padded to a multiple of 4):
 // past 65536 domain points per draw it captures wrong vertices without any error (shared facts). Stay well below.
@@ -81,21 +24,6 @@ constexpr int kMaxPatchesPerDraw = 2048;
 // Transform feedback room per draw, in captured vertices (a triangle list has < 2 triangles per point: 6 vertices).
 constexpr int kCaptureVertices = 8 * kDrawPointBudget;
 constexpr int kCaptureStride = 4; // uvec4 per vertex: u bits, v bits, patch in draw, vertex id
-
-bool hasExtension(const char* list, const char* name) {
-  if (!list) return false;
-  const size_t n = std::strlen(name);
-  for (const char* p = list; (p = std::strstr(p, name)) != nullptr; p += n) {
-    if ((p == list || p[-1] == ' ') && (p[n] == ' ' || p[n] == '\0')) return true;
-  }
-  return false;
-}
-
-std::string eglErrorString(EGLint e) {
-  std::ostringstream s;
-  s << "EGL error 0x" << std::hex << e;
-  return s.str();
-}
 
 float bitsToFloat(uint32_t b) {
   float f;
@@ -118,31 +46,6 @@ bool outerDiscards(uint32_t bits) {
   return std::isnan(f) || !(f > 0.0f);
 }
 
-// Conservative number of domain points of a patch (checked against the observed count after the draw).
-int pointBound(const Patch& p) {
-  const uint32_t* f = p.factorBits;
-  switch (p.domain) {
-  case Domain::Quad: {
-    for (int i = 0; i < 4; ++i)
-      if (outerDiscards(f[i])) return 0;
-    int n = 0;
-    for (int i = 0; i < 4; ++i) n += segmentBound(f[i]);
-    return n + (segmentBound(f[4]) + 1) * (segmentBound(f[5]) + 1);
-  }
-  case Domain::Tri: {
-    for (int i = 0; i < 3; ++i)
-      if (outerDiscards(f[i])) return 0;
-    int n = 0;
-    for (int i = 0; i < 3; ++i) n += segmentBound(f[i]);
-    return n + (segmentBound(f[3]) + 1) * (segmentBound(f[3]) + 1);
-  }
-  case Domain::Isoline:
-    if (outerDiscards(f[0]) || outerDiscards(f[1])) return 0;
-    return segmentBound(f[0]) * (segmentBound(f[1]) + 1);
-  }
-  return 0;
-}
-
 int padTo4(int n) { return (n + 3) & ~3; }
 
 // Program variants: one per (domain, spacing, what is captured).
@@ -156,17 +59,6 @@ struct ProgramKey {
     return std::tie(domain, spacing, capture) < std::tie(o.domain, o.spacing, o.capture);
   }
 };
-
-int spacingOf(Partitioning p) {
-  switch (p) {
-  // D3D11.3 spec 11.7: pow2 rounding is the HLSL compiler's; the fixed-function unit treats pow2 as integer.
-  case Partitioning::Integer:
-  case Partitioning::Pow2: return 0;
-  case Partitioning::FractionalOdd: return 1;
-  case Partitioning::FractionalEven: return 2;
-  }
-  return 0;
-}
 
 const char* kVertexShader = R"(#version 450 core
 void main() { gl_Position = vec4(0.0); }
@@ -224,10 +116,44 @@ void main() {
 
 } // namespace
 
+int pointBound(const Patch& p) {
+  const uint32_t* f = p.factorBits;
+  switch (p.domain) {
+  case Domain::Quad: {
+    for (int i = 0; i < 4; ++i)
+      if (outerDiscards(f[i])) return 0;
+    int n = 0;
+    for (int i = 0; i < 4; ++i) n += segmentBound(f[i]);
+    return n + (segmentBound(f[4]) + 1) * (segmentBound(f[5]) + 1);
+  }
+  case Domain::Tri: {
+    for (int i = 0; i < 3; ++i)
+      if (outerDiscards(f[i])) return 0;
+    int n = 0;
+    for (int i = 0; i < 3; ++i) n += segmentBound(f[i]);
+    return n + (segmentBound(f[3]) + 1) * (segmentBound(f[3]) + 1);
+  }
+  case Domain::Isoline:
+    if (outerDiscards(f[0]) || outerDiscards(f[1])) return 0;
+    return segmentBound(f[0]) * (segmentBound(f[1]) + 1);
+  }
+  return 0;
+}
+
+int glSpacing(Partitioning p) {
+  switch (p) {
+  // D3D11.3 spec 11.7: pow2 rounding is the HLSL compiler's; the fixed-function unit treats pow2 as integer.
+  case Partitioning::Integer:
+  case Partitioning::Pow2: return 0;
+  case Partitioning::FractionalOdd: return 1;
+  case Partitioning::FractionalEven: return 2;
+  }
+  return 0;
+}
+
 struct GlOracle::Impl {
-  EGLDisplay display = EGL_NO_DISPLAY;
-  EGLContext context = EGL_NO_CONTEXT;
-  GlFunctions gl;
+  gltest::GlContext context;
+  GlFunctions& gl = context.gl;
   GLuint vao = 0, fbo = 0;
   GLuint factorBuf = 0, counterBuf = 0, slotBuf = 0, storedBuf = 0, captureBuf = 0;
   GLuint queryGenerated = 0, queryWritten = 0;
@@ -240,27 +166,15 @@ struct GlOracle::Impl {
   std::vector<uint32_t> captured;
   int drawCalls = 0;
 
-  bool compile(GLuint shader, const std::string& src, std::string& error) {
-    const char* p = src.c_str();
-    gl.glShaderSource(shader, 1, &p, nullptr);
-    gl.glCompileShader(shader);
-    GLint ok = 0;
-    gl.glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-    if (ok) return true;
-    char log[4096] = {};
-    gl.glGetShaderInfoLog(shader, sizeof log, nullptr, log);
-    error = "GL shader compile failed: " + std::string(log) + "\n" + src;
-    return false;
-  }
-
   Program* program(const ProgramKey& key, std::string& error) {
     auto it = programs.find(key);
     if (it != programs.end()) return &it->second;
     GLuint vs = gl.glCreateShader(GL_VERTEX_SHADER);
     GLuint tcs = gl.glCreateShader(GL_TESS_CONTROL_SHADER);
     GLuint tes = gl.glCreateShader(GL_TESS_EVALUATION_SHADER);
-    bool ok = compile(vs, kVertexShader, error) && compile(tcs, kControlShader, error) &&
-              compile(tes, evaluationShader(key), error);
+    bool ok = gltest::compileShader(gl, vs, kVertexShader, error) &&
+              gltest::compileShader(gl, tcs, kControlShader, error) &&
+              gltest::compileShader(gl, tes, evaluationShader(key), error);
     GLuint prog = 0;
     if (ok) {
       prog = gl.glCreateProgram();
@@ -269,13 +183,7 @@ struct GlOracle::Impl {
       gl.glAttachShader(prog, tes);
       const char* varyings[] = {"cap"};
       gl.glTransformFeedbackVaryings(prog, 1, varyings, GL_INTERLEAVED_ATTRIBS);
-      gl.glLinkProgram(prog);
-      GLint linked = 0;
-      gl.glGetProgramiv(prog, GL_LINK_STATUS, &linked);
-      if (!linked) {
-        char log[4096] = {};
-        gl.glGetProgramInfoLog(prog, sizeof log, nullptr, log);
-        error = "GL program link failed: " + std::string(log);
+      if (!gltest::linkProgram(gl, prog, error)) {
         gl.glDeleteProgram(prog);
         ok = false;
       }
@@ -290,14 +198,7 @@ struct GlOracle::Impl {
     return &programs.emplace(key, p).first->second;
   }
 
-  bool checkGl(const char* what, std::string& error) {
-    GLenum e = gl.glGetError();
-    if (e == GL_NO_ERROR) return true;
-    std::ostringstream s;
-    s << "GL error 0x" << std::hex << e << " after " << what;
-    error = s.str();
-    return false;
-  }
+  bool checkGl(const char* what, std::string& error) { return gltest::checkGl(gl, what, error); }
 
   // One draw of patches [first, first+count) of the group; 'stored' sizes per patch for the vertex-id pass.
   // Appends the captured vertices (kCaptureStride words each) to 'captured'.
@@ -357,7 +258,7 @@ GlOracle::GlOracle() : impl_(new Impl) {}
 
 GlOracle::~GlOracle() {
   Impl& m = *impl_;
-  if (m.context != EGL_NO_CONTEXT) {
+  if (!m.context.renderer().empty()) { // the context is current and its functions are loaded
     auto& gl = m.gl;
     for (auto& kv : m.programs) gl.glDeleteProgram(kv.second.id);
     GLuint bufs[] = {m.factorBuf, m.counterBuf, m.slotBuf, m.storedBuf, m.captureBuf};
@@ -366,107 +267,23 @@ GlOracle::~GlOracle() {
     gl.glDeleteQueries(2, queries);
     gl.glDeleteVertexArrays(1, &m.vao);
     gl.glDeleteFramebuffers(1, &m.fbo);
-    eglMakeCurrent(m.display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
-    eglDestroyContext(m.display, m.context);
   }
-  if (m.display != EGL_NO_DISPLAY) eglTerminate(m.display);
+  // m.context releases the EGL context and display.
 }
 
 std::unique_ptr<GlOracle> GlOracle::create(std::string& error) {
   std::unique_ptr<GlOracle> o(new GlOracle);
   Impl& m = *o->impl_;
-  std::string log;
-
-  // Candidate displays: EGL devices (the software one first), then the surfaceless Mesa platform.
-  const char* clientExt = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
-  auto getPlatformDisplay = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
-  std::vector<std::pair<EGLenum, void*>> candidates;
-  if (hasExtension(clientExt, "EGL_EXT_device_enumeration") || hasExtension(clientExt, "EGL_EXT_device_base")) {
-    auto queryDevices = reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
-    auto queryDeviceString = reinterpret_cast<PFNEGLQUERYDEVICESTRINGEXTPROC>(eglGetProcAddress("eglQueryDeviceStringEXT"));
-    EGLDeviceEXT devices[16];
-    EGLint n = 0;
-    if (queryDevices && queryDevices(16, devices, &n)) {
-      std::vector<std::pair<EGLenum, void*>> hardware;
-      for (EGLint i = 0; i < n; ++i) {
-        const char* ext = queryDeviceString ? queryDeviceString(devices[i], EGL_EXTENSIONS) : nullptr;
-        if (hasExtension(ext, "EGL_MESA_device_software"))
-          candidates.emplace_back(EGL_PLATFORM_DEVICE_EXT, devices[i]);
-        else
-          hardware.emplace_back(EGL_PLATFORM_DEVICE_EXT, devices[i]);
-      }
-      candidates.insert(candidates.end(), hardware.begin(), hardware.end());
-    } else {
-      log += "eglQueryDevicesEXT failed; ";
-    }
-  } else {
-    log += "no EGL_EXT_device_enumeration; ";
-  }
-  if (hasExtension(clientExt, "EGL_MESA_platform_surfaceless"))
-    candidates.emplace_back(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY);
-  if (!getPlatformDisplay) candidates.clear(), log += "no eglGetPlatformDisplayEXT; ";
-
-  for (auto& cand : candidates) {
-    EGLDisplay dpy = getPlatformDisplay(cand.first, cand.second, nullptr);
-    EGLint major = 0, minor = 0;
-    if (dpy == EGL_NO_DISPLAY || !eglInitialize(dpy, &major, &minor)) {
-      log += "display init: " + eglErrorString(eglGetError()) + "; ";
-      continue;
-    }
-    if (!eglBindAPI(EGL_OPENGL_API)) {
-      log += "eglBindAPI(OpenGL): " + eglErrorString(eglGetError()) + "; ";
-      eglTerminate(dpy);
-      continue;
-    }
-    EGLConfig config = nullptr;
-    const char* dpyExt = eglQueryString(dpy, EGL_EXTENSIONS);
-    if (!hasExtension(dpyExt, "EGL_KHR_no_config_context")) {
-      const EGLint cfgAttribs[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_SURFACE_TYPE, 0, EGL_NONE};
-      EGLint count = 0;
-      if (!eglChooseConfig(dpy, cfgAttribs, &config, 1, &count) || count < 1) {
-        log += "no OpenGL EGLConfig; ";
-        eglTerminate(dpy);
-        continue;
-      }
-    }
-    const EGLint ctxAttribs[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
-                                 EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
-    EGLContext ctx = eglCreateContext(dpy, config, EGL_NO_CONTEXT, ctxAttribs);
-    if (ctx == EGL_NO_CONTEXT) {
-      log += "OpenGL 4.5 core context: " + eglErrorString(eglGetError()) + "; ";
-      eglTerminate(dpy);
-      continue;
-    }
-    if (!eglMakeCurrent(dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, ctx)) {
-      log += "eglMakeCurrent without surface: " + eglErrorString(eglGetError()) + "; ";
-      eglDestroyContext(dpy, ctx);
-      eglTerminate(dpy);
-      continue;
-    }
-    m.display = dpy;
-    m.context = ctx;
-    break;
-  }
-  if (m.context == EGL_NO_CONTEXT) {
-    error = "cannot create a headless OpenGL 4.5 core context through EGL (" + log +
-            "tried " + std::to_string(candidates.size()) + " display(s)); install libegl-mesa0 and libgl1-mesa-dri";
-    return nullptr;
-  }
-
-  bool loaded = true;
-  std::string missing;
-#define FFTESS_LOAD(type, name)                                                                                       \
-  m.gl.name = reinterpret_cast<type>(eglGetProcAddress(#name));                                                     \
-  if (!m.gl.name) loaded = false, missing += " " #name;
-  FFTESS_GL_FUNCTIONS(FFTESS_LOAD)
-#undef FFTESS_LOAD
-  if (!loaded) {
-    error = "OpenGL entry points missing:" + missing;
+  gltest::ContextOptions options;
+  options.order = gltest::DeviceOrder::SoftwareFirst; // llvmpipe's software EGL device first
+  if (!m.context.create(options, error)) {
+    if (m.context.renderer().empty() && error.rfind("cannot create", 0) == 0)
+      error += "; install libegl-mesa0 and libgl1-mesa-dri";
     return nullptr;
   }
   auto& gl = m.gl;
-  o->renderer_ = reinterpret_cast<const char*>(gl.glGetString(GL_RENDERER));
-  o->version_ = reinterpret_cast<const char*>(gl.glGetString(GL_VERSION));
+  o->renderer_ = m.context.renderer();
+  o->version_ = m.context.version();
 
   GLint tesBlocks = 0;
   gl.glGetIntegerv(GL_MAX_TESS_EVALUATION_SHADER_STORAGE_BLOCKS, &tesBlocks);
@@ -477,19 +294,7 @@ std::unique_ptr<GlOracle> GlOracle::create(std::string& error) {
   }
 
   // Draws need a complete framebuffer; an attachment-less one will do under rasterizer discard.
-  gl.glGenFramebuffers(1, &m.fbo);
-  gl.glBindFramebuffer(GL_FRAMEBUFFER, m.fbo);
-  gl.glFramebufferParameteri(GL_FRAMEBUFFER, GL_FRAMEBUFFER_DEFAULT_WIDTH, 16);
-  gl.glFramebufferParameteri(GL_FRAMEBUFFER, GL_FRAMEBUFFER_DEFAULT_HEIGHT, 16);
-  if (gl.glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-    error = "attachment-less framebuffer incomplete";
-    return nullptr;
-  }
-  gl.glViewport(0, 0, 16, 16);
-  gl.glEnable(GL_RASTERIZER_DISCARD);
-  gl.glGenVertexArrays(1, &m.vao);
-  gl.glBindVertexArray(m.vao);
-  gl.glPatchParameteri(GL_PATCH_VERTICES, 1);
+  if (!gltest::prepareCaptureDraws(gl, m.fbo, m.vao, error)) return nullptr;
 
   GLuint bufs[5];
   gl.glGenBuffers(5, bufs);
@@ -545,7 +350,7 @@ bool GlOracle::Impl::runGroup(const std::vector<Patch>& patches, const std::vect
   gl.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, factorBuf);
 
   // Pass 1: point_mode. One captured vertex per domain point, in the tessellator's order.
-  const int spacing = spacingOf(first.partitioning);
+  const int spacing = glSpacing(first.partitioning);
   Program* pointProg = program({first.domain, spacing, Capture::Points}, error);
   if (!pointProg) return false;
   std::vector<int> bounds(n);
@@ -687,7 +492,7 @@ bool GlOracle::run(const std::vector<Patch>& patches, std::vector<Result>& resul
   // Group by domain and spacing: one upload of factors and one program per pass.
   std::map<std::pair<int, int>, std::vector<int>> groups;
   for (size_t i = 0; i < patches.size(); ++i)
-    groups[{static_cast<int>(patches[i].domain), spacingOf(patches[i].partitioning)}].push_back(static_cast<int>(i));
+    groups[{static_cast<int>(patches[i].domain), glSpacing(patches[i].partitioning)}].push_back(static_cast<int>(i));
   for (auto& kv : groups) {
     // All members share domain and spacing; runGroup takes the partitioning of the first only for the spacing.
     if (!impl_->runGroup(patches, kv.second, results, error)) return false;

@@ -102,6 +102,15 @@ std::string batchLine(const Patch& patch);
 // line), 1 points.
 int indicesPerPrimitive(const Patch& patch);
 
+// Conservative number of domain points of a patch, never underestimated: each edge's segments from its factor
+// clamped to [.., 64] (NaN and +Inf as 64), +1 for the rounding of the fractional partitionings, at least 2; 0 for a
+// patch GL must discard (a used outer factor <= 0 or NaN, GL 4.5 section 11.2.2). Sizes the draws of a capture.
+int pointBound(const Patch& patch);
+
+// The GL spacing a partitioning maps to at the hardware stage: 0 equal_spacing (integer, pow2: D3D11.3 spec 11.7),
+// 1 fractional_odd_spacing, 2 fractional_even_spacing.
+int glSpacing(Partitioning p);
+
 // True when GL draws this patch's output primitives (quad/tri triangle_cw/ccw, isoline line); otherwise GL only
 // gives the point array and the indices are derived from it.
 bool hasGlPrimitives(const Patch& patch);

@@ -20,10 +20,7 @@
 // 1 = usage; 3 = no suitable GL 4.5 context; 4 = shader compile/link or GL error.
 #include "lod/lod.h"
 #include "tessellator/tessellator.h"
-
-#include <EGL/egl.h>
-#include <EGL/eglext.h>
-#include <GL/glcorearb.h>
+#include "tests/oracle/gl_context.h" // headless EGL context, GL loader, renderer check (shared with tests/oracle)
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -382,144 +379,21 @@ std::string buildShader(bool precise, bool nvPragmas) {
   return s;
 }
 
-#define FFTESS_LG_GL(X)                                                                                               \
-  X(PFNGLGETSTRINGPROC, glGetString)                                                                                   \
-  X(PFNGLGETERRORPROC, glGetError)                                                                                     \
-  X(PFNGLCREATESHADERPROC, glCreateShader)                                                                             \
-  X(PFNGLSHADERSOURCEPROC, glShaderSource)                                                                             \
-  X(PFNGLCOMPILESHADERPROC, glCompileShader)                                                                           \
-  X(PFNGLGETSHADERIVPROC, glGetShaderiv)                                                                               \
-  X(PFNGLGETSHADERINFOLOGPROC, glGetShaderInfoLog)                                                                     \
-  X(PFNGLCREATEPROGRAMPROC, glCreateProgram)                                                                           \
-  X(PFNGLATTACHSHADERPROC, glAttachShader)                                                                             \
-  X(PFNGLLINKPROGRAMPROC, glLinkProgram)                                                                               \
-  X(PFNGLGETPROGRAMIVPROC, glGetProgramiv)                                                                             \
-  X(PFNGLGETPROGRAMINFOLOGPROC, glGetProgramInfoLog)                                                                   \
-  X(PFNGLUSEPROGRAMPROC, glUseProgram)                                                                                 \
-  X(PFNGLGETUNIFORMLOCATIONPROC, glGetUniformLocation)                                                                 \
-  X(PFNGLUNIFORM1UIPROC, glUniform1ui)                                                                                 \
-  X(PFNGLGENBUFFERSPROC, glGenBuffers)                                                                                 \
-  X(PFNGLBINDBUFFERPROC, glBindBuffer)                                                                                 \
-  X(PFNGLBUFFERDATAPROC, glBufferData)                                                                                 \
-  X(PFNGLGETBUFFERSUBDATAPROC, glGetBufferSubData)                                                                     \
-  X(PFNGLBINDBUFFERBASEPROC, glBindBufferBase)                                                                         \
-  X(PFNGLDISPATCHCOMPUTEPROC, glDispatchCompute)                                                                       \
-  X(PFNGLMEMORYBARRIERPROC, glMemoryBarrier)                                                                           \
-  X(PFNGLFINISHPROC, glFinish)
-
-struct Gl {
-#define FFTESS_LG_DECLARE(type, name) type name = nullptr;
-  FFTESS_LG_GL(FFTESS_LG_DECLARE)
-#undef FFTESS_LG_DECLARE
-};
-
-bool hasExtension(const char* list, const char* name) {
-  if (!list) return false;
-  const size_t n = std::strlen(name);
-  for (const char* p = list; (p = std::strstr(p, name)) != nullptr; p += n)
-    if ((p == list || p[-1] == ' ') && (p[n] == ' ' || p[n] == '\0')) return true;
-  return false;
-}
+using fftess::gltest::GlFunctions;
 
 // A headless GL 4.5 core context: hardware EGL devices first; software devices and Mesa's surfaceless platform
-// only with allowSoftware (the same choice as tests/oracle/nvidia).
-bool createContext(bool allowSoftware, Gl& gl, std::string& info, std::string& error) {
-  std::string log, deviceNote;
-  const char* clientExt = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
-  auto getPlatformDisplay =
-      reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
-  std::vector<std::pair<EGLenum, void*>> candidates, software;
-  if (hasExtension(clientExt, "EGL_EXT_device_base") || hasExtension(clientExt, "EGL_EXT_device_enumeration")) {
-    auto queryDevices = reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
-    auto queryDeviceString =
-        reinterpret_cast<PFNEGLQUERYDEVICESTRINGEXTPROC>(eglGetProcAddress("eglQueryDeviceStringEXT"));
-    EGLDeviceEXT devices[16];
-    EGLint n = 0;
-    if (queryDevices && queryDevices(16, devices, &n)) {
-      for (EGLint i = 0; i < n; ++i) {
-        const char* ext = queryDeviceString ? queryDeviceString(devices[i], EGL_EXTENSIONS) : nullptr;
-        (hasExtension(ext, "EGL_MESA_device_software") ? software : candidates)
-            .emplace_back(EGL_PLATFORM_DEVICE_EXT, devices[i]);
-      }
-      deviceNote = std::to_string(n) + " EGL device(s), " + std::to_string(software.size()) + " software";
-    }
-  }
-  if (allowSoftware) {
-    candidates.insert(candidates.end(), software.begin(), software.end());
-    if (hasExtension(clientExt, "EGL_MESA_platform_surfaceless"))
-      candidates.emplace_back(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY);
-  }
-  if (!getPlatformDisplay) candidates.clear();
-  bool ok = false;
-  std::string eglVendor;
-  for (auto& cand : candidates) {
-    EGLDisplay dpy = getPlatformDisplay(cand.first, cand.second, nullptr);
-    EGLint major = 0, minor = 0;
-    if (dpy == EGL_NO_DISPLAY || !eglInitialize(dpy, &major, &minor)) {
-      log += "display init failed; ";
-      continue;
-    }
-    if (!eglBindAPI(EGL_OPENGL_API)) {
-      eglTerminate(dpy);
-      log += "no desktop OpenGL API; ";
-      continue;
-    }
-    EGLConfig config = nullptr;
-    if (!hasExtension(eglQueryString(dpy, EGL_EXTENSIONS), "EGL_KHR_no_config_context")) {
-      const EGLint surfaceTypes[] = {EGL_PBUFFER_BIT, 0};
-      EGLint count = 0;
-      for (EGLint st : surfaceTypes) {
-        const EGLint attribs[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_SURFACE_TYPE, st, EGL_NONE};
-        if (eglChooseConfig(dpy, attribs, &config, 1, &count) && count > 0) break;
-      }
-      if (count < 1) {
-        eglTerminate(dpy);
-        log += "no OpenGL EGLConfig; ";
-        continue;
-      }
-    }
-    const EGLint ctxAttribs[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
-                                 EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
-    EGLContext ctx = eglCreateContext(dpy, config, EGL_NO_CONTEXT, ctxAttribs);
-    if (ctx == EGL_NO_CONTEXT || !eglMakeCurrent(dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, ctx)) {
-      if (ctx != EGL_NO_CONTEXT) eglDestroyContext(dpy, ctx);
-      eglTerminate(dpy);
-      log += "no current OpenGL 4.5 core context; ";
-      continue;
-    }
-    const char* v = eglQueryString(dpy, EGL_VENDOR);
-    eglVendor = v ? v : "?";
-    ok = true;
-    break;
-  }
-  if (!ok) {
-    error = "no headless OpenGL 4.5 context on a " + std::string(allowSoftware ? "" : "hardware ") + "EGL device (" +
-            deviceNote + "; " + log + std::to_string(candidates.size()) + " candidate(s))";
-    return false;
-  }
-  bool loaded = true;
-#define FFTESS_LG_LOAD(type, name)                                                                                    \
-  gl.name = reinterpret_cast<type>(eglGetProcAddress(#name));                                                        \
-  loaded = loaded && gl.name;
-  FFTESS_LG_GL(FFTESS_LG_LOAD)
-#undef FFTESS_LG_LOAD
-  if (!loaded) {
-    error = "OpenGL entry points missing";
-    return false;
-  }
-  const std::string renderer = reinterpret_cast<const char*>(gl.glGetString(GL_RENDERER));
-  info = "GL_RENDERER: " + renderer + "\nGL_VERSION: " + reinterpret_cast<const char*>(gl.glGetString(GL_VERSION)) +
-         "\nGL_VENDOR: " + reinterpret_cast<const char*>(gl.glGetString(GL_VENDOR)) + "\nEGL_VENDOR: " + eglVendor +
-         " (" + deviceNote + ")\n";
-  const bool soft = renderer.find("llvmpipe") != std::string::npos || renderer.find("softpipe") != std::string::npos;
-  if (soft && !allowSoftware) {
-    error = "the renderer is software (" + renderer + "); pass --allow-llvmpipe for a self-test";
-    return false;
-  }
-  return true;
+// only with allowSoftware (the same choice as tests/oracle/nvidia). 'info' = the renderer lines this tool prints.
+bool createContext(bool allowSoftware, fftess::gltest::GlContext& ctx, std::string& info, std::string& error) {
+  fftess::gltest::ContextOptions options;
+  options.order = fftess::gltest::DeviceOrder::HardwareFirst;
+  options.allowSoftware = allowSoftware;
+  if (!ctx.create(options, error)) return false;
+  info = "GL_RENDERER: " + ctx.renderer() + "\nGL_VERSION: " + ctx.version() + "\nGL_VENDOR: " + ctx.vendor() +
+         "\nEGL_VENDOR: " + ctx.eglVendor() + " (" + ctx.deviceNote() + ")\n";
+  return ctx.checkHardwareRenderer(allowSoftware, error);
 }
 
-bool runGpu(Gl& gl, const std::string& source, const std::vector<uint32_t>& in, size_t cases,
+bool runGpu(const GlFunctions& gl, const std::string& source, const std::vector<uint32_t>& in, size_t cases,
             std::vector<uint32_t>& out, std::string& error) {
   GLuint sh = gl.glCreateShader(GL_COMPUTE_SHADER);
   const char* src = source.c_str();
@@ -652,9 +526,9 @@ int main(int argc, char** argv) {
     return 1;
   }
 
-  Gl gl;
+  fftess::gltest::GlContext context;
   std::string info, error;
-  if (!createContext(allowSoftware, gl, info, error)) {
+  if (!createContext(allowSoftware, context, info, error)) {
     std::fprintf(stderr, "fftess_lod_gpu_drift: %s\n", error.c_str());
     return 3;
   }
@@ -670,7 +544,7 @@ int main(int argc, char** argv) {
     std::memcpy(&in[static_cast<size_t>(i) * kInStride], all[static_cast<size_t>(i)].w, sizeof(Case::w));
   }
   std::vector<uint32_t> gpu;
-  if (!runGpu(gl, buildShader(precise, nvPragmas), in, static_cast<size_t>(cases), gpu, error)) {
+  if (!runGpu(context.gl, buildShader(precise, nvPragmas), in, static_cast<size_t>(cases), gpu, error)) {
     std::fprintf(stderr, "fftess_lod_gpu_drift: %s\n", error.c_str());
     return 4;
   }

@@ -19,15 +19,13 @@
 // Not compared: indices as numbers (the hardware's numbering is not observable without an order assumption), quad/tri
 // 'line' and 'point' topologies beyond their points (GL has no such output), w of tri points, the HLSL stage.
 //
-// The generator is the one of tests/oracle/oracle_vs_emulator_test.cpp (copied: same splitmix64, same distribution,
-// same sweep), so a seed gives the same patches as that llvmpipe test.
-#include "gl_capture.h" // Patch, enums, parseBatch, batchLine, toString (tests/oracle/batch.cpp)
+// The generator is tests/oracle/random_patches.h, shared with tests/oracle/oracle_vs_emulator_test.cpp, so a seed gives
+// the same patches as that llvmpipe test. The context is tests/oracle/gl_context.h (hardware EGL devices first).
+#include "gl_capture.h"     // Patch, enums, parseBatch, batchLine, toString (batch.cpp); pointBound, glSpacing
+#include "gl_context.h"     // headless EGL context, GL loader, renderer check
+#include "random_patches.h" // the seeded generator (Rng, randomPatch, sweepPatches, generatePatches, bitsOf, floatOf)
 
 #include "tessellator/tessellator.h"
-
-#include <EGL/egl.h>
-#include <EGL/eglext.h>
-#include <GL/glcorearb.h>
 
 #include <algorithm>
 #include <array>
@@ -48,194 +46,9 @@ using namespace fftess::oracle;
 
 namespace {
 
-// ---------------------------------------------------------------- generator (copy of oracle_vs_emulator_test)
-
-struct Rng {
-  uint64_t s;
-  uint64_t next() {
-    uint64_t z = (s += 0x9e3779b97f4a7c15ull);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    return z ^ (z >> 31);
-  }
-  uint32_t below(uint32_t n) { return static_cast<uint32_t>(next() % n); }
-  float unit() { return static_cast<float>(next() >> 40) * (1.0f / 16777216.0f); }
-};
-
-uint32_t bitsOf(float f) {
-  uint32_t b;
-  std::memcpy(&b, &f, sizeof b);
-  return b;
-}
-float floatOf(uint32_t b) {
-  float f;
-  std::memcpy(&f, &b, sizeof f);
-  return f;
-}
-
-const uint32_t kSpecials[] = {
-    0x7fc00000u, 0xffc00000u, 0x7f800001u, // +NaN, -NaN, signalling NaN
-    0x7f800000u, 0xff800000u,              // +-Inf
-    0x00000000u, 0x80000000u,              // +-0
-    0x00000001u, 0x007fffffu, 0x80000001u, // smallest / largest denormal, negative denormal
-    0x00800000u,                           // smallest normal
-    0xbf800000u, 0xc2800000u,              // -1, -64
-    0x3f800001u, 0x42800001u, 0x427ffffeu, // 1 + 2^-23, 64 + 1 ulp, 63.99998
-    0x42820000u, 0x7149f2cau, 0x7f7fffffu, // 65, 1e30, FLT_MAX
-    0x3f000000u, 0x3e800000u,              // 0.5, 0.25
-};
-
-uint32_t randomFactor(Rng& r, bool outer) {
-  const uint32_t pick = r.below(100);
-  if (pick < 40) return bitsOf(r.unit() * 66.0f);
-  if (pick < 55) return bitsOf(0.5f + r.unit() * 7.5f);
-  if (pick < 85) {
-    const float k = static_cast<float>(1 + r.below(66));
-    switch (r.below(8)) {
-    case 0: return bitsOf(k);
-    case 1: return bitsOf(k + 1.0f / 65536.0f);
-    case 2: return bitsOf(k - 1.0f / 65536.0f);
-    case 3: return bitsOf(k + 1.0f / 32768.0f);
-    case 4: return bitsOf(k) + 1;
-    case 5: return bitsOf(k) - 1;
-    case 6: return bitsOf(k + 0.5f);
-    default: return bitsOf(k + 1.0f / 131072.0f);
-    }
-  }
-  if (outer && r.below(2)) return bitsOf(1.0f + r.unit() * 63.0f);
-  return kSpecials[r.below(sizeof kSpecials / sizeof kSpecials[0])];
-}
-
-Patch randomPatch(Rng& r) {
-  Patch p;
-  const uint32_t d = r.below(10);
-  p.domain = d < 5 ? Domain::Quad : d < 8 ? Domain::Tri : Domain::Isoline;
-  p.partitioning = static_cast<Partitioning>(r.below(4));
-  const uint32_t t = r.below(10);
-  if (p.domain == Domain::Isoline) {
-    p.topology = t < 7 ? Topology::Line : Topology::Point;
-  } else {
-    p.topology = t < 4 ? Topology::TriangleCw : t < 7 ? Topology::TriangleCcw : t < 9 ? Topology::Point : Topology::Line;
-  }
-  const int outer = p.domain == Domain::Quad ? 4 : p.domain == Domain::Tri ? 3 : 2;
-  const int used = p.domain == Domain::Quad ? 6 : p.domain == Domain::Tri ? 4 : 2;
-  for (int i = 0; i < 6; ++i) p.factorBits[i] = i < used ? randomFactor(r, i < outer) : 0u;
-  if (r.below(8) == 0)
-    for (int i = 1; i < used; ++i) p.factorBits[i] = p.factorBits[0];
-  return p;
-}
-
-std::vector<Patch> generate(long total, uint64_t seed, bool sweep) {
-  std::vector<Patch> out;
-  if (sweep)
-    for (int d = 0; d < 3; ++d)
-      for (int part = 0; part < 4; ++part)
-        for (int k = 0; k <= 528; ++k) {
-          Patch p;
-          p.domain = static_cast<Domain>(d);
-          p.partitioning = static_cast<Partitioning>(part);
-          p.topology = p.domain == Domain::Isoline ? (k % 2 ? Topology::Line : Topology::Point)
-                                                   : static_cast<Topology>((k + part) % 4);
-          for (uint32_t& f : p.factorBits) f = bitsOf(static_cast<float>(k) / 8.0f);
-          out.push_back(p);
-        }
-  Rng rng{seed};
-  for (long i = 0; i < total; ++i) out.push_back(randomPatch(rng));
-  return out;
-}
-
 // ---------------------------------------------------------------- GL capture (no order assumed)
 
-#define FFTESS_NV_GL(X)                                                                                               \
-  X(PFNGLGETSTRINGPROC, glGetString)                                                                                   \
-  X(PFNGLGETERRORPROC, glGetError)                                                                                     \
-  X(PFNGLENABLEPROC, glEnable)                                                                                         \
-  X(PFNGLCREATESHADERPROC, glCreateShader)                                                                             \
-  X(PFNGLSHADERSOURCEPROC, glShaderSource)                                                                             \
-  X(PFNGLCOMPILESHADERPROC, glCompileShader)                                                                           \
-  X(PFNGLGETSHADERIVPROC, glGetShaderiv)                                                                               \
-  X(PFNGLGETSHADERINFOLOGPROC, glGetShaderInfoLog)                                                                     \
-  X(PFNGLCREATEPROGRAMPROC, glCreateProgram)                                                                           \
-  X(PFNGLATTACHSHADERPROC, glAttachShader)                                                                             \
-  X(PFNGLTRANSFORMFEEDBACKVARYINGSPROC, glTransformFeedbackVaryings)                                                   \
-  X(PFNGLLINKPROGRAMPROC, glLinkProgram)                                                                               \
-  X(PFNGLGETPROGRAMIVPROC, glGetProgramiv)                                                                             \
-  X(PFNGLGETPROGRAMINFOLOGPROC, glGetProgramInfoLog)                                                                   \
-  X(PFNGLUSEPROGRAMPROC, glUseProgram)                                                                                 \
-  X(PFNGLGETUNIFORMLOCATIONPROC, glGetUniformLocation)                                                                 \
-  X(PFNGLUNIFORM1UIPROC, glUniform1ui)                                                                                 \
-  X(PFNGLGENVERTEXARRAYSPROC, glGenVertexArrays)                                                                       \
-  X(PFNGLBINDVERTEXARRAYPROC, glBindVertexArray)                                                                       \
-  X(PFNGLGENBUFFERSPROC, glGenBuffers)                                                                                 \
-  X(PFNGLBINDBUFFERPROC, glBindBuffer)                                                                                 \
-  X(PFNGLBUFFERDATAPROC, glBufferData)                                                                                 \
-  X(PFNGLGETBUFFERSUBDATAPROC, glGetBufferSubData)                                                                     \
-  X(PFNGLBINDBUFFERBASEPROC, glBindBufferBase)                                                                         \
-  X(PFNGLGENFRAMEBUFFERSPROC, glGenFramebuffers)                                                                       \
-  X(PFNGLBINDFRAMEBUFFERPROC, glBindFramebuffer)                                                                       \
-  X(PFNGLFRAMEBUFFERPARAMETERIPROC, glFramebufferParameteri)                                                           \
-  X(PFNGLCHECKFRAMEBUFFERSTATUSPROC, glCheckFramebufferStatus)                                                         \
-  X(PFNGLVIEWPORTPROC, glViewport)                                                                                     \
-  X(PFNGLPATCHPARAMETERIPROC, glPatchParameteri)                                                                       \
-  X(PFNGLGENQUERIESPROC, glGenQueries)                                                                                 \
-  X(PFNGLBEGINQUERYPROC, glBeginQuery)                                                                                 \
-  X(PFNGLENDQUERYPROC, glEndQuery)                                                                                     \
-  X(PFNGLGETQUERYOBJECTUIVPROC, glGetQueryObjectuiv)                                                                   \
-  X(PFNGLBEGINTRANSFORMFEEDBACKPROC, glBeginTransformFeedback)                                                         \
-  X(PFNGLENDTRANSFORMFEEDBACKPROC, glEndTransformFeedback)                                                             \
-  X(PFNGLDRAWARRAYSPROC, glDrawArrays)                                                                                 \
-  X(PFNGLMEMORYBARRIERPROC, glMemoryBarrier)
-
-struct Gl {
-#define FFTESS_NV_DECLARE(type, name) type name = nullptr;
-  FFTESS_NV_GL(FFTESS_NV_DECLARE)
-#undef FFTESS_NV_DECLARE
-};
-
-bool hasExtension(const char* list, const char* name) {
-  if (!list) return false;
-  const size_t n = std::strlen(name);
-  for (const char* p = list; (p = std::strstr(p, name)) != nullptr; p += n)
-    if ((p == list || p[-1] == ' ') && (p[n] == ' ' || p[n] == '\0')) return true;
-  return false;
-}
-
-// Points one patch can have, never underestimated (factors clamped to 64, NaN/Inf as 64, +1 for fractional rounding);
-// 0 for a patch GL must discard (an outer level <= 0 or NaN, GL 4.5 section 11.2.2). Sizes the capture per draw;
-// an overflow is detected by the queries anyway.
-int segmentBound(uint32_t bits) {
-  const float f = floatOf(bits);
-  if (std::isnan(f) || !(f < 64.0f)) return 64;
-  const int s = static_cast<int>(std::ceil(std::max(f, 0.0f))) + 1;
-  return std::max(2, std::min(64, s));
-}
-bool outerDiscards(uint32_t bits) {
-  const float f = floatOf(bits);
-  return std::isnan(f) || !(f > 0.0f);
-}
-int pointBound(const Patch& p) {
-  const uint32_t* f = p.factorBits;
-  switch (p.domain) {
-  case Domain::Quad: {
-    for (int i = 0; i < 4; ++i)
-      if (outerDiscards(f[i])) return 0;
-    int n = 0;
-    for (int i = 0; i < 4; ++i) n += segmentBound(f[i]);
-    return n + (segmentBound(f[4]) + 1) * (segmentBound(f[5]) + 1);
-  }
-  case Domain::Tri: {
-    for (int i = 0; i < 3; ++i)
-      if (outerDiscards(f[i])) return 0;
-    int n = 0;
-    for (int i = 0; i < 3; ++i) n += segmentBound(f[i]);
-    return n + (segmentBound(f[3]) + 1) * (segmentBound(f[3]) + 1);
-  }
-  case Domain::Isoline:
-    if (outerDiscards(f[0]) || outerDiscards(f[1])) return 0;
-    return segmentBound(f[0]) * (segmentBound(f[1]) + 1);
-  }
-  return 0;
-}
+using fftess::gltest::GlFunctions;
 
 enum class Capture { Points, GlCcw, GlCw, Lines };
 
@@ -253,121 +66,23 @@ constexpr int kMaxPatchesPerDraw = 4096;
 constexpr size_t kCaptureVertices = 6u * kDrawPointBudget;
 
 struct GlCapture {
-  EGLDisplay display = EGL_NO_DISPLAY;
-  EGLContext context = EGL_NO_CONTEXT;
-  Gl gl;
+  fftess::gltest::GlContext context;
+  GlFunctions& gl = context.gl;
   GLuint factorBuf = 0, captureBuf = 0, queries[2] = {0, 0};
   std::map<std::pair<int, int>, std::pair<GLuint, GLint>> programs; // (domain*3+spacing, capture) -> (program, patchBase)
-  std::string renderer, version, vendor, eglVendor, deviceNote;
   long drawCalls = 0;
   int drawPointBudget = kDrawPointBudget;
   bool patchOrderSeen = true; // every draw's capture arrived in gl_PrimitiveID order (information only)
 
+  // Hardware EGL devices first; software devices and the surfaceless platform only as a self-test.
   bool create(bool allowSoftware, std::string& error) {
-    std::string log;
-    const char* clientExt = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
-    auto getPlatformDisplay =
-        reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
-    std::vector<std::pair<EGLenum, void*>> candidates, software;
-    if (hasExtension(clientExt, "EGL_EXT_device_base") || hasExtension(clientExt, "EGL_EXT_device_enumeration")) {
-      auto queryDevices = reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
-      auto queryDeviceString =
-          reinterpret_cast<PFNEGLQUERYDEVICESTRINGEXTPROC>(eglGetProcAddress("eglQueryDeviceStringEXT"));
-      EGLDeviceEXT devices[16];
-      EGLint n = 0;
-      if (queryDevices && queryDevices(16, devices, &n)) {
-        for (EGLint i = 0; i < n; ++i) {
-          const char* ext = queryDeviceString ? queryDeviceString(devices[i], EGL_EXTENSIONS) : nullptr;
-          (hasExtension(ext, "EGL_MESA_device_software") ? software : candidates)
-              .emplace_back(EGL_PLATFORM_DEVICE_EXT, devices[i]);
-        }
-        deviceNote = std::to_string(n) + " EGL device(s), " + std::to_string(software.size()) + " software";
-      }
-    }
-    // Hardware devices first; software and the surfaceless platform only as a self-test.
-    if (allowSoftware) {
-      candidates.insert(candidates.end(), software.begin(), software.end());
-      if (hasExtension(clientExt, "EGL_MESA_platform_surfaceless"))
-        candidates.emplace_back(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY);
-    }
-    if (!getPlatformDisplay) candidates.clear();
-    for (auto& cand : candidates) {
-      EGLDisplay dpy = getPlatformDisplay(cand.first, cand.second, nullptr);
-      EGLint major = 0, minor = 0;
-      if (dpy == EGL_NO_DISPLAY || !eglInitialize(dpy, &major, &minor)) {
-        log += "display init failed; ";
-        continue;
-      }
-      if (!eglBindAPI(EGL_OPENGL_API)) {
-        eglTerminate(dpy);
-        log += "no desktop OpenGL API; ";
-        continue;
-      }
-      EGLConfig config = nullptr;
-      if (!hasExtension(eglQueryString(dpy, EGL_EXTENSIONS), "EGL_KHR_no_config_context")) {
-        const EGLint surfaceTypes[] = {EGL_PBUFFER_BIT, 0};
-        EGLint count = 0;
-        for (EGLint st : surfaceTypes) {
-          const EGLint attribs[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_SURFACE_TYPE, st, EGL_NONE};
-          if (eglChooseConfig(dpy, attribs, &config, 1, &count) && count > 0) break;
-        }
-        if (count < 1) {
-          eglTerminate(dpy);
-          log += "no OpenGL EGLConfig; ";
-          continue;
-        }
-      }
-      const EGLint ctxAttribs[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
-                                   EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
-      EGLContext ctx = eglCreateContext(dpy, config, EGL_NO_CONTEXT, ctxAttribs);
-      if (ctx == EGL_NO_CONTEXT || !eglMakeCurrent(dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, ctx)) {
-        if (ctx != EGL_NO_CONTEXT) eglDestroyContext(dpy, ctx);
-        eglTerminate(dpy);
-        log += "no current OpenGL 4.5 core context; ";
-        continue;
-      }
-      display = dpy, context = ctx;
-      const char* v = eglQueryString(dpy, EGL_VENDOR);
-      eglVendor = v ? v : "?";
-      break;
-    }
-    if (context == EGL_NO_CONTEXT) {
-      error = "no headless OpenGL 4.5 context on a " + std::string(allowSoftware ? "" : "hardware ") + "EGL device (" +
-              deviceNote + "; " + log + std::to_string(candidates.size()) + " candidate(s))";
-      return false;
-    }
-    bool loaded = true;
-#define FFTESS_NV_LOAD(type, name)                                                                                    \
-  gl.name = reinterpret_cast<type>(eglGetProcAddress(#name));                                                        \
-  loaded = loaded && gl.name;
-    FFTESS_NV_GL(FFTESS_NV_LOAD)
-#undef FFTESS_NV_LOAD
-    if (!loaded) {
-      error = "OpenGL entry points missing";
-      return false;
-    }
-    renderer = reinterpret_cast<const char*>(gl.glGetString(GL_RENDERER));
-    version = reinterpret_cast<const char*>(gl.glGetString(GL_VERSION));
-    vendor = reinterpret_cast<const char*>(gl.glGetString(GL_VENDOR));
-    if (!allowSoftware && renderer.find("llvmpipe") != std::string::npos) {
-      error = "the renderer is llvmpipe (" + renderer + "); pass --allow-llvmpipe for a self-test";
-      return false;
-    }
-    if (renderer.find("llvmpipe") != std::string::npos) drawPointBudget = kLlvmpipeDrawPointBudget;
+    fftess::gltest::ContextOptions options;
+    options.order = fftess::gltest::DeviceOrder::HardwareFirst;
+    options.allowSoftware = allowSoftware;
+    if (!context.create(options, error) || !context.checkHardwareRenderer(allowSoftware, error)) return false;
+    if (context.isLlvmpipe()) drawPointBudget = kLlvmpipeDrawPointBudget;
     GLuint fbo = 0, vao = 0;
-    gl.glGenFramebuffers(1, &fbo);
-    gl.glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-    gl.glFramebufferParameteri(GL_FRAMEBUFFER, GL_FRAMEBUFFER_DEFAULT_WIDTH, 16);
-    gl.glFramebufferParameteri(GL_FRAMEBUFFER, GL_FRAMEBUFFER_DEFAULT_HEIGHT, 16);
-    if (gl.glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-      error = "attachment-less framebuffer incomplete";
-      return false;
-    }
-    gl.glViewport(0, 0, 16, 16);
-    gl.glEnable(GL_RASTERIZER_DISCARD);
-    gl.glGenVertexArrays(1, &vao);
-    gl.glBindVertexArray(vao);
-    gl.glPatchParameteri(GL_PATCH_VERTICES, 1);
+    if (!fftess::gltest::prepareCaptureDraws(gl, fbo, vao, error)) return false;
     GLuint bufs[2];
     gl.glGenBuffers(2, bufs);
     factorBuf = bufs[0], captureBuf = bufs[1];
@@ -378,27 +93,7 @@ struct GlCapture {
     return checkGl("setup", error);
   }
 
-  bool checkGl(const char* what, std::string& error) {
-    const GLenum e = gl.glGetError();
-    if (e == GL_NO_ERROR) return true;
-    char buf[96];
-    std::snprintf(buf, sizeof buf, "GL error 0x%x after %s", e, what);
-    error = buf;
-    return false;
-  }
-
-  bool compile(GLuint shader, const std::string& src, std::string& error) {
-    const char* p = src.c_str();
-    gl.glShaderSource(shader, 1, &p, nullptr);
-    gl.glCompileShader(shader);
-    GLint ok = 0;
-    gl.glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-    if (ok) return true;
-    char log[4096] = {};
-    gl.glGetShaderInfoLog(shader, sizeof log, nullptr, log);
-    error = "shader compile failed: " + std::string(log) + "\n" + src;
-    return false;
-  }
+  bool checkGl(const char* what, std::string& error) { return fftess::gltest::checkGl(gl, what, error); }
 
   std::pair<GLuint, GLint>* program(Domain domain, int spacing, Capture cap, std::string& error) {
     const std::pair<int, int> key{static_cast<int>(domain) * 3 + spacing, static_cast<int>(cap)};
@@ -431,20 +126,14 @@ void main() {
                             "  gl_Position = vec4(0.0);\n}\n";
     GLuint s[3] = {gl.glCreateShader(GL_VERTEX_SHADER), gl.glCreateShader(GL_TESS_CONTROL_SHADER),
                    gl.glCreateShader(GL_TESS_EVALUATION_SHADER)};
-    if (!compile(s[0], vs, error) || !compile(s[1], tcs, error) || !compile(s[2], tes, error)) return nullptr;
+    if (!fftess::gltest::compileShader(gl, s[0], vs, error) || !fftess::gltest::compileShader(gl, s[1], tcs, error) ||
+        !fftess::gltest::compileShader(gl, s[2], tes, error))
+      return nullptr;
     const GLuint prog = gl.glCreateProgram();
     for (GLuint sh : s) gl.glAttachShader(prog, sh);
     const char* varyings[] = {"cap"};
     gl.glTransformFeedbackVaryings(prog, 1, varyings, GL_INTERLEAVED_ATTRIBS);
-    gl.glLinkProgram(prog);
-    GLint linked = 0;
-    gl.glGetProgramiv(prog, GL_LINK_STATUS, &linked);
-    if (!linked) {
-      char log[4096] = {};
-      gl.glGetProgramInfoLog(prog, sizeof log, nullptr, log);
-      error = "program link failed: " + std::string(log);
-      return nullptr;
-    }
+    if (!fftess::gltest::linkProgram(gl, prog, error)) return nullptr;
     return &programs.emplace(key, std::make_pair(prog, gl.glGetUniformLocation(prog, "patchBase"))).first->second;
   }
 
@@ -540,10 +229,6 @@ void main() {
 };
 
 // ---------------------------------------------------------------- comparison
-
-int spacingOf(Partitioning p) {
-  return p == Partitioning::FractionalOdd ? 1 : p == Partitioning::FractionalEven ? 2 : 0; // pow2 at hw = integer
-}
 
 fftess::Patch toEmulator(const Patch& p) {
   fftess::Patch e;
@@ -687,7 +372,7 @@ int main(int argc, char** argv) {
     }
     for (const BatchLine& b : lines) patches.push_back(b.patch);
   } else {
-    patches = generate(total, seed, sweep);
+    patches = generatePatches(total, seed, sweep);
   }
   if (gen) {
     std::string out;
@@ -702,8 +387,9 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "fftess_nvidia_compare: %s\n", error.c_str());
     return 3;
   }
-  std::printf("GL_RENDERER: %s\nGL_VERSION: %s\nGL_VENDOR: %s\nEGL_VENDOR: %s (%s)\n", glc.renderer.c_str(),
-              glc.version.c_str(), glc.vendor.c_str(), glc.eglVendor.c_str(), glc.deviceNote.c_str());
+  const fftess::gltest::GlContext& ctx = glc.context;
+  std::printf("GL_RENDERER: %s\nGL_VERSION: %s\nGL_VENDOR: %s\nEGL_VENDOR: %s (%s)\n", ctx.renderer().c_str(),
+              ctx.version().c_str(), ctx.vendor().c_str(), ctx.eglVendor().c_str(), ctx.deviceNote().c_str());
   std::printf("patches: %zu (%s), fftess flushDenormals = %s\n", patches.size(),
               batchFile.empty() ? ("generator: " + std::string(sweep ? "sweep 6348 + " : "") + std::to_string(total) +
                                    " random, seed " + std::to_string(seed)).c_str()
@@ -726,7 +412,7 @@ int main(int argc, char** argv) {
     std::map<std::tuple<int, int, int>, std::vector<int>> groups; // (domain, spacing, capture) -> members
     for (size_t i = 0; i < chunk.size(); ++i) {
       const Patch& p = chunk[i];
-      const int d = static_cast<int>(p.domain), s = spacingOf(p.partitioning);
+      const int d = static_cast<int>(p.domain), s = glSpacing(p.partitioning);
       groups[{d, s, static_cast<int>(Capture::Points)}].push_back(static_cast<int>(i));
       if (drawsPrimitives(p)) {
         const Capture cap = p.domain == Domain::Isoline             ? Capture::Lines
