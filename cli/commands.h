@@ -37,9 +37,4 @@ struct BenchArgs {
 CLI::App* addBench(CLI::App& app, BenchArgs& a);
 int runBench(const BenchArgs& a, const char* argv0);
 
-#ifdef FFTESS_HAVE_VERIFY
-struct CheckArgs;
-struct SweepArgs;
-#endif
-
 } // namespace fftess::cli

@@ -10,9 +10,7 @@
 #include <exception>
 #include <new>
 
-#ifdef FFTESS_HAVE_VERIFY
 #include "check.h"
-#endif
 
 int main(int argc, char** argv) {
   using namespace fftess::cli;
@@ -24,9 +22,7 @@ int main(int argc, char** argv) {
   app.footer("Examples:\n"
              "  fftess tessellate -e 'quad integer triangle_cw hw 4 4 4 4 4 4'\n"
              "  fftess explain --why-pow2\n"
-#ifdef FFTESS_HAVE_VERIFY
              "  fftess sweep docs/examples/terrain.toml\n"
-#endif
              "Exit status: 0 clean, 1 cracks found, 2 bad usage or input, 3 internal error.");
 
   TessellateArgs tessArgs;
@@ -34,12 +30,10 @@ int main(int argc, char** argv) {
   BenchArgs benchArgs;
   CLI::App* tess = addTessellate(app, tessArgs);
   CLI::App* explain = addExplain(app, explainArgs);
-#ifdef FFTESS_HAVE_VERIFY
   CheckArgs checkArgs;
   SweepArgs sweepArgs;
   CLI::App* check = addCheck(app, checkArgs);
   CLI::App* sweep = addSweep(app, sweepArgs);
-#endif
   CLI::App* bench = addBench(app, benchArgs);
 
   std::string names;
@@ -69,10 +63,8 @@ int main(int argc, char** argv) {
   try {
     if (tess->parsed()) return runTessellate(tessArgs);
     if (explain->parsed()) return runExplain(explainArgs);
-#ifdef FFTESS_HAVE_VERIFY
     if (check->parsed()) return runCheck(checkArgs);
     if (sweep->parsed()) return runSweep(sweepArgs);
-#endif
     if (bench->parsed()) {
       benchArgs.passThrough = bench->remaining();
       return runBench(benchArgs, argv[0]);

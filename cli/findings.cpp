@@ -1,0 +1,151 @@
+// Findings in words and the scene options shared by check and sweep (findings.h).
+#include "findings.h"
+#include "common.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace fftess::cli {
+
+const char* const kEdgeNames[4] = {"Ueq0", "Veq0", "Ueq1", "Veq1"};
+const char* edgeName(int e) { return e >= 0 && e < 4 ? kEdgeNames[e] : "?"; }
+
+// ---- scene loading -----------------------------------------------------------------------------------------------
+std::vector<std::string> overridesOf(const SceneArgs& a) {
+  std::vector<std::string> o;
+  auto vec = [](const std::string& opt, const std::string& v) {
+    std::string t = v;
+    std::replace(t.begin(), t.end(), ';', ',');
+    if (t.empty() || t.front() != '[') t = "[" + t + "]";
+    (void)opt;
+    return t;
+  };
+  if (!a.eye.empty()) o.push_back("camera.eye=" + vec("--eye", a.eye));
+  if (!a.target.empty()) o.push_back("camera.target=" + vec("--target", a.target));
+  o.insert(o.end(), a.overrides.begin(), a.overrides.end());
+  for (const std::string& s : a.overrides)
+    if (s.find('=') == std::string::npos || s.front() == '=')
+      throw UsageError("--set " + quoteToken(s) + ": expected KEY=VALUE (e.g. --set lod.adjacency_clamp=none)");
+  return o;
+}
+
+vf::Scene load(const SceneArgs& a) {
+  vf::SceneResult r = vf::loadScene(a.scene, overridesOf(a));
+  if (!r) throw UsageError(r.error.empty() ? "cannot load scene '" + a.scene + "'" : r.error);
+  return r.scene;
+}
+
+vf::CheckOptions checkOptions(const SceneArgs& a) {
+  vf::CheckOptions o;
+  if (!vf::parseKernel(a.kernel.c_str(), o.kernel))
+    throw UsageError("--kernel " + quoteToken(a.kernel) + ": expected epick|epeck|float");
+  o.tessellator.flushDenormals = a.flushDenormals;
+  return o;
+}
+
+// ---- causes ------------------------------------------------------------------------------------------------------
+static bool isPow2(float f) {
+  if (!(f >= 1) || f != std::floor(f) || f > 1e9f) return false;
+  const auto n = static_cast<uint64_t>(f);
+  return (n & (n - 1)) == 0;
+}
+
+Cause causeOf(const vf::Finding& f) {
+  const vf::EdgeSide& big = f.a.patch.level >= f.b.patch.level ? f.a : f.b;
+  const vf::EdgeSide& small = f.a.patch.level >= f.b.patch.level ? f.b : f.a;
+  const int jump = big.patch.level - small.patch.level;
+  const float B = big.processedFactor, S = small.processedFactor;
+  const std::string pair = formatFloat(B) + " beside " + formatFloat(S);
+  const std::string part = toString(f.partitioning);
+  if (jump == 0) {
+    if (f.a.processedFactor != f.b.processedFactor)
+      return {"same-size neighbours chose different factors",
+              "same-size neighbours chose different factors (" + formatFloat(f.a.processedFactor) + " vs " +
+                  formatFloat(f.b.processedFactor) + ", hull " + formatFloat(f.a.hullFactor) + " vs " +
+                  formatFloat(f.b.hullFactor) + ")"};
+    return {"same factor, different positions (domain shader / corners)",
+            "both sides use factor " + formatFloat(B) + " but compute different positions (domain shader or corners)"};
+  }
+  if (jump > 1)
+    return {"size jump larger than 2x", "patch sizes differ by 2^" + std::to_string(jump) + " (" + pair + ")"};
+  if (B != 2 * S) {
+    const float minimum = f.partitioning == Partitioning::FractionalEven ? 2.0f : 1.0f;
+    return {"2x jump: the small side's factor is not half the big side's",
+            "2x jump: " + pair + " (" + part + "): the small side's factor is not half the big side's" +
+                (S == minimum && B < 2 * minimum ? " (half of it is below " + part + "'s minimum " + formatFloat(minimum) + ")" : "")};
+  }
+  if (B != std::floor(B) || S != std::floor(S))
+    return {"2x jump: fractional factors do not nest",
+            "2x jump: fractional factors " + pair + " (" + part + ") do not nest"};
+  if (!isPow2(B))
+    return {"2x jump: factor not a power of two (16.16 rounding)",
+            "2x jump: " + pair + " (" + part + "): B is not a power of two, the 16.16 points do not nest (fftess explain "
+            "--partitioning " + part + " " + formatFloat(B) + " " + formatFloat(S) + ")"};
+  return {"2x jump: nesting factors, different positions (domain shader / corners)",
+          "2x jump: " + pair + " nests in 16.16 but the positions differ (domain shader or corners)"};
+}
+
+// ---- text --------------------------------------------------------------------------------------------------------
+std::string patchText(const vf::PatchRef& p) {
+  return "ring " + std::to_string(p.ring) + " tile " + std::to_string(p.tile) + " patch " + std::to_string(p.patch);
+}
+
+std::string findingLine(const vf::Finding& f) {
+  char gap[96] = "";
+  if (f.classification == vf::Classification::Crack)
+    std::snprintf(gap, sizeof gap, " gap %.3g world (%.3g px) at (%.6g, %.6g, %.6g);", f.gapWorld, f.gapPixels,
+                  static_cast<double>(f.gapVertex.x), static_cast<double>(f.gapVertex.y),
+                  static_cast<double>(f.gapVertex.z));
+  return std::string(f.classification == vf::Classification::Crack ? "crack      " : "t-junction ") +
+         patchText(f.a.patch) + " " + edgeName(f.a.edge) + " | " + patchText(f.b.patch) + " " + edgeName(f.b.edge) +
+         ":" + gap + " " + causeOf(f).detail;
+}
+
+std::string fmtWorld(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.3g", v);
+  return b;
+}
+
+std::string statsText(const vf::Stats& s) {
+  std::string o;
+  o += "  patches        " + std::to_string(s.patches) + " (" + std::to_string(s.culledPatches) + " culled)\n";
+  o += "  edges checked  " + std::to_string(s.edgesChecked) + " (" + std::to_string(s.skippedCulled) +
+       " skipped: a side culled)\n";
+  o += "  matches        " + std::to_string(s.matches) + "\n";
+  o += "  T-junctions    " + std::to_string(s.tJunctions) + "\n";
+  o += "  cracks         " + std::to_string(s.cracks) + "\n";
+  if (s.cracks > 0)
+    o += "  worst gap      " + fmtWorld(s.worstGapWorld) + " world units, " + fmtWorld(s.worstGapPixels) + " pixels\n";
+  return o;
+}
+// ---- shared plumbing ---------------------------------------------------------------------------------------------
+void writeReport(const std::string& path, const std::string& text) {
+  AtomicFile f(path);
+  f.buffer() = text;
+  f.commit();
+}
+
+int verdictStatus(const SceneArgs& a, const vf::Stats& s) {
+  if (s.cracks > 0) return kExitFindings;
+  if (a.failOnTJunctions && s.tJunctions > 0) return kExitFindings;
+  return kExitClean;
+}
+
+void addSceneOptions(CLI::App* sub, SceneArgs& a) {
+  sub->add_option("scene", a.scene, "Scene file (TOML, docs/verify.md)")->required();
+  sub->add_option("--set", a.overrides, "Override a scene key: KEY=VALUE (repeatable), validated like the file")
+      ->type_name("KEY=VALUE");
+  sub->add_option("--eye", a.eye, "Camera eye X,Y,Z (shorthand for --set camera.eye=[X,Y,Z])");
+  sub->add_option("--target", a.target, "Camera target X,Y,Z (shorthand for --set camera.target=[X,Y,Z])");
+  sub->add_option("--kernel", a.kernel, "CGAL kernel: epick (exact predicates), epeck (exact gaps too), float (naive, wrong on purpose)")
+      ->capture_default_str();
+  sub->add_flag("--flush-denormals", a.flushDenormals, "Tessellator flushes denormal factors (as llvmpipe)");
+  sub->add_option("--json", a.json, "Write the full report as JSON to FILE ('-': stdout, no text then)");
+  sub->add_option("--svg", a.svg, "Write an SVG picture to FILE");
+  sub->add_flag("-q,--quiet", a.quiet, "Print nothing but errors; the exit status tells the verdict");
+  sub->add_flag("--fail-on-tjunctions", a.failOnTJunctions, "Exit 1 on T-junctions too (default: cracks only)");
+}
+
+} // namespace fftess::cli

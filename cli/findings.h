@@ -1,0 +1,39 @@
+// Findings in words, for check and sweep: edge and patch names, the cause of a finding, one-line finding text, the
+// stats block, and the scene options shared by both commands (loading with --set overrides, kernel, exit status).
+#pragma once
+
+#include "check.h"
+
+#include "verify/verify.h"
+
+#include <string>
+#include <vector>
+
+namespace fftess::cli {
+
+namespace vf = fftess::verify;
+
+const char* edgeName(int e);                          // Ueq0 Veq0 Ueq1 Veq1, "?" out of range
+std::string patchText(const vf::PatchRef& p);         // "ring R tile T patch P"
+std::string fmtWorld(double v);                       // %.3g
+
+// A short, stable name for why a finding happened (the grouping key of sweep summaries), and a longer explanation
+// with the numbers of this finding.
+struct Cause {
+  std::string key;
+  std::string detail;
+};
+Cause causeOf(const vf::Finding& f);
+
+std::string findingLine(const vf::Finding& f);        // one line: classification, both sides, gap, cause
+std::string statsText(const vf::Stats& s);            // the indented stats block of check and sweep
+
+// Scene options shared by check and sweep.
+std::vector<std::string> overridesOf(const SceneArgs& a); // --eye/--target as overrides, then every --set
+vf::Scene load(const SceneArgs& a);                       // throws UsageError with the loader's message
+vf::CheckOptions checkOptions(const SceneArgs& a);        // --kernel, --flush-denormals
+void addSceneOptions(CLI::App* sub, SceneArgs& a);
+int verdictStatus(const SceneArgs& a, const vf::Stats& s); // kExitFindings on cracks (and T-junctions if asked)
+void writeReport(const std::string& path, const std::string& text); // atomically (AtomicFile)
+
+} // namespace fftess::cli

@@ -1,0 +1,124 @@
+// JSON reports of check and sweep (report_json.h).
+#include "report_json.h"
+#include "common.h"
+
+namespace fftess::cli {
+
+json vec3Json(const vf::Vec3& v) { return json::array({v.x, v.y, v.z}); }
+
+static json sideJson(const vf::EdgeSide& s) {
+  json j;
+  j["patch"] = {{"index", s.patch.index}, {"ring", s.patch.ring}, {"tile", s.patch.tile}, {"patch", s.patch.patch},
+                {"level", s.patch.level}};
+  j["edge"] = edgeName(s.edge);
+  j["hull_factor"] = s.hullFactor;
+  j["processed_factor"] = s.processedFactor;
+  j["culled"] = s.culled;
+  j["param_range"] = json::array({s.paramLo, s.paramHi});
+  j["point_count"] = s.pointCount;
+  j["first_mismatch"] = s.firstMismatch;
+  if (s.firstMismatch >= 0) {
+    j["mismatch_domain"] = json::array({s.mismatchDomain.u, s.mismatchDomain.v});
+    j["mismatch_world"] = vec3Json(s.mismatchWorld);
+  } else {
+    j["mismatch_domain"] = nullptr;
+    j["mismatch_world"] = nullptr;
+  }
+  return j;
+}
+
+json findingJson(const vf::Finding& f) {
+  json j;
+  j["classification"] = vf::toString(f.classification);
+  j["cause"] = causeOf(f).key;
+  j["explanation"] = causeOf(f).detail;
+  j["partitioning"] = toString(f.partitioning);
+  j["a"] = sideJson(f.a);
+  j["b"] = sideJson(f.b);
+  j["edge_start"] = vec3Json(f.edgeStart);
+  j["edge_end"] = vec3Json(f.edgeEnd);
+  j["gap_world"] = f.gapWorld;
+  j["gap_pixels"] = f.gapPixels;
+  j["gap_vertex"] = vec3Json(f.gapVertex);
+  j["gap_side"] = f.gapSide == 0 ? "a" : "b";
+  return j;
+}
+
+json statsJson(const vf::Stats& s) {
+  return {{"patches", s.patches},           {"culled_patches", s.culledPatches}, {"edges_checked", s.edgesChecked},
+          {"skipped_culled", s.skippedCulled}, {"matches", s.matches},          {"t_junctions", s.tJunctions},
+          {"cracks", s.cracks},             {"worst_gap_world", s.worstGapWorld}, {"worst_gap_pixels", s.worstGapPixels}};
+}
+
+json cameraJson(const vf::Camera& c) {
+  return {{"eye", vec3Json(c.eye)}, {"target", vec3Json(c.target)}, {"up", vec3Json(c.up)},       {"fov_y", c.fovY},
+          {"near", c.nearZ},      {"far", c.farZ},            {"width", c.width},       {"height", c.height}};
+}
+
+json sceneJson(const SceneArgs& a, const vf::Scene& s) {
+  return {{"file", a.scene},
+          {"name", s.name},
+          {"overrides", overridesOf(a)},
+          {"layout", vf::toString(s.layout.kind)},
+          {"lod_scheme", vf::toString(s.lod.scheme)},
+          {"adjacency_clamp", vf::toString(s.lod.adjacencyClamp)},
+          {"partitioning", toString(s.partitioning)},
+          {"stage", toString(s.stage)},
+          {"domain_formula", vf::toString(s.domain.formula)},
+          {"kernel", a.kernel}};
+}
+
+json checkJson(const SceneArgs& a, const vf::Scene& scene, const vf::Camera& cam, const vf::Report& r,
+               const vf::MeshReport* mesh) {
+  json j;
+  j["version"] = kReportVersion;
+  j["kind"] = "check";
+  j["fftess_version"] = FFTESS_VERSION;
+  j["scene"] = sceneJson(a, scene);
+  j["camera"] = cameraJson(cam);
+  j["stats"] = statsJson(r.stats);
+  j["verdict"] = r.stats.cracks > 0 ? "cracks" : "clean";
+  j["truncated"] = r.truncated;
+  json fs = json::array();
+  for (const vf::Finding& f : r.findings) fs.push_back(findingJson(f));
+  j["findings"] = fs;
+  if (mesh)
+    j["mesh"] = {{"triangles", mesh->triangles}, {"vertices", mesh->vertices}, {"border_edges", mesh->borderEdges},
+                 {"inner_border_edges", mesh->innerBorderEdges}, {"flagged_patch_edges", mesh->flagged.size()}};
+  return j;
+}
+
+json sweepJson(const SceneArgs& a, const vf::Scene& scene, const std::string& camerasSource,
+               const std::vector<vf::Camera>& cams, const vf::SweepResult& res, const std::vector<CauseRow>& causes) {
+  json j;
+  j["version"] = kReportVersion;
+  j["kind"] = "sweep";
+  j["fftess_version"] = FFTESS_VERSION;
+  j["scene"] = sceneJson(a, scene);
+  j["cameras_source"] = camerasSource;
+  j["cameras_total"] = cams.size();
+  j["cameras_done"] = res.camerasDone;
+  j["cancelled"] = res.cancelled;
+  j["stats"] = statsJson(res.total);
+  j["verdict"] = res.total.cracks > 0 ? "cracks" : "clean";
+  json cs = json::array();
+  for (const CauseRow& c : causes)
+    cs.push_back({{"cause", c.cause}, {"findings", c.findings}, {"cameras", c.cameras}, {"first_camera", c.firstCamera},
+                  {"example", c.example}});
+  j["causes"] = cs;
+  json cl = json::array();
+  for (const vf::CameraResult& c : res.cameras) {
+    json jc;
+    jc["index"] = c.cameraIndex;
+    jc["eye"] = vec3Json(cams[c.cameraIndex].eye);
+    jc["target"] = vec3Json(cams[c.cameraIndex].target);
+    jc["done"] = c.done;
+    jc["stats"] = statsJson(c.stats);
+    jc["worst"] = c.hasFinding ? findingJson(c.worst) : json(nullptr);
+    cl.push_back(jc);
+  }
+  j["cameras"] = cl;
+  return j;
+}
+
+} // namespace fftess::cli

@@ -1,0 +1,40 @@
+// JSON reports of check and sweep (schema: docs/cli.md, "JSON reports"). Pure functions of the reports: no I/O.
+#pragma once
+
+#include "check.h"
+#include "findings.h"
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+namespace fftess::cli {
+
+using json = nlohmann::ordered_json;
+
+constexpr int kReportVersion = 1; // "version" of every JSON report; bumped on any change of the schema
+
+json vec3Json(const vf::Vec3& v);
+json findingJson(const vf::Finding& f);
+json statsJson(const vf::Stats& s);
+json cameraJson(const vf::Camera& c);
+json sceneJson(const SceneArgs& a, const vf::Scene& s);
+
+// One entry of a sweep's cause table (sweep.cpp tallies them).
+struct CauseRow {
+  std::string cause;
+  int64_t findings = 0;
+  size_t cameras = 0;
+  size_t firstCamera = 0;
+  std::string example;
+};
+
+// The whole report of `fftess check` (mesh: null unless --mesh ran).
+json checkJson(const SceneArgs& a, const vf::Scene& scene, const vf::Camera& cam, const vf::Report& r,
+               const vf::MeshReport* mesh);
+// The whole report of `fftess sweep`.
+json sweepJson(const SceneArgs& a, const vf::Scene& scene, const std::string& camerasSource,
+               const std::vector<vf::Camera>& cams, const vf::SweepResult& res, const std::vector<CauseRow>& causes);
+
+} // namespace fftess::cli

@@ -1,0 +1,227 @@
+// SVG pictures of check and sweep (report_svg.h).
+#include "report_svg.h"
+#include "common.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <map>
+
+namespace fftess::cli {
+namespace {
+
+struct MapView {
+  vf::Extent e;
+  double size = 760, margin = 20, scale = 1;
+  void init(const vf::Extent& ext) {
+    e = ext;
+    const double w = std::max(1e-9, static_cast<double>(e.maxX - e.minX)), h = std::max(1e-9, static_cast<double>(e.maxZ - e.minZ));
+    scale = size / std::max(w, h);
+  }
+  double x(double wx) const { return margin + (wx - e.minX) * scale; }
+  double y(double wz) const { return margin + (e.maxZ - wz) * scale; } // +z up on the page
+};
+
+const char* kSvgStyle =
+    "<style>.p{fill:none;stroke:#bbb;stroke-width:0.3}.tl{fill:none;stroke:#777;stroke-width:0.8}.tj{stroke:#e08a00;stroke-width:2.5}"
+    ".cr{stroke:#d01010;stroke-width:3}.mk{fill:none;stroke:#d01010;stroke-width:0.8}.t{font:13px sans-serif}"
+    ".s{font:11px monospace}.ok{fill:#2a8a2a}.warn{fill:#e08a00}.bad{fill:#d01010}.path{fill:none;stroke:#446;"
+    "stroke-width:1}.ins{fill:#fff;stroke:#222}.a{stroke:#2a5599;stroke-width:1.2}.b{stroke:#7a2a99;stroke-width:1.2}"
+    ".x{stroke:#d01010;stroke-width:2}</style>\n";
+
+// The layout from above, from verify's real patch geometry (one terrain build for all patches): every patch outlined
+// thinly, and each tile (ring, tile) of a tile-ring layout outlined around its patches. Very large layouts (more
+// than kSvgMaxPatches patches) are drawn as their extent only.
+constexpr size_t kSvgMaxPatches = 200000;
+
+void svgPatches(std::string& o, const vf::Scene& scene, const MapView& v) {
+  char buf[256];
+  o += "<g id=\"layout\">\n";
+  const std::vector<vf::PatchGeometry> geo = vf::patchGeometry(scene);
+  if (geo.empty() || geo.size() > kSvgMaxPatches) {
+    std::snprintf(buf, sizeof buf, "<rect class=\"tl\" x=\"%.2f\" y=\"%.2f\" width=\"%.2f\" height=\"%.2f\"/>\n",
+                  v.x(v.e.minX), v.y(v.e.maxZ), v.x(v.e.maxX) - v.x(v.e.minX), v.y(v.e.minZ) - v.y(v.e.maxZ));
+    o += buf + std::string("</g>\n");
+    return;
+  }
+  // Patches: one path, a closed quadrilateral per patch through its corners in order (u0v0, u1v0, u1v1, u0v1).
+  o += "<path class=\"p\" d=\"";
+  struct Box {
+    double x0 = 1e300, z0 = 1e300, x1 = -1e300, z1 = -1e300;
+  };
+  std::map<std::pair<int, int>, Box> tiles;
+  for (const vf::PatchGeometry& g : geo) {
+    const vf::Vec3* c = g.corners;
+    std::snprintf(buf, sizeof buf, "M%.2f %.2fL%.2f %.2fL%.2f %.2fL%.2f %.2fZ", v.x(c[0].x), v.y(c[0].z), v.x(c[1].x),
+                  v.y(c[1].z), v.x(c[3].x), v.y(c[3].z), v.x(c[2].x), v.y(c[2].z));
+    o += buf;
+    Box& b = tiles[{g.ref.ring, g.ref.tile}];
+    for (int k = 0; k < 4; ++k) {
+      b.x0 = std::min(b.x0, static_cast<double>(c[k].x)), b.x1 = std::max(b.x1, static_cast<double>(c[k].x));
+      b.z0 = std::min(b.z0, static_cast<double>(c[k].z)), b.z1 = std::max(b.z1, static_cast<double>(c[k].z));
+    }
+  }
+  o += "\"/>\n";
+  // Tiles (a grid or heightmap grid is one tile: its outline is the terrain's).
+  for (const auto& kv : tiles) {
+    const Box& b = kv.second;
+    std::snprintf(buf, sizeof buf, "<rect class=\"tl\" x=\"%.2f\" y=\"%.2f\" width=\"%.2f\" height=\"%.2f\"/>\n",
+                  v.x(b.x0), v.y(b.z1), v.x(b.x1) - v.x(b.x0), v.y(b.z0) - v.y(b.z1));
+    o += buf;
+  }
+  o += "</g>\n";
+}
+
+// The inset: the worst finding's shared edge stretched to the inset's width, side a's points above the line and
+// side b's below (from the tessellator's edge query), the points without a partner on the other side in red.
+void svgInset(std::string& o, const vf::Scene& scene, const vf::Finding& f, double x, double y, double w) {
+  char buf[320];
+  std::snprintf(buf, sizeof buf, "<g id=\"inset\"><rect class=\"ins\" x=\"%.1f\" y=\"%.1f\" width=\"%.1f\" height=\"150\"/>\n",
+                x, y, w);
+  o += buf;
+  std::snprintf(buf, sizeof buf, "<text class=\"t\" x=\"%.1f\" y=\"%.1f\">worst %s, zoomed: the shared edge, side a above, side b below</text>\n",
+                x + 8, y + 18, vf::toString(f.classification));
+  o += buf;
+  struct Tick {
+    double t;
+    bool partner;
+  };
+  auto ticks = [&](const vf::EdgeSide& s) {
+    std::vector<Tick> out;
+    const EdgePoints e = edgePoints(s.hullFactor, f.partitioning, scene.stage);
+    const double lo = s.paramLo, hi = s.paramHi;
+    for (int i = 0; i < e.count; ++i) {
+      const double p = e.param[i];
+      if (p < lo || p > hi || hi <= lo) continue;
+      out.push_back({(p - lo) / (hi - lo), false});
+    }
+    return out;
+  };
+  std::vector<Tick> ta = ticks(f.a), tb = ticks(f.b);
+  for (Tick& a : ta)
+    for (Tick& b : tb)
+      if (a.t == b.t) a.partner = b.partner = true;
+  const double lx = x + 20, lw = w - 40, ly = y + 85;
+  std::snprintf(buf, sizeof buf, "<line class=\"p\" x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\"/>\n", lx, ly, lx + lw, ly);
+  o += buf;
+  for (const Tick& t : ta) {
+    std::snprintf(buf, sizeof buf, "<line class=\"%s\" x1=\"%.2f\" y1=\"%.1f\" x2=\"%.2f\" y2=\"%.1f\"/>\n",
+                  t.partner ? "a" : "x", lx + t.t * lw, ly - 25, lx + t.t * lw, ly);
+    o += buf;
+  }
+  for (const Tick& t : tb) {
+    std::snprintf(buf, sizeof buf, "<line class=\"%s\" x1=\"%.2f\" y1=\"%.1f\" x2=\"%.2f\" y2=\"%.1f\"/>\n",
+                  t.partner ? "b" : "x", lx + t.t * lw, ly, lx + t.t * lw, ly + 25);
+    o += buf;
+  }
+  std::snprintf(buf, sizeof buf,
+                "<text class=\"s\" x=\"%.1f\" y=\"%.1f\">a: %s %s factor %s  b: %s %s factor %s  gap %s world</text>\n</g>\n",
+                x + 8, y + 140, patchText(f.a.patch).c_str(), edgeName(f.a.edge), formatFloat(f.a.processedFactor).c_str(),
+                patchText(f.b.patch).c_str(), edgeName(f.b.edge), formatFloat(f.b.processedFactor).c_str(),
+                fmtWorld(f.gapWorld).c_str());
+  o += buf;
+}
+
+} // namespace
+
+std::string checkSvg(const vf::Scene& scene, const vf::Report& r, const std::string& title) {
+  MapView v;
+  v.init(vf::terrainExtent(scene));
+  const double H = v.margin * 2 + (v.e.maxZ - v.e.minZ) * v.scale, W = v.margin * 2 + (v.e.maxX - v.e.minX) * v.scale;
+  const vf::Finding* worst = nullptr;
+  for (const vf::Finding& f : r.findings)
+    if (!worst || f.gapWorld > worst->gapWorld) worst = &f;
+  const double totalH = H + 60 + (worst ? 170 : 0);
+  char buf[512];
+  std::string o;
+  std::snprintf(buf, sizeof buf,
+                "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" "
+                "height=\"%.0f\" viewBox=\"0 0 %.0f %.0f\">\n<title>%s</title>\n",
+                std::max(W, 780.0), totalH, std::max(W, 780.0), totalH, xmlEscape(title).c_str());
+  o += buf;
+  o += kSvgStyle;
+  o += "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  svgPatches(o, scene, v);
+  o += "<g id=\"findings\">\n";
+  for (const vf::Finding& f : r.findings) {
+    const bool crack = f.classification == vf::Classification::Crack;
+    std::snprintf(buf, sizeof buf, "<line class=\"%s\" x1=\"%.2f\" y1=\"%.2f\" x2=\"%.2f\" y2=\"%.2f\"/>\n",
+                  crack ? "cr" : "tj", v.x(f.edgeStart.x), v.y(f.edgeStart.z), v.x(f.edgeEnd.x), v.y(f.edgeEnd.z));
+    o += buf;
+    if (crack) {
+      std::snprintf(buf, sizeof buf, "<circle class=\"mk\" cx=\"%.2f\" cy=\"%.2f\" r=\"2.5\"/>\n", v.x(f.gapVertex.x),
+                    v.y(f.gapVertex.z));
+      o += buf;
+    }
+  }
+  o += "</g>\n";
+  std::snprintf(buf, sizeof buf,
+                "<text class=\"t\" x=\"20\" y=\"%.0f\">%lld edges checked: %lld match, %lld T-junctions (orange), "
+                "%lld cracks (red, circled)</text>\n",
+                H + 25, static_cast<long long>(r.stats.edgesChecked), static_cast<long long>(r.stats.matches),
+                static_cast<long long>(r.stats.tJunctions), static_cast<long long>(r.stats.cracks));
+  o += buf;
+  if (worst) svgInset(o, scene, *worst, 10, H + 45, std::max(W, 780.0) - 20);
+  o += "</svg>\n";
+  return o;
+}
+
+std::string sweepSvg(const vf::Scene& scene, const std::vector<vf::Camera>& cams, const vf::SweepResult& res,
+                     const std::vector<size_t>& firstCameras, bool randomOrder, const std::string& title) {
+  MapView v;
+  vf::Extent ext = vf::terrainExtent(scene);
+  for (const vf::Camera& c : cams) { // cameras off the terrain stay on the map
+    ext.minX = std::min(ext.minX, c.eye.x), ext.maxX = std::max(ext.maxX, c.eye.x);
+    ext.minZ = std::min(ext.minZ, c.eye.z), ext.maxZ = std::max(ext.maxZ, c.eye.z);
+  }
+  v.init(ext);
+  const double H = v.margin * 2 + (v.e.maxZ - v.e.minZ) * v.scale, W = v.margin * 2 + (v.e.maxX - v.e.minX) * v.scale;
+  std::string o;
+  char buf[512];
+  std::snprintf(buf, sizeof buf,
+                "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" "
+                "height=\"%.0f\" viewBox=\"0 0 %.0f %.0f\">\n<title>%s</title>\n",
+                std::max(W, 780.0), H + 60, std::max(W, 780.0), H + 60, xmlEscape(title).c_str());
+  o += buf;
+  o += kSvgStyle;
+  o += "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  svgPatches(o, scene, v);
+  if (!randomOrder) { // a path: join the cameras in order
+    o += "<polyline class=\"path\" points=\"";
+    for (const vf::Camera& c : cams) {
+      std::snprintf(buf, sizeof buf, "%.2f,%.2f ", v.x(c.eye.x), v.y(c.eye.z));
+      o += buf;
+    }
+    o += "\"/>\n";
+  }
+  o += "<g id=\"cameras\">\n";
+  for (const vf::CameraResult& c : res.cameras) {
+    const vf::Camera& cam = cams[c.cameraIndex];
+    const char* cls = !c.done ? "p" : c.stats.cracks > 0 ? "bad" : c.stats.tJunctions > 0 ? "warn" : "ok";
+    std::snprintf(buf, sizeof buf, "<circle class=\"%s\" cx=\"%.2f\" cy=\"%.2f\" r=\"3\"><title>camera %zu: %lld cracks</title></circle>\n",
+                  cls, v.x(cam.eye.x), v.y(cam.eye.z), c.cameraIndex, static_cast<long long>(c.stats.cracks));
+    o += buf;
+    if (c.hasFinding && c.stats.cracks > 0) {
+      std::snprintf(buf, sizeof buf, "<circle class=\"mk\" cx=\"%.2f\" cy=\"%.2f\" r=\"4\"/>\n", v.x(c.worst.gapVertex.x),
+                    v.y(c.worst.gapVertex.z));
+      o += buf;
+    }
+  }
+  o += "</g>\n";
+  int line = 0;
+  for (size_t first : firstCameras) {
+    const vf::Camera& cam = cams[first];
+    std::snprintf(buf, sizeof buf, "<text class=\"s\" x=\"%.2f\" y=\"%.2f\">%d</text>\n", v.x(cam.eye.x) + 5,
+                  v.y(cam.eye.z) - 5, ++line);
+    o += buf;
+  }
+  std::snprintf(buf, sizeof buf,
+                "<text class=\"t\" x=\"20\" y=\"%.0f\">%zu cameras from above. Dots: green clean, orange T-junctions, "
+                "red cracks.</text>\n<text class=\"t\" x=\"20\" y=\"%.0f\">Circles: worst crack of each camera. "
+                "Numbers: first camera of each cause (in summary order).</text>\n",
+                H + 20, res.camerasDone, H + 40);
+  o += buf;
+  o += "</svg>\n";
+  return o;
+}
+
+} // namespace fftess::cli

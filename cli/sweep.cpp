@@ -1,0 +1,193 @@
+// fftess sweep SCENE: check a scene from many cameras (the scene's path, an orbit, a flyover, random), with
+// progress and Ctrl-C, tally the findings by cause, print the summary, write the JSON / SVG reports atomically.
+#include "check.h"
+#include "common.h"
+#include "findings.h"
+#include "progress.h"
+#include "report_json.h"
+#include "report_svg.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <map>
+#include <set>
+
+namespace fftess::cli {
+namespace {
+
+// Causes over a sweep: every finding of every camera names a cause (classification + causeOf key). Per cause: the
+// findings, the cameras where it appeared, and the first camera where it appeared (lowest camera index; within that
+// camera the first finding in layout order, whose explanation is the example). Fed by SweepOptions::onReport, which
+// sweep serialises, in whatever order the cameras finish: the result does not depend on that order.
+struct CauseInfo {
+  std::string detail;     // explanation of the first finding with this cause
+  int64_t findings = 0;   // findings with this cause, over all cameras
+  size_t cameras = 0;     // cameras with at least one finding with this cause
+  size_t first = 0;       // first camera (index) where it appeared
+  size_t firstFinding = 0; // index of that finding in the first camera's report
+};
+
+struct CauseTally {
+  std::map<std::string, CauseInfo> causes;
+
+  void add(size_t camera, const vf::Report& r) {
+    std::set<std::string> here;
+    for (size_t k = 0; k < r.findings.size(); ++k) {
+      const vf::Finding& f = r.findings[k];
+      if (f.classification == vf::Classification::Match) continue;
+      const Cause cause = causeOf(f);
+      const std::string key = std::string(vf::toString(f.classification)) + ": " + cause.key;
+      auto [it, added] = causes.try_emplace(key);
+      CauseInfo& c = it->second;
+      ++c.findings;
+      if (here.insert(key).second) ++c.cameras;
+      if (added || camera < c.first || (camera == c.first && k < c.firstFinding)) {
+        c.first = camera;
+        c.firstFinding = k;
+        c.detail = cause.detail;
+      }
+    }
+  }
+
+  // Cause keys in the order they first appeared (by first camera, then first finding).
+  std::vector<std::string> order() const {
+    std::vector<std::string> keys;
+    for (const auto& kv : causes) keys.push_back(kv.first);
+    std::stable_sort(keys.begin(), keys.end(), [&](const std::string& x, const std::string& y) {
+      const CauseInfo &a = causes.at(x), &b = causes.at(y);
+      return a.first != b.first ? a.first < b.first : a.firstFinding < b.firstFinding;
+    });
+    return keys;
+  }
+};
+
+
+} // namespace
+
+// ---- sweep -------------------------------------------------------------------------------------------------------
+CLI::App* addSweep(CLI::App& app, SweepArgs& a) {
+  CLI::App* sub = app.add_subcommand("sweep", "Check a scene from many cameras (a path, an orbit, a flyover, random)");
+  sub->footer("Examples:\n"
+              "  fftess sweep docs/examples/terrain.toml\n"
+              "  fftess sweep docs/examples/terrain.toml --set lod.adjacency_clamp=none --random 500 --seed 3 "
+              "--json sweep.json --svg sweep.svg\n"
+              "Cameras: the scene's [[camera_path]] (or its [camera]) unless --orbit, --flyover or --random is given.\n"
+              "Ctrl-C stops early and still prints the summary and writes the reports (exit 130 if no crack was found).\n"
+              "Exit status: 0 no cracks, 1 cracks found, 2 bad usage or scene, 3 internal error.");
+  addSceneOptions(sub, a);
+  sub->add_option("--orbit", a.orbit, "N cameras on a circle around the terrain, looking at its centre");
+  sub->add_option("--flyover", a.flyover, "N cameras on a straight flight across the terrain");
+  sub->add_option("--random", a.random, "N cameras at random positions and directions (see --seed)");
+  sub->add_option("--seed", a.seed, "Seed for --random")->capture_default_str();
+  sub->add_option("-j,--threads", a.threads, "Worker threads (default 0: all cores)")->capture_default_str();
+  sub->add_option("--label", a.label, "Name for this run in the summary (default: the scene's name)");
+  return sub;
+}
+
+// Cameras when the scene has no [[camera_path]] and no generator option is given.
+constexpr int kDefaultFlyover = 200;
+
+int runSweep(const SweepArgs& a) {
+  const int generators = (a.orbit > 0) + (a.flyover > 0) + (a.random > 0);
+  if (generators > 1) throw UsageError("sweep: give only one of --orbit, --flyover, --random");
+  if (a.orbit < 0 || a.flyover < 0 || a.random < 0) throw UsageError("sweep: camera counts must be positive");
+  if (a.threads < 0) throw UsageError("--threads " + std::to_string(a.threads) + ": must be >= 0");
+  const vf::Scene scene = load(a);
+  vf::CheckOptions opt = checkOptions(a);
+  opt.maxFindings = static_cast<size_t>(-1); // every finding reaches onReport, so the cause counts are complete
+  std::vector<vf::Camera> cams;
+  std::string how;
+  if (a.orbit > 0) cams = vf::orbitCameras(scene, a.orbit), how = "orbit of " + std::to_string(a.orbit);
+  else if (a.flyover > 0) cams = vf::flyoverCameras(scene, a.flyover), how = "flyover of " + std::to_string(a.flyover);
+  else if (a.random > 0)
+    cams = vf::randomCameras(scene, a.random, a.seed), how = std::to_string(a.random) + " random, seed " + std::to_string(a.seed);
+  else if (!scene.cameraPath.empty()) cams = vf::pathCameras(scene), how = "the scene's camera path";
+  else cams = vf::flyoverCameras(scene, kDefaultFlyover), how = "flyover of " + std::to_string(kDefaultFlyover) + ", the scene has no camera path";
+  const bool jsonToStdout = a.json == "-";
+  const bool talk = !a.quiet && !jsonToStdout;
+  const std::string label = a.label.empty() ? (scene.name.empty() ? a.scene : scene.name) : a.label;
+
+  // Progress on stderr: a bar on a terminal, a plain line every few seconds otherwise, nothing with --quiet.
+  // Progress on stderr: a bar on a terminal, a plain line every few seconds otherwise, nothing with --quiet.
+  Progress progress("cameras");
+  vf::SweepOptions so;
+  so.threads = a.threads;
+  so.cancel = InterruptGuard::flag();
+  if (talk) so.progress = [&progress](size_t done, size_t total) { progress.report(done, total); };
+  CauseTally tally;
+  so.onReport = [&tally](size_t camera, const vf::Report& r) { tally.add(camera, r); };
+  vf::SweepResult res;
+  {
+    InterruptGuard interrupts;
+    if (talk)
+      std::fprintf(stderr, "fftess sweep %s: %s, %zu cameras (%s)\n", a.scene.c_str(), label.c_str(), cams.size(),
+                   how.c_str());
+    res = vf::sweep(scene, cams, opt, so);
+  }
+  progress.finish();
+  const double elapsed = progress.elapsed();
+
+  const std::vector<std::string> order = tally.order();
+  const std::map<std::string, CauseInfo>& causes = tally.causes;
+  size_t crackCameras = 0, tjCameras = 0;
+  for (const vf::CameraResult& c : res.cameras) {
+    if (!c.done) continue;
+    if (c.stats.cracks > 0) ++crackCameras;
+    else if (c.stats.tJunctions > 0) ++tjCameras;
+  }
+  const int status = res.cancelled && res.total.cracks == 0 ? 130 : verdictStatus(a, res.total);
+
+  std::string text;
+  if (talk) {
+    char buf[256];
+    text += "\n== " + label + ": lod.adjacency_clamp = " + vf::toString(scene.lod.adjacencyClamp) +
+            (scene.lod.adjacencyClamp == vf::AdjacencyClamp::Pow2 ? " (the power-of-two workaround on)" : "") + " ==\n";
+    for (const std::string& s : overridesOf(a)) text += "  --set " + s + "\n";
+    std::snprintf(buf, sizeof buf, "  cameras        %zu of %zu%s (%s, %.1f s, %s threads)\n", res.camerasDone,
+                  cams.size(), res.cancelled ? " (interrupted)" : "", how.c_str(), elapsed,
+                  a.threads > 0 ? std::to_string(a.threads).c_str() : "all");
+    text += buf;
+    text += "  adjacency      " + std::string(vf::toString(scene.lod.adjacencyClamp)) + " clamp, " +
+            toString(scene.partitioning) + " partitioning\n";
+    text += statsText(res.total);
+    std::snprintf(buf, sizeof buf, "  cameras with cracks %zu, with T-junctions only %zu\n", crackCameras, tjCameras);
+    text += buf;
+    if (!order.empty()) {
+      text += "  causes (findings of each cause, cameras where it appeared, the first camera where it appeared):\n";
+      for (const std::string& k : order) {
+        const CauseInfo& c = causes.at(k);
+        const vf::Camera& cam = cams[c.first];
+        std::snprintf(buf, sizeof buf, "    %-75s %7lld findings on %5zu cameras, first #%zu eye (%.1f, %.1f, %.1f)\n",
+                      k.c_str(), static_cast<long long>(c.findings), c.cameras, c.first, static_cast<double>(cam.eye.x),
+                      static_cast<double>(cam.eye.y), static_cast<double>(cam.eye.z));
+        text += buf;
+        text += "      e.g. " + c.detail + "\n";
+      }
+    }
+    text += std::string("verdict: ") +
+            (res.total.cracks > 0 ? "CRACKS seen from " + std::to_string(crackCameras) + " of " + std::to_string(res.camerasDone) +
+                                        " cameras (worst gap " + fmtWorld(res.total.worstGapWorld) + " world units, " +
+                                        fmtWorld(res.total.worstGapPixels) + " px)"
+             : res.cancelled ? "no cracks so far (interrupted)"
+             : res.total.tJunctions > 0 ? "no cracks (T-junctions only)"
+             : "WATERTIGHT from all " + std::to_string(res.camerasDone) + " cameras") +
+            "\n";
+  }
+  if (!a.json.empty()) {
+    std::vector<CauseRow> rows;
+    for (const std::string& k : order) {
+      const CauseInfo& c = causes.at(k);
+      rows.push_back({k, c.findings, c.cameras, c.first, c.detail});
+    }
+    writeReport(a.json, sweepJson(a, scene, how, cams, res, rows).dump(2) + "\n");
+  }
+  if (!a.svg.empty()) {
+    std::vector<size_t> firsts;
+    for (const std::string& k : order) firsts.push_back(causes.at(k).first);
+    writeReport(a.svg, sweepSvg(scene, cams, res, firsts, a.random > 0, "fftess sweep " + a.scene));
+  }
+  writeStdout(text);
+  return status;
+}
+
+} // namespace fftess::cli
