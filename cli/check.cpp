@@ -26,7 +26,8 @@ CLI::App* addCheck(CLI::App& app, CheckArgs& a) {
 }
 
 int runCheck(const CheckArgs& a) {
-  const vf::Scene scene = load(a);
+  const vf::Terrain terrain = load(a); // the one terrain build of this command
+  const vf::Scene& scene = terrain.scene();
   vf::Camera cam = scene.camera;
   if (a.pathCamera >= 0) {
     if (static_cast<size_t>(a.pathCamera) >= scene.cameraPath.size())
@@ -35,7 +36,7 @@ int runCheck(const CheckArgs& a) {
     cam = scene.cameraPath[static_cast<size_t>(a.pathCamera)];
   }
   vf::CheckOptions opt = checkOptions(a);
-  const vf::Report r = vf::checkScene(scene, cam, opt);
+  const vf::Report r = vf::checkScene(terrain, cam, opt);
   if (!r.error.empty()) throw UsageError(r.error);
   const bool jsonToStdout = a.json == "-";
   std::string text;
@@ -61,8 +62,8 @@ int runCheck(const CheckArgs& a) {
   vf::MeshReport mesh;
   if (a.mesh) {
     opt.maxFindings = static_cast<size_t>(-1);
-    const vf::Report full = vf::checkScene(scene, cam, opt);
-    mesh = vf::checkSceneMesh(scene, cam, opt);
+    const vf::Report full = vf::checkScene(terrain, cam, opt);
+    mesh = vf::checkSceneMesh(terrain, cam, opt);
     const bool agree = vf::flaggedPatchEdges(full) == mesh.flagged;
     if (!a.quiet && !jsonToStdout)
       text += "whole-mesh check: " + std::to_string(mesh.triangles) + " triangles, " +
@@ -75,7 +76,7 @@ int runCheck(const CheckArgs& a) {
     text += std::string("verdict: ") + (r.stats.cracks > 0 ? "CRACKS" : r.stats.tJunctions > 0 ? "watertight now (T-junctions)" : "watertight") + "\n";
   // Reports first (atomically), then the text: a failure writing a report leaves no partial file.
   if (!a.json.empty()) writeReport(a.json, checkJson(a, scene, cam, r, a.mesh ? &mesh : nullptr).dump(2) + "\n");
-  if (!a.svg.empty()) writeReport(a.svg, checkSvg(scene, r, "fftess check " + a.scene));
+  if (!a.svg.empty()) writeReport(a.svg, checkSvg(terrain, r, "fftess check " + a.scene));
   writeStdout(text);
   return status;
 }

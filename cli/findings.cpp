@@ -30,10 +30,12 @@ std::vector<std::string> overridesOf(const SceneArgs& a) {
   return o;
 }
 
-vf::Scene load(const SceneArgs& a) {
+vf::Terrain load(const SceneArgs& a) {
   vf::SceneResult r = vf::loadScene(a.scene, overridesOf(a));
   if (!r) throw UsageError(r.error.empty() ? "cannot load scene '" + a.scene + "'" : r.error);
-  return r.scene;
+  vf::TerrainResult t = vf::prepareTerrain(r.scene);
+  if (!t) throw UsageError(a.scene + ": " + t.error);
+  return t.terrain;
 }
 
 vf::CheckOptions checkOptions(const SceneArgs& a) {

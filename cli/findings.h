@@ -30,7 +30,9 @@ std::string statsText(const vf::Stats& s);            // the indented stats bloc
 
 // Scene options shared by check and sweep.
 std::vector<std::string> overridesOf(const SceneArgs& a); // --eye/--target as overrides, then every --set
-vf::Scene load(const SceneArgs& a);                       // throws UsageError with the loader's message
+// The scene with its --set overrides, prepared once for the whole command (vf::prepareTerrain); throws UsageError
+// with the loader's message.
+vf::Terrain load(const SceneArgs& a);
 vf::CheckOptions checkOptions(const SceneArgs& a);        // --kernel, --flush-denormals
 void addSceneOptions(CLI::App* sub, SceneArgs& a);
 int verdictStatus(const SceneArgs& a, const vf::Stats& s); // kExitFindings on cracks (and T-junctions if asked)

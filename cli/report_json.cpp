@@ -4,7 +4,7 @@
 
 namespace fftess::cli {
 
-json vec3Json(const vf::Vec3& v) { return json::array({v.x, v.y, v.z}); }
+json vec3Json(const glm::vec3& v) { return json::array({v.x, v.y, v.z}); }
 
 static json sideJson(const vf::EdgeSide& s) {
   json j;
@@ -61,7 +61,7 @@ json sceneJson(const SceneArgs& a, const vf::Scene& s) {
           {"overrides", overridesOf(a)},
           {"layout", vf::toString(s.layout.kind)},
           {"lod_scheme", vf::toString(s.lod.scheme)},
-          {"adjacency_clamp", vf::toString(s.lod.adjacencyClamp)},
+          {"adjacency_clamp", vf::toString(s.lod.screenSphere.clamp)},
           {"partitioning", toString(s.partitioning)},
           {"stage", toString(s.stage)},
           {"domain_formula", vf::toString(s.domain.formula)},

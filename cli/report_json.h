@@ -15,7 +15,7 @@ using json = nlohmann::ordered_json;
 
 constexpr int kReportVersion = 1; // "version" of every JSON report; bumped on any change of the schema
 
-json vec3Json(const vf::Vec3& v);
+json vec3Json(const glm::vec3& v);
 json findingJson(const vf::Finding& f);
 json statsJson(const vf::Stats& s);
 json cameraJson(const vf::Camera& c);

@@ -33,10 +33,10 @@ const char* kSvgStyle =
 // than kSvgMaxPatches patches) are drawn as their extent only.
 constexpr size_t kSvgMaxPatches = 200000;
 
-void svgPatches(std::string& o, const vf::Scene& scene, const MapView& v) {
+void svgPatches(std::string& o, const vf::Terrain& terrain, const MapView& v) {
   char buf[256];
   o += "<g id=\"layout\">\n";
-  const std::vector<vf::PatchGeometry> geo = vf::patchGeometry(scene);
+  const std::vector<vf::PatchGeometry>& geo = terrain.patches();
   if (geo.empty() || geo.size() > kSvgMaxPatches) {
     std::snprintf(buf, sizeof buf, "<rect class=\"tl\" x=\"%.2f\" y=\"%.2f\" width=\"%.2f\" height=\"%.2f\"/>\n",
                   v.x(v.e.minX), v.y(v.e.maxZ), v.x(v.e.maxX) - v.x(v.e.minX), v.y(v.e.minZ) - v.y(v.e.maxZ));
@@ -50,7 +50,7 @@ void svgPatches(std::string& o, const vf::Scene& scene, const MapView& v) {
   };
   std::map<std::pair<int, int>, Box> tiles;
   for (const vf::PatchGeometry& g : geo) {
-    const vf::Vec3* c = g.corners;
+    const glm::vec3* c = g.corners;
     std::snprintf(buf, sizeof buf, "M%.2f %.2fL%.2f %.2fL%.2f %.2fL%.2f %.2fZ", v.x(c[0].x), v.y(c[0].z), v.x(c[1].x),
                   v.y(c[1].z), v.x(c[3].x), v.y(c[3].z), v.x(c[2].x), v.y(c[2].z));
     o += buf;
@@ -123,9 +123,9 @@ void svgInset(std::string& o, const vf::Scene& scene, const vf::Finding& f, doub
 
 } // namespace
 
-std::string checkSvg(const vf::Scene& scene, const vf::Report& r, const std::string& title) {
+std::string checkSvg(const vf::Terrain& terrain, const vf::Report& r, const std::string& title) {
   MapView v;
-  v.init(vf::terrainExtent(scene));
+  v.init(terrain.extent());
   const double H = v.margin * 2 + (v.e.maxZ - v.e.minZ) * v.scale, W = v.margin * 2 + (v.e.maxX - v.e.minX) * v.scale;
   const vf::Finding* worst = nullptr;
   for (const vf::Finding& f : r.findings)
@@ -140,7 +140,7 @@ std::string checkSvg(const vf::Scene& scene, const vf::Report& r, const std::str
   o += buf;
   o += kSvgStyle;
   o += "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-  svgPatches(o, scene, v);
+  svgPatches(o, terrain, v);
   o += "<g id=\"findings\">\n";
   for (const vf::Finding& f : r.findings) {
     const bool crack = f.classification == vf::Classification::Crack;
@@ -160,15 +160,15 @@ std::string checkSvg(const vf::Scene& scene, const vf::Report& r, const std::str
                 H + 25, static_cast<long long>(r.stats.edgesChecked), static_cast<long long>(r.stats.matches),
                 static_cast<long long>(r.stats.tJunctions), static_cast<long long>(r.stats.cracks));
   o += buf;
-  if (worst) svgInset(o, scene, *worst, 10, H + 45, std::max(W, 780.0) - 20);
+  if (worst) svgInset(o, terrain.scene(), *worst, 10, H + 45, std::max(W, 780.0) - 20);
   o += "</svg>\n";
   return o;
 }
 
-std::string sweepSvg(const vf::Scene& scene, const std::vector<vf::Camera>& cams, const vf::SweepResult& res,
+std::string sweepSvg(const vf::Terrain& terrain, const std::vector<vf::Camera>& cams, const vf::SweepResult& res,
                      const std::vector<size_t>& firstCameras, bool randomOrder, const std::string& title) {
   MapView v;
-  vf::Extent ext = vf::terrainExtent(scene);
+  vf::Extent ext = terrain.extent();
   for (const vf::Camera& c : cams) { // cameras off the terrain stay on the map
     ext.minX = std::min(ext.minX, c.eye.x), ext.maxX = std::max(ext.maxX, c.eye.x);
     ext.minZ = std::min(ext.minZ, c.eye.z), ext.maxZ = std::max(ext.maxZ, c.eye.z);
@@ -184,7 +184,7 @@ std::string sweepSvg(const vf::Scene& scene, const std::vector<vf::Camera>& cams
   o += buf;
   o += kSvgStyle;
   o += "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-  svgPatches(o, scene, v);
+  svgPatches(o, terrain, v);
   if (!randomOrder) { // a path: join the cameras in order
     o += "<polyline class=\"path\" points=\"";
     for (const vf::Camera& c : cams) {

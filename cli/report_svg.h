@@ -11,12 +11,12 @@ namespace fftess::cli {
 
 // The check picture: layout, T-junctions (orange) and cracks (red, the gap vertex circled), the worst finding's
 // edge zoomed in an inset.
-std::string checkSvg(const vf::Scene& scene, const vf::Report& r, const std::string& title);
+std::string checkSvg(const vf::Terrain& terrain, const vf::Report& r, const std::string& title);
 
 // The sweep picture: layout, every camera's eye as a dot coloured by its verdict (joined in order unless
 // randomOrder), each camera's worst crack circled, and the first camera of each cause numbered in the order of
 // firstCameras.
-std::string sweepSvg(const vf::Scene& scene, const std::vector<vf::Camera>& cams, const vf::SweepResult& res,
+std::string sweepSvg(const vf::Terrain& terrain, const std::vector<vf::Camera>& cams, const vf::SweepResult& res,
                      const std::vector<size_t>& firstCameras, bool randomOrder, const std::string& title);
 
 } // namespace fftess::cli

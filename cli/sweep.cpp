@@ -92,17 +92,18 @@ int runSweep(const SweepArgs& a) {
   if (generators > 1) throw UsageError("sweep: give only one of --orbit, --flyover, --random");
   if (a.orbit < 0 || a.flyover < 0 || a.random < 0) throw UsageError("sweep: camera counts must be positive");
   if (a.threads < 0) throw UsageError("--threads " + std::to_string(a.threads) + ": must be >= 0");
-  const vf::Scene scene = load(a);
+  const vf::Terrain terrain = load(a); // the one terrain build of this command
+  const vf::Scene& scene = terrain.scene();
   vf::CheckOptions opt = checkOptions(a);
   opt.maxFindings = static_cast<size_t>(-1); // every finding reaches onReport, so the cause counts are complete
   std::vector<vf::Camera> cams;
   std::string how;
-  if (a.orbit > 0) cams = vf::orbitCameras(scene, a.orbit), how = "orbit of " + std::to_string(a.orbit);
-  else if (a.flyover > 0) cams = vf::flyoverCameras(scene, a.flyover), how = "flyover of " + std::to_string(a.flyover);
+  if (a.orbit > 0) cams = vf::orbitCameras(terrain, a.orbit), how = "orbit of " + std::to_string(a.orbit);
+  else if (a.flyover > 0) cams = vf::flyoverCameras(terrain, a.flyover), how = "flyover of " + std::to_string(a.flyover);
   else if (a.random > 0)
-    cams = vf::randomCameras(scene, a.random, a.seed), how = std::to_string(a.random) + " random, seed " + std::to_string(a.seed);
-  else if (!scene.cameraPath.empty()) cams = vf::pathCameras(scene), how = "the scene's camera path";
-  else cams = vf::flyoverCameras(scene, kDefaultFlyover), how = "flyover of " + std::to_string(kDefaultFlyover) + ", the scene has no camera path";
+    cams = vf::randomCameras(terrain, a.random, a.seed), how = std::to_string(a.random) + " random, seed " + std::to_string(a.seed);
+  else if (!scene.cameraPath.empty()) cams = vf::pathCameras(terrain), how = "the scene's camera path";
+  else cams = vf::flyoverCameras(terrain, kDefaultFlyover), how = "flyover of " + std::to_string(kDefaultFlyover) + ", the scene has no camera path";
   const bool jsonToStdout = a.json == "-";
   const bool talk = !a.quiet && !jsonToStdout;
   const std::string label = a.label.empty() ? (scene.name.empty() ? a.scene : scene.name) : a.label;
@@ -122,7 +123,7 @@ int runSweep(const SweepArgs& a) {
     if (talk)
       std::fprintf(stderr, "fftess sweep %s: %s, %zu cameras (%s)\n", a.scene.c_str(), label.c_str(), cams.size(),
                    how.c_str());
-    res = vf::sweep(scene, cams, opt, so);
+    res = vf::sweep(terrain, cams, opt, so);
   }
   progress.finish();
   const double elapsed = progress.elapsed();
@@ -140,14 +141,14 @@ int runSweep(const SweepArgs& a) {
   std::string text;
   if (talk) {
     char buf[256];
-    text += "\n== " + label + ": lod.adjacency_clamp = " + vf::toString(scene.lod.adjacencyClamp) +
-            (scene.lod.adjacencyClamp == vf::AdjacencyClamp::Pow2 ? " (the power-of-two workaround on)" : "") + " ==\n";
+    text += "\n== " + label + ": lod.adjacency_clamp = " + vf::toString(scene.lod.screenSphere.clamp) +
+            (scene.lod.screenSphere.clamp == vf::AdjacencyClamp::Pow2 ? " (the power-of-two workaround on)" : "") + " ==\n";
     for (const std::string& s : overridesOf(a)) text += "  --set " + s + "\n";
     std::snprintf(buf, sizeof buf, "  cameras        %zu of %zu%s (%s, %.1f s, %s threads)\n", res.camerasDone,
                   cams.size(), res.cancelled ? " (interrupted)" : "", how.c_str(), elapsed,
                   a.threads > 0 ? std::to_string(a.threads).c_str() : "all");
     text += buf;
-    text += "  adjacency      " + std::string(vf::toString(scene.lod.adjacencyClamp)) + " clamp, " +
+    text += "  adjacency      " + std::string(vf::toString(scene.lod.screenSphere.clamp)) + " clamp, " +
             toString(scene.partitioning) + " partitioning\n";
     text += statsText(res.total);
     std::snprintf(buf, sizeof buf, "  cameras with cracks %zu, with T-junctions only %zu\n", crackCameras, tjCameras);
@@ -184,7 +185,7 @@ int runSweep(const SweepArgs& a) {
   if (!a.svg.empty()) {
     std::vector<size_t> firsts;
     for (const std::string& k : order) firsts.push_back(causes.at(k).first);
-    writeReport(a.svg, sweepSvg(scene, cams, res, firsts, a.random > 0, "fftess sweep " + a.scene));
+    writeReport(a.svg, sweepSvg(terrain, cams, res, firsts, a.random > 0, "fftess sweep " + a.scene));
   }
   writeStdout(text);
   return status;

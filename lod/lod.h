@@ -70,7 +70,7 @@ enum class InsideRule : uint8_t { Average, Min, Max };
 // ---------------------------------------------------------------------------------------------------------------
 // Outputs: factors plus the reason for each.
 
-enum class Scheme : uint8_t { ScreenSphere, NvidiaTile, DistancePow2, Bonaventura, ClipDiameter, Geomorph };
+enum class Scheme : uint8_t { ScreenSphere, NvidiaTile, DistancePow2, Bonaventura, ClipDiameter, Geomorph, PatchCenter };
 
 // Bits of FactorWhy::fixes: which clamp, fix or literal-source switch changed a factor.
 enum Fix : uint32_t {
@@ -124,6 +124,11 @@ struct ScreenSphereParams {
 };
 
 PatchLod screenSphere(const Patch& patch, const Camera& camera, const ScreenSphereParams& params = {});
+
+// 1b. Deliberately broken (a negative control for the verifier; lod/shaders/screen_sphere.glsl patchCenterLod):
+// screenSphere, but every edge's sphere is centred on the patch centre ((c0 + c1 + c2 + c3) * 0.25) instead of the
+// edge midpoint, with the edge's direction and length. Two patches sharing an edge disagree on its factor.
+PatchLod patchCenter(const Patch& patch, const Camera& camera, const ScreenSphereParams& params = {});
 
 // ---------------------------------------------------------------------------------------------------------------
 // 2. Non-uniform patches in tile rings (same sample). Tiles of 8x8 patches in concentric rings, each ring doubling
@@ -279,7 +284,8 @@ GeomorphEdge geomorphEdgeHeights(float level, float neighbourLevel, const float 
 
 // ---------------------------------------------------------------------------------------------------------------
 // Printing helpers for the CLI.
-const char* schemeName(Scheme scheme);   // "screen-sphere", "nvidia-tile", "distance-pow2", "bonaventura", ...
+const char* schemeName(Scheme scheme);   // "screen-sphere", "nvidia-tile", "distance-pow2", "bonaventura", ...,
+                                         // "patch-center"
 const char* fixName(Fix fix);            // one bit's name, "" for FixNone or several bits
 
 // The shader sources, in the order GLSL needs them concatenated (common first): for a GPU port or an oracle.

@@ -31,6 +31,8 @@ const char* schemeName(Scheme scheme) {
     return "clip-diameter";
   case Scheme::Geomorph:
     return "geomorph";
+  case Scheme::PatchCenter:
+    return "patch-center";
   }
   return "";
 }

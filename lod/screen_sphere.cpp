@@ -12,3 +12,14 @@ PatchLod screenSphere(const Patch& patch, const Camera& camera, const ScreenSphe
 }
 
 } // namespace fftess::lod
+
+namespace fftess::lod {
+
+PatchLod patchCenter(const Patch& patch, const Camera& camera, const ScreenSphereParams& params) {
+  const glm::vec3* c = patch.corners;
+  glsl::LodResult r = glsl::patchCenterLod(c[0], c[1], c[2], c[3], patch.useHeightBounds, patch.minHeight,
+                                           patch.maxHeight, detail::toGlsl(camera), detail::toGlsl(params));
+  return detail::fromGlsl(r, Scheme::PatchCenter);
+}
+
+} // namespace fftess::lod

@@ -9,11 +9,11 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-Camera like(const Scene& s, Vec3 eye, Vec3 target) {
-  Camera c = s.camera;
+Camera like(const Terrain& t, glm::vec3 eye, glm::vec3 target) {
+  Camera c = t.scene().camera;
   c.eye = eye;
   c.target = target;
-  c.up = Vec3{0, 1, 0};
+  c.up = glm::vec3{0, 1, 0};
   return c;
 }
 
@@ -21,8 +21,8 @@ struct Geometry {
   double cx, cz, size;
 };
 
-Geometry geometry(const Scene& s) {
-  const Extent e = terrainExtent(s);
+Geometry geometry(const Terrain& t) {
+  const Extent& e = t.extent();
   return {0.5 * (double(e.minX) + e.maxX), 0.5 * (double(e.minZ) + e.maxZ),
           std::fmax(double(e.maxX) - e.minX, double(e.maxZ) - e.minZ)};
 }
@@ -41,40 +41,41 @@ struct Rng {
 
 } // namespace
 
-std::vector<Camera> pathCameras(const Scene& scene) {
+std::vector<Camera> pathCameras(const Terrain& terrain) {
+  const Scene& scene = terrain.scene();
   if (!scene.cameraPath.empty()) return scene.cameraPath;
   return {scene.camera};
 }
 
-std::vector<Camera> orbitCameras(const Scene& scene, int count, float radius, float height) {
-  const Geometry g = geometry(scene);
+std::vector<Camera> orbitCameras(const Terrain& terrain, int count, float radius, float height) {
+  const Geometry g = geometry(terrain);
   const double r = radius > 0 ? radius : 0.5 * g.size;
   const double h = height > 0 ? height : 0.25 * r;
   std::vector<Camera> out;
   for (int i = 0; i < count; ++i) {
     const double a = 2 * kPi * i / std::max(count, 1);
-    out.push_back(like(scene, Vec3{float(g.cx + r * std::cos(a)), float(h), float(g.cz + r * std::sin(a))},
-                       Vec3{float(g.cx), 0.0f, float(g.cz)}));
+    out.push_back(like(terrain, glm::vec3{float(g.cx + r * std::cos(a)), float(h), float(g.cz + r * std::sin(a))},
+                       glm::vec3{float(g.cx), 0.0f, float(g.cz)}));
   }
   return out;
 }
 
-std::vector<Camera> flyoverCameras(const Scene& scene, int count, float height) {
-  const Geometry g = geometry(scene);
-  const double h = height > 0 ? height : 0.02 * g.size + std::fabs(double(scene.displacement.heightScale));
+std::vector<Camera> flyoverCameras(const Terrain& terrain, int count, float height) {
+  const Geometry g = geometry(terrain);
+  const double h = height > 0 ? height : 0.02 * g.size + std::fabs(double(terrain.scene().displacement.heightScale));
   std::vector<Camera> out;
   const double half = 0.5 * g.size, step = 0.05 * g.size;
   for (int i = 0; i < count; ++i) {
     const double s = count > 1 ? double(i) / (count - 1) : 0.5;
     const double x = g.cx - half + s * g.size, z = g.cz - half + s * g.size;
-    out.push_back(like(scene, Vec3{float(x), float(h), float(z)},
-                       Vec3{float(x + step), float(h - 0.3 * step), float(z + step)}));
+    out.push_back(like(terrain, glm::vec3{float(x), float(h), float(z)},
+                       glm::vec3{float(x + step), float(h - 0.3 * step), float(z + step)}));
   }
   return out;
 }
 
-std::vector<Camera> randomCameras(const Scene& scene, int count, uint64_t seed) {
-  const Geometry g = geometry(scene);
+std::vector<Camera> randomCameras(const Terrain& terrain, int count, uint64_t seed) {
+  const Geometry g = geometry(terrain);
   Rng rng{seed};
   std::vector<Camera> out;
   for (int i = 0; i < count; ++i) {
@@ -84,10 +85,10 @@ std::vector<Camera> randomCameras(const Scene& scene, int count, uint64_t seed) 
     const double yaw = rng.uniform() * 2 * kPi;
     const double pitch = -rng.uniform() * kPi / 3;
     const double d = 0.05 * g.size;
-    const Vec3 eye{float(x), float(h), float(z)};
-    Vec3 target{float(x + d * std::cos(pitch) * std::cos(yaw)), float(h + d * std::sin(pitch)),
+    const glm::vec3 eye{float(x), float(h), float(z)};
+    glm::vec3 target{float(x + d * std::cos(pitch) * std::cos(yaw)), float(h + d * std::sin(pitch)),
                 float(z + d * std::cos(pitch) * std::sin(yaw))};
-    out.push_back(like(scene, eye, target));
+    out.push_back(like(terrain, eye, target));
   }
   return out;
 }

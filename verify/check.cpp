@@ -10,24 +10,20 @@ namespace fftess::verify::detail {
 
 namespace {
 
-constexpr int kEdgeCorners[4][2] = {{0, 2}, {0, 1}, {1, 3}, {2, 3}};
-constexpr int kOpposite[4] = {Ueq1, Veq1, Ueq0, Veq0};
+bool sameBits(const glm::vec3& a, const glm::vec3& b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
 
-bool sameBits(const Vec3& a, const Vec3& b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
-
-bool finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
-
-// Pixels covered by a world-space length at a point, for the camera (0 at or behind the eye plane).
-double toPixels(const Camera& c, const Vec3& at, double world) {
-  double fx = double(c.target.x) - c.eye.x, fy = double(c.target.y) - c.eye.y, fz = double(c.target.z) - c.eye.z;
-  const double len = std::sqrt(fx * fx + fy * fy + fz * fz);
-  const double depth = ((at.x - double(c.eye.x)) * fx + (at.y - double(c.eye.y)) * fy + (at.z - double(c.eye.z)) * fz) / len;
-  if (!(depth > 0)) return 0;
-  const double focal = 0.5 * c.height / std::tan(0.5 * double(c.fovY) * 3.14159265358979323846 / 180.0);
-  return world * focal / depth;
-}
+bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 } // namespace
+
+const EdgePoints& EdgeCache::get(float factor, WorkStats& work) {
+  uint32_t bits;
+  std::memcpy(&bits, &factor, sizeof bits);
+  auto it = map_.find(bits);
+  if (it != map_.end()) return it->second;
+  ++work.edgeQueries;
+  return map_.emplace(bits, edgePoints(factor, partitioning_, stage_, options_)).first->second;
+}
 
 bool validateCamera(const Camera& c, std::string& error) {
   if (!finite(c.eye)) return error = "camera.eye: not finite", false;
@@ -45,26 +41,27 @@ bool validateCamera(const Camera& c, std::string& error) {
   return true;
 }
 
-Report checkTerrain(const Terrain& t, const Camera& camera, const CheckOptions& options, EdgeCache& cache) {
+Report checkTerrain(const TerrainData& t, const Camera& camera, const CheckOptions& options, EdgeCache& cache) {
   Report rep;
   if (!validateCamera(camera, rep.error)) return rep;
   const size_t n = t.patches.size();
   rep.stats.patches = static_cast<int64_t>(n);
 
-  std::vector<PatchFactors> factors;
-  computeFactors(t, camera, factors);
+  std::vector<lod::PatchLod> factors;
+  computeFactors(t, camera, factors, rep.work);
+  const lod::Camera lodCamera = toLodCamera(camera);
 
   std::vector<std::array<const EdgePoints*, 4>> ep(n);
   std::vector<char> culled(n, 0);
   for (size_t i = 0; i < n; ++i) {
     for (int e = 0; e < 4; ++e) {
-      ep[i][e] = &cache.get(factors[i].f[e]);
+      ep[i][e] = &cache.get(factors[i].factors[e], rep.work);
       if (ep[i][e]->culled) culled[i] = 1;
     }
     rep.stats.culledPatches += culled[i];
   }
 
-  std::vector<Vec3> fullA, pb;
+  std::vector<glm::vec3> fullA, pb;
   std::vector<DomainPoint> domA;
   for (size_t ia = 0; ia < n; ++ia) {
     const TerrainPatch& A = t.patches[ia];
@@ -97,7 +94,7 @@ Report checkTerrain(const Terrain& t, const Camera& camera, const CheckOptions& 
           domA.resize(pa.count);
           for (int j = 0; j < pa.count; ++j) {
             domA[j] = edgeDomain(e, pa.param[j]);
-            fullA[j] = evalDomain(t, A, domA[j].u, domA[j].v);
+            fullA[j] = evalDomain(t, A, domA[j].u, domA[j].v, rep.work);
           }
           fullDone = true;
         }
@@ -116,14 +113,15 @@ Report checkTerrain(const Terrain& t, const Camera& camera, const CheckOptions& 
         pb.resize(pbp.count);
         for (int j = 0; j < pbp.count; ++j) {
           const DomainPoint d = edgeDomain(eb, pbp.param[j]);
-          pb[j] = evalDomain(t, B, d.u, d.v);
+          pb[j] = evalDomain(t, B, d.u, d.v, rep.work);
         }
-        const Vec3* a = fullA.data() + first;
+        const glm::vec3* a = fullA.data() + first;
         bool match = na == pbp.count;
         for (int j = 0; match && j < na; ++j) match = sameBits(a[j], pb[j]);
 
         ++rep.stats.edgesChecked;
         ExactVerdict v;
+        if (!match) ++rep.work.cgalCalls;
         if (!match) v = classifyExact(options.kernel, a, na, fullA.data(), pa.count, pb.data(), pbp.count);
         switch (v.classification) {
         case Classification::Match: ++rep.stats.matches; break;
@@ -137,13 +135,17 @@ Report checkTerrain(const Terrain& t, const Camera& camera, const CheckOptions& 
         }
         Finding f;
         f.classification = v.classification;
-        f.partitioning = t.scene->partitioning;
+        f.partitioning = t.scene.partitioning;
         auto fillSide = [&](EdgeSide& s, const TerrainPatch& P, int edge, const EdgePoints& E, int pi) {
           s.patch = P.ref;
           s.edge = edge;
-          s.hullFactor = factors[pi].f[edge];
+          s.hullFactor = factors[pi].factors[edge];
+          std::memcpy(&s.hullFactorBits, &s.hullFactor, sizeof s.hullFactorBits);
           s.processedFactor = E.processedFactor;
           s.culled = culled[pi] != 0;
+          s.lod.why = factors[pi].why.factor[edge];
+          s.lod.culled = factors[pi].why.culled;
+          neighbourRule(t, P, edge, s.lod);
         };
         fillSide(f.a, A, e, pa, static_cast<int>(ia));
         fillSide(f.b, B, eb, pbp, ib);
@@ -169,7 +171,7 @@ Report checkTerrain(const Terrain& t, const Camera& camera, const CheckOptions& 
           f.gapWorld = v.gap;
           f.gapSide = v.gapSide;
           f.gapVertex = v.gapSide == 0 ? a[v.gapIndex] : pb[v.gapIndex];
-          f.gapPixels = toPixels(camera, f.gapVertex, f.gapWorld);
+          f.gapPixels = pixelsAt(lodCamera, f.gapVertex, f.gapWorld);
           rep.stats.worstGapWorld = std::max(rep.stats.worstGapWorld, f.gapWorld);
           rep.stats.worstGapPixels = std::max(rep.stats.worstGapPixels, f.gapPixels);
         }
@@ -184,12 +186,10 @@ Report checkTerrain(const Terrain& t, const Camera& camera, const CheckOptions& 
 
 namespace fftess::verify {
 
-Report checkScene(const Scene& scene, const Camera& camera, const CheckOptions& options) {
-  detail::Terrain t;
-  Report rep;
-  if (!detail::buildTerrain(scene, t, rep.error)) return rep;
+Report checkScene(const Terrain& terrain, const Camera& camera, const CheckOptions& options) {
+  const Scene& scene = terrain.scene();
   detail::EdgeCache cache(scene.partitioning, scene.stage, options.tessellator);
-  return detail::checkTerrain(t, camera, options, cache);
+  return detail::checkTerrain(terrain.data(), camera, options, cache);
 }
 
 std::vector<PatchEdgeRef> flaggedPatchEdges(const Report& report) {

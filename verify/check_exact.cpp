@@ -23,7 +23,7 @@ struct Classifier {
   using S = typename K::Segment_3;
   using FT = typename K::FT;
 
-  static P toPoint(const Vec3& v) { return P(v.x, v.y, v.z); }
+  static P toPoint(const glm::vec3& v) { return P(v.x, v.y, v.z); }
 
   static bool onPolyline(const P& p, const std::vector<P>& poly) {
     for (const P& q : poly)
@@ -47,7 +47,7 @@ struct Classifier {
     return best;
   }
 
-  static ExactVerdict run(const Vec3* a, int na, const Vec3* aFull, int naFull, const Vec3* b, int nb) {
+  static ExactVerdict run(const glm::vec3* a, int na, const glm::vec3* aFull, int naFull, const glm::vec3* b, int nb) {
     std::vector<P> A, AF, B;
     A.reserve(na);
     AF.reserve(naFull);
@@ -86,7 +86,7 @@ struct Classifier {
 
 } // namespace
 
-ExactVerdict classifyExact(Kernel kernel, const Vec3* a, int na, const Vec3* aFull, int naFull, const Vec3* b,
+ExactVerdict classifyExact(Kernel kernel, const glm::vec3* a, int na, const glm::vec3* aFull, int naFull, const glm::vec3* b,
                            int nb) {
   if (na == 0 || nb == 0 || naFull == 0) return {};
   switch (kernel) {

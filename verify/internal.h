@@ -27,47 +27,63 @@ bool readRawHeightmap(const std::string& path, int width, int height, int bits, 
 float sampleBilinear(const Displacement& d, float tx, float tz);
 
 // ---------------------------------------------------------------------------------------------------------------
-// terrain.cpp
+// layout.cpp: the prepared terrain.
 
 struct TerrainPatch {
   PatchRef ref;
   int64_t ux = 0, uz = 0;       // lower corner in base units (smallest patch size) from the terrain's min corner
   int64_t size = 1;             // in base units (2^level)
-  Vec3 corners[4];              // flat corners (y = 0), corners[u + 2v] (lod.h's convention)
+  glm::vec3 corners[4];         // flat corners (y = 0), corners[u + 2v] (lod.h's convention)
   float tex[4][2];              // corner texture coordinates (domain.height_uv = interpolated)
   // Neighbours across each edge (FactorIndex order): up to two patch indices, -1 where none.
   std::array<std::array<int, 2>, 4> nb{{{-1, -1}, {-1, -1}, {-1, -1}, {-1, -1}}};
+  lod::Patch lod;               // what lod/ sees: corners raised to their heights (lod.displaced_corners), bounds
+  lod::TileNeighbours tile;     // tile rings with adjacency: sizes across each edge, parity, far corners
 };
 
-struct Terrain {
-  const Scene* scene = nullptr;
+struct TerrainData {
+  Scene scene;
   std::vector<TerrainPatch> patches;
+  std::vector<PatchGeometry> geometry; // the public view of patches
   Extent extent;
   float invSizeX = 1, invSizeZ = 1; // 1 / extent size, float
   int64_t unitsX = 0, unitsZ = 0;   // extent in base units
   double unit = 1;                  // world size of a base unit
   bool adjacency = false;           // patches of different sizes exist (tile rings with rings > 1)
+  WorkStats work;                   // the build's work
 };
 
-// Builds the layout: patches, corners, neighbours. The scene must be valid (loadScene validated it).
-bool buildTerrain(const Scene& scene, Terrain& out, std::string& error);
+// Corner indices (lod.h convention) of each edge: Ueq0 = 0-2, Veq0 = 0-1, Ueq1 = 1-3, Veq1 = 2-3.
+constexpr int kEdgeCorners[4][2] = {{0, 2}, {0, 1}, {1, 3}, {2, 3}};
+constexpr int kOpposite[4] = {Ueq1, Veq1, Ueq0, Veq0};
 
-// Domain-shader emulation: world position of (u, v) on patch p.
-Vec3 evalDomain(const Terrain& t, const TerrainPatch& p, float u, float v);
+// ---------------------------------------------------------------------------------------------------------------
+// domain.cpp: the domain-shader emulation.
 
-// Hull-shader factors of every patch for a camera: 6 factors per patch (lod.h order) plus whether the LOD culled it.
-struct PatchFactors {
-  float f[6];
-};
-void computeFactors(const Terrain& t, const Camera& camera, std::vector<PatchFactors>& out);
+// Height of the displacement at world (x, z) as the vertex and domain shaders sample it (NVIDIA: texture
+// coordinate from world x/z over the extent). Displacement must not be None.
+float heightAt(const TerrainData& t, float x, float z);
+// World position of (u, v) on patch p. Adds one to work.domainEvaluations and, when displaced, work.heightSamples.
+glm::vec3 evalDomain(const TerrainData& t, const TerrainPatch& p, float u, float v, WorkStats& work);
+
+// ---------------------------------------------------------------------------------------------------------------
+// lod_bridge.cpp: the scene's LOD settings -> lod/ calls, per camera.
 
 lod::Camera toLodCamera(const Camera& c);
+// Hull-shader factors and lod/'s record of every patch for a camera (lod.h order). Adds the lod/ calls to
+// work.lodEvaluations. Constant scheme: every factor lod.factor, an empty record.
+void computeFactors(const TerrainData& t, const Camera& camera, std::vector<lod::PatchLod>& out, WorkStats& work);
+// The neighbour rule of edge e of patch p as the LOD applied it (EdgeLod's neighbourSize, clamp, reconstruction).
+void neighbourRule(const TerrainData& t, const TerrainPatch& p, int e, EdgeLod& out);
+// A world length at a point in pixels, with lod's projection (see Finding::gapPixels).
+double pixelsAt(const lod::Camera& camera, const glm::vec3& at, double world);
 
 // Edge points cache (per thread): edgePoints() keyed by the factor's bits.
 class EdgeCache {
 public:
   EdgeCache(Partitioning p, const Stage& s, const Options& o) : partitioning_(p), stage_(s), options_(o) {}
-  const EdgePoints& get(float factor);
+  // Adds a miss to work.edgeQueries.
+  const EdgePoints& get(float factor, WorkStats& work);
 
 private:
   Partitioning partitioning_;
@@ -98,13 +114,13 @@ struct ExactVerdict {
 
 // a: side a's points inside the shared part (in order); aFull: side a's whole polyline (a vertex of b is tested
 // against it); b: side b's points (all of them are in the shared part). All in the same direction.
-ExactVerdict classifyExact(Kernel kernel, const Vec3* a, int na, const Vec3* aFull, int naFull, const Vec3* b,
+ExactVerdict classifyExact(Kernel kernel, const glm::vec3* a, int na, const glm::vec3* aFull, int naFull, const glm::vec3* b,
                            int nb);
 
 // ---------------------------------------------------------------------------------------------------------------
 // check.cpp
 
-Report checkTerrain(const Terrain& t, const Camera& camera, const CheckOptions& options, EdgeCache& cache);
+Report checkTerrain(const TerrainData& t, const Camera& camera, const CheckOptions& options, EdgeCache& cache);
 bool validateCamera(const Camera& c, std::string& error);
 
 } // namespace fftess::verify::detail

@@ -45,13 +45,13 @@ unsigned edgeMask(const DomainPoint& d) {
 
 } // namespace
 
-MeshReport checkSceneMesh(const Scene& scene, const Camera& camera, const CheckOptions& options) {
+MeshReport checkSceneMesh(const Terrain& terrain, const Camera& camera, const CheckOptions& options) {
   MeshReport rep;
-  detail::Terrain t;
-  std::string error;
-  if (!detail::buildTerrain(scene, t, error) || !detail::validateCamera(camera, error)) return rep;
-  std::vector<detail::PatchFactors> factors;
-  detail::computeFactors(t, camera, factors);
+  const detail::TerrainData& t = terrain.data();
+  const Scene& scene = t.scene;
+  if (!detail::validateCamera(camera, rep.error)) return rep;
+  std::vector<lod::PatchLod> factors;
+  detail::computeFactors(t, camera, factors, rep.work);
 
   const size_t n = t.patches.size();
   std::vector<char> drawn(n, 0);
@@ -65,14 +65,14 @@ MeshReport checkSceneMesh(const Scene& scene, const Camera& camera, const CheckO
     p.partitioning = scene.partitioning;
     p.primitive = OutputPrimitive::TriangleCw;
     p.stage = scene.stage;
-    std::memcpy(p.factors, factors[i].f, sizeof p.factors);
+    std::memcpy(p.factors, factors[i].factors, sizeof p.factors);
     const int count = tess.tessellate(p, options.tessellator);
     if (count == 0) continue;
     drawn[i] = 1;
     ++rep.patchesDrawn;
     const size_t base = points.size();
     for (const DomainPoint& d : tess.points()) {
-      const Vec3 w = detail::evalDomain(t, t.patches[i], d.u, d.v);
+      const glm::vec3 w = detail::evalDomain(t, t.patches[i], d.u, d.v, rep.work);
       points.emplace_back(w.x, w.y, w.z);
       if (unsigned m = edgeMask(d)) where[Key{w.x, w.y, w.z}].push_back({static_cast<int>(i), m});
     }
@@ -82,6 +82,7 @@ MeshReport checkSceneMesh(const Scene& scene, const Camera& camera, const CheckO
                           base + static_cast<size_t>(idx[k + 2])});
   }
   if (polygons.empty()) return rep;
+  ++rep.work.cgalCalls;
 
   PMP::merge_duplicate_points_in_polygon_soup(points, polygons);
   PMP::repair_polygon_soup(points, polygons); // drops polygons with a repeated vertex (zero-area duplicates)

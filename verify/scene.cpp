@@ -343,28 +343,44 @@ void readScene(Reader& r, const toml::table& root, Scene& s, const std::string& 
                    "min_tess", "max_tess", "angle_correction", "rank", "edges_per_screen_height", "frustum_cull",
                    "displaced_corners", "adjacency_clamp", "reconstruction"});
     r.enumeration(t, p, "scheme", kSchemes, L.scheme, true);
-    if (r.number(t, p, "target_pixels", L.targetPixels) && !(L.targetPixels > 0))
+    // Keys several schemes share are read once and set in every parameter struct that has the field.
+    lod::ScreenSphereParams& sphere = L.screenSphere.sphere;
+    if (r.number(t, p, "target_pixels", sphere.tessellatedTriWidth) && !(sphere.tessellatedTriWidth > 0))
       r.fail(p + "target_pixels", t.get("target_pixels"), "must be > 0");
     r.number(t, p, "factor", L.factor);
-    r.number(t, p, "min_factor", L.minFactor);
-    r.number(t, p, "max_factor", L.maxFactor);
-    if (L.minFactor > L.maxFactor)
+    float minFactor = sphere.minFactor, maxFactor = sphere.maxFactor;
+    r.number(t, p, "min_factor", minFactor);
+    r.number(t, p, "max_factor", maxFactor);
+    if (minFactor > maxFactor)
       r.fail(p + "max_factor", t.get("max_factor") ? t.get("max_factor") : t.get("min_factor"), "must be >= lod.min_factor");
-    r.number(t, p, "min_distance", L.minDistance);
-    r.number(t, p, "max_distance", L.maxDistance);
-    if (!(L.maxDistance > L.minDistance))
+    sphere.minFactor = L.bonaventura.minFactor = L.clipDiameter.minFactor = minFactor;
+    sphere.maxFactor = L.bonaventura.maxFactor = L.clipDiameter.maxFactor = maxFactor;
+    float minDistance = L.distancePow2.minDistance, maxDistance = L.distancePow2.maxDistance;
+    r.number(t, p, "min_distance", minDistance);
+    r.number(t, p, "max_distance", maxDistance);
+    if (!(maxDistance > minDistance))
       r.fail(p + "max_distance", t.get("max_distance") ? t.get("max_distance") : t.get("min_distance"),
              "must be > lod.min_distance");
-    r.number(t, p, "min_tess", L.minTess);
-    r.number(t, p, "max_tess", L.maxTess);
-    r.boolean(t, p, "angle_correction", L.angleCorrection);
-    if (r.number(t, p, "rank", L.rank) && !(L.rank >= 0 && L.rank <= 2)) r.fail(p + "rank", t.get("rank"), "must be in [0, 2]");
-    if (r.number(t, p, "edges_per_screen_height", L.edgesPerScreenHeight) && !(L.edgesPerScreenHeight > 0))
+    L.distancePow2.minDistance = L.bonaventura.minDistance = minDistance;
+    L.distancePow2.maxDistance = L.bonaventura.maxDistance = maxDistance;
+    float minTess = L.distancePow2.minTessExponent, maxTess = L.distancePow2.maxTessExponent;
+    r.number(t, p, "min_tess", minTess);
+    r.number(t, p, "max_tess", maxTess);
+    L.distancePow2.minTessExponent = L.bonaventura.minExponent = minTess;
+    L.distancePow2.maxTessExponent = L.bonaventura.maxExponent = maxTess;
+    r.boolean(t, p, "angle_correction", L.bonaventura.angleCorrection);
+    if (r.number(t, p, "rank", L.bonaventura.rank) && !(L.bonaventura.rank >= 0 && L.bonaventura.rank <= 2))
+      r.fail(p + "rank", t.get("rank"), "must be in [0, 2]");
+    if (r.number(t, p, "edges_per_screen_height", L.clipDiameter.edgesPerScreenHeight) &&
+        !(L.clipDiameter.edgesPerScreenHeight > 0))
       r.fail(p + "edges_per_screen_height", t.get("edges_per_screen_height"), "must be > 0");
-    r.boolean(t, p, "frustum_cull", L.frustumCull);
+    bool frustumCull = sphere.frustumCull;
+    r.boolean(t, p, "frustum_cull", frustumCull);
+    sphere.frustumCull = L.distancePow2.frustumCull = L.bonaventura.frustumCull = L.clipDiameter.frustumCull =
+        frustumCull;
     r.boolean(t, p, "displaced_corners", L.displacedCorners);
-    r.enumeration(t, p, "adjacency_clamp", kClamps, L.adjacencyClamp);
-    r.enumeration(t, p, "reconstruction", kReconstructions, L.reconstruction);
+    r.enumeration(t, p, "adjacency_clamp", kClamps, L.screenSphere.clamp);
+    r.enumeration(t, p, "reconstruction", kReconstructions, L.screenSphere.reconstruction);
   }
 
   // [tessellation]
@@ -524,6 +540,7 @@ const char* toString(LayoutKind k) { return nameOf(kLayoutKinds, int(k)); }
 const char* toString(DisplacementKind k) { return nameOf(kDisplacementKinds, int(k)); }
 const char* toString(LodScheme s) { return nameOf(kSchemes, int(s)); }
 const char* toString(AdjacencyClamp c) { return nameOf(kClamps, int(c)); }
+const char* toString(lod::Reconstruction r) { return nameOf(kReconstructions, int(r)); }
 const char* toString(LerpFormula f) { return nameOf(kFormulas, int(f)); }
 const char* toString(Kernel k) { return nameOf(kKernels, int(k)); }
 bool parseKernel(const char* s, Kernel& out) {

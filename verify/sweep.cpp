@@ -7,21 +7,20 @@
 
 namespace fftess::verify {
 
-SweepResult sweep(const Scene& scene, const std::vector<Camera>& cameras, const CheckOptions& options,
+SweepResult sweep(const Terrain& terrain, const std::vector<Camera>& cameras, const CheckOptions& options,
                   const SweepOptions& sweepOptions) {
   SweepResult out;
   out.cameras.resize(cameras.size());
   if (sweepOptions.keepReports) out.reports.resize(cameras.size());
   for (size_t i = 0; i < cameras.size(); ++i) out.cameras[i].cameraIndex = i;
 
-  detail::Terrain terrain;
-  std::string error;
-  if (!detail::buildTerrain(scene, terrain, error)) return out;
+  const Scene& scene = terrain.scene();
 
   int threads = sweepOptions.threads > 0 ? sweepOptions.threads
                                          : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   threads = static_cast<int>(std::min<size_t>(static_cast<size_t>(threads), std::max<size_t>(cameras.size(), 1)));
 
+  std::vector<WorkStats> work(cameras.size());
   std::atomic<size_t> next{0};
   std::mutex mutex; // serialises the onReport and progress callbacks
   size_t done = 0;
@@ -31,10 +30,11 @@ SweepResult sweep(const Scene& scene, const std::vector<Camera>& cameras, const 
       if (sweepOptions.cancel && sweepOptions.cancel->load()) return;
       const size_t i = next.fetch_add(1);
       if (i >= cameras.size()) return;
-      Report rep = detail::checkTerrain(terrain, cameras[i], options, cache);
+      Report rep = detail::checkTerrain(terrain.data(), cameras[i], options, cache);
       CameraResult& cr = out.cameras[i];
       cr.done = rep.error.empty();
       cr.stats = rep.stats;
+      work[i] = rep.work;
       for (const Finding& f : rep.findings) {
         if (f.classification == Classification::Match) continue;
         if (!cr.hasFinding || f.gapWorld > cr.worst.gapWorld) {
@@ -59,6 +59,7 @@ SweepResult sweep(const Scene& scene, const std::vector<Camera>& cameras, const 
   for (const CameraResult& cr : out.cameras) {
     if (!cr.done) continue;
     ++out.camerasDone;
+    out.work += work[cr.cameraIndex];
     Stats& s = out.total;
     s.patches += cr.stats.patches;
     s.culledPatches += cr.stats.culledPatches;

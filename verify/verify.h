@@ -20,6 +20,8 @@
 #include "lod/lod.h"
 #include "tessellator/tessellator.h"
 
+#include <glm/glm.hpp>
+
 #include <atomic>
 #include <cstdint>
 #include <functional>
@@ -28,10 +30,6 @@
 #include <vector>
 
 namespace fftess::verify {
-
-struct Vec3 {
-  float x = 0, y = 0, z = 0;
-};
 
 // ---------------------------------------------------------------------------------------------------------------
 // Scene model. Every field has the default the scene format documents (docs/verify.md); the TOML key is named in
@@ -98,38 +96,47 @@ struct Displacement {
 };
 
 enum class LodScheme : uint8_t {
-  Constant,       // "constant": every edge gets lod.factor (no camera)
+  Constant,       // "constant": every edge gets lod.factor (no camera, no lod/ call)
   ScreenSphere,   // "screen_sphere": NVIDIA (lod::screenSphere; on tile rings lod::nvidiaTile with the adjacency
                   // fix and lod.adjacency_clamp)
   DistancePow2,   // "distance_pow2": Luna/Richards (lod::distancePow2)
   Bonaventura,    // "bonaventura": rounded-exponent pow2 with camera-angle correction (lod::bonaventura)
   ClipDiameter,   // "clip_diameter": clip-space sphere diameter (lod::clipDiameter)
-  PatchCenter,    // "patch_center": deliberately broken: screen_sphere, but every edge's sphere sits at the patch
-                  // centre instead of the edge midpoint (neighbours disagree)
+  PatchCenter,    // "patch_center": deliberately broken (lod::patchCenter): screen_sphere, but every edge's sphere
+                  // sits at the patch centre instead of the edge midpoint (neighbours disagree)
 };
 
 // Clamp applied where a patch meets a neighbour of a different size (lod.adjacency_clamp = "none" | "integer" |
 // "pow2"; tile rings with screen_sphere only). See lod.h.
 using AdjacencyClamp = lod::AdjacencyClamp;
 
+// The scene's LOD: lod/'s own parameter structs, handed to lod/ as they are (no copies in between). A TOML key that
+// several schemes share sets the field in each struct that has it (the parser does that, once). Defaults are
+// lod.h's, except where a comment says otherwise.
 struct Lod {
   LodScheme scheme = LodScheme::ScreenSphere; // lod.scheme
-  float targetPixels = 3;        // lod.target_pixels (> 0): screen_sphere, patch_center (tessellatedTriWidth)
-  float factor = 8;              // lod.factor: constant
-  float minFactor = 1;           // lod.min_factor: screen_sphere, patch_center, bonaventura, clip_diameter
-  float maxFactor = 64;          // lod.max_factor (>= min_factor)
-  float minDistance = 20;        // lod.min_distance: distance_pow2, bonaventura
-  float maxDistance = 500;       // lod.max_distance (> min_distance)
-  float minTess = 0;             // lod.min_tess: exponent at max_distance (distance_pow2, bonaventura)
-  float maxTess = 6;             // lod.max_tess: exponent at min_distance
-  bool angleCorrection = true;   // lod.angle_correction: bonaventura
-  float rank = 0.5f;             // lod.rank (0..2): bonaventura
-  float edgesPerScreenHeight = 16; // lod.edges_per_screen_height (> 0): clip_diameter
-  bool frustumCull = true;       // lod.frustum_cull: schemes that cull (all but constant and clip_diameter)
+  float factor = 8;                           // lod.factor: constant
+  // screen_sphere, patch_center. sphere.tessellatedTriWidth = lod.target_pixels (> 0); sphere.minFactor,
+  // sphere.maxFactor = lod.min_factor, lod.max_factor (min <= max); sphere.frustumCull = lod.frustum_cull;
+  // clamp = lod.adjacency_clamp; reconstruction = lod.reconstruction ("edge_vector" | "far_corner": how the small
+  // side rebuilds its big neighbour's edge). clamp and reconstruction apply on tile rings only (lod::nvidiaTile).
+  lod::NvidiaTileParams screenSphere{};
+  // distance_pow2: minDistance, maxDistance = lod.min_distance, lod.max_distance (max > min); minTessExponent,
+  // maxTessExponent = lod.min_tess, lod.max_tess; frustumCull = lod.frustum_cull.
+  lod::DistancePow2Params distancePow2{};
+  // bonaventura: the distances as distance_pow2; minExponent, maxExponent = lod.min_tess, lod.max_tess;
+  // angleCorrection = lod.angle_correction; rank = lod.rank (0..2); minFactor, maxFactor; frustumCull.
+  lod::BonaventuraParams bonaventura{};
+  // clip_diameter: edgesPerScreenHeight = lod.edges_per_screen_height (> 0); minFactor, maxFactor; frustumCull =
+  // lod.frustum_cull, which defaults to true here (lod.h's default for the scheme alone is false).
+  lod::ClipDiameterParams clipDiameter = sceneClipDiameter();
   bool displacedCorners = true;  // lod.displaced_corners: corners raised to their height for the LOD (NVIDIA VS)
-  AdjacencyClamp adjacencyClamp = AdjacencyClamp::Pow2; // lod.adjacency_clamp
-  lod::Reconstruction reconstruction = lod::Reconstruction::EdgeVector; // lod.reconstruction: "edge_vector" |
-                                 // "far_corner" (how the small side rebuilds its big neighbour's edge)
+
+  static lod::ClipDiameterParams sceneClipDiameter() {
+    lod::ClipDiameterParams p;
+    p.frustumCull = true;
+    return p;
+  }
 };
 
 // Domain-shader interpolation of the patch corners (domain.formula). lerp(a, b, t):
@@ -161,9 +168,9 @@ struct DomainShader {
 
 // A camera. fovY in degrees, viewport in pixels.
 struct Camera {
-  Vec3 eye{0, 40, -60};      // camera.eye (finite)
-  Vec3 target{0, 0, 0};      // camera.target (finite, != eye)
-  Vec3 up{0, 1, 0};          // camera.up (finite, not parallel to target - eye)
+  glm::vec3 eye{0, 40, -60}; // camera.eye (finite)
+  glm::vec3 target{0, 0, 0}; // camera.target (finite, != eye)
+  glm::vec3 up{0, 1, 0};     // camera.up (finite, not parallel to target - eye)
   float fovY = 60;           // camera.fov_y in (0, 180)
   float nearZ = 0.1f;        // camera.near (> 0)
   float farZ = 10000;        // camera.far (> near)
@@ -202,6 +209,95 @@ SceneResult parseScene(const std::string& text, const std::string& sourceName = 
                        const std::vector<std::string>& overrides = {}, const std::string& baseDir = ".");
 
 // ---------------------------------------------------------------------------------------------------------------
+// Work counters. Every function that does work reports it here, so that a test (or `fftess check --json`) can show
+// that camera-independent work runs once per command and per-camera work is only the camera-dependent part.
+struct WorkStats {
+  int64_t terrainBuilds = 0;     // layouts built (prepareTerrain): 1 in Terrain::stats(), 0 in a camera's report
+  int64_t heightSamples = 0;     // displacement texture samples (corner heights in Terrain::stats(); in a
+                                 // camera's report only the domain shader's, one per displaced domain evaluation)
+  int64_t domainEvaluations = 0; // domain-shader positions computed (edge points, mesh points)
+  int64_t lodEvaluations = 0;    // lod/ calls (one per patch and camera; none for lod.scheme = "constant")
+  int64_t edgeQueries = 0;       // fftess::edgePoints calls (the per-thread cache's misses)
+  int64_t cgalCalls = 0;         // exact classifications of an edge pair, plus one per whole-mesh CGAL pipeline
+  WorkStats& operator+=(const WorkStats& o);
+};
+
+// Layouts built by prepareTerrain in this process so far (all threads). `fftess check --json` prints the count, so
+// a test can see that one command builds one terrain.
+int64_t terrainBuildCount();
+
+// ---------------------------------------------------------------------------------------------------------------
+// The prepared terrain: everything about the scene that does not depend on the camera, computed once.
+
+struct PatchRef {
+  int index = -1;              // patch number in the layout's order
+  int ring = 0;                // tile ring (0 for grids)
+  int tile = 0;                // tile index in its ring (row-major over the ring's tile grid; 0 for grids)
+  int patch = 0;               // patch index in its tile (row-major; grids: row-major over the grid)
+  int level = 0;               // log2 of the patch size relative to the smallest patch
+};
+
+// One patch: its ref, its four flat corners (y = 0) exactly as the checker and the domain shader use them
+// (layout.corners decides how they are computed), corners[u + 2v]: [0] (u0, v0), [1] (u1, v0), [2] (u0, v1),
+// [3] (u1, v1); and the corner heights the vertex shader computes (displacement sampled at the corner's world x/z;
+// 0 for displacement.kind = "none").
+struct PatchGeometry {
+  PatchRef ref;
+  glm::vec3 corners[4];
+  float heights[4] = {0, 0, 0, 0};
+};
+
+// Terrain extent in x/z: [minX, maxX] x [minZ, maxZ].
+struct Extent {
+  float minX = 0, minZ = 0, maxX = 0, maxZ = 0;
+};
+
+namespace detail {
+struct TerrainData; // verify/internal.h
+}
+struct TerrainResult;
+class Terrain;
+TerrainResult prepareTerrain(const Scene& scene);
+
+// Built by prepareTerrain; cheap to copy (shared, immutable). Holds its own copy of the scene. A default-constructed
+// Terrain is empty (no patches) and must not be passed to the functions below.
+class Terrain {
+public:
+  Terrain() = default;
+  const Scene& scene() const;
+  int patchCount() const;
+  const std::vector<PatchGeometry>& patches() const; // patches()[i] is patch i
+  const Extent& extent() const;
+  // The work of building it: terrainBuilds = 1, heightSamples = the corner heights sampled (4 per patch when
+  // displaced, else 0). Checking never adds to it.
+  const WorkStats& stats() const;
+  bool empty() const { return !data_; }
+  const detail::TerrainData& data() const { return *data_; } // for verify's .cpp files
+
+private:
+  friend TerrainResult prepareTerrain(const Scene& scene);
+  std::shared_ptr<const detail::TerrainData> data_;
+};
+
+// Result of prepareTerrain: a terrain or an error message (the scene is invalid, e.g. built by hand without its
+// displacement texture).
+struct TerrainResult {
+  bool ok = false;
+  Terrain terrain;
+  std::string error;
+  explicit operator bool() const { return ok; }
+};
+
+// Builds the layout (patches, corners, neighbours, the sizes each patch sees across its edges and the far corners
+// of its larger neighbours), samples every corner height once and fixes the LOD's height bounds.
+// scene: from loadScene/parseScene (or built by hand: displacement.texels must be set unless kind is None).
+TerrainResult prepareTerrain(const Scene& scene);
+
+// World position of domain point (u, v) of patch `patchIndex` as the scene's domain shader computes it.
+// patchIndex: 0 .. terrain.patchCount() - 1 (else (0, 0, 0)). u, v in [0, 1].
+glm::vec3 domainPosition(const Terrain& terrain, int patchIndex, float u, float v);
+
+// ---------------------------------------------------------------------------------------------------------------
 // Checking.
 
 enum class Kernel : uint8_t {
@@ -223,12 +319,17 @@ enum class Classification : uint8_t {
   Crack,      // some vertex lies off the other side's polyline: a visible gap
 };
 
-struct PatchRef {
-  int index = -1;              // patch number in the layout's order
-  int ring = 0;                // tile ring (0 for grids)
-  int tile = 0;                // tile index in its ring (row-major over the ring's tile grid; 0 for grids)
-  int patch = 0;               // patch index in its tile (row-major; grids: row-major over the grid)
-  int level = 0;               // log2 of the patch size relative to the smallest patch
+// The LOD's own record for one edge of one patch, as lod/ returned it (nothing guessed afterwards).
+struct EdgeLod {
+  LodScheme scheme = LodScheme::Constant; // the scene's scheme (Constant: lod/ did not run; why is empty)
+  lod::FactorWhy why{};        // metric, unclamped factor, exponent and the fix bits (lod::Fix) of this edge
+  bool culled = false;         // lod/ culled the patch (lod::Why::culled)
+  // The neighbour rule: the neighbour's size relative to this patch as handed to lod::nvidiaTile (0.5: this is
+  // the larger side, 2: the smaller side, which rebuilt the larger edge; 1: same size, or no adjacency code ran),
+  // the clamp applied at the jump and how the larger edge was rebuilt (both meaningful only when size != 1).
+  float neighbourSize = 1;
+  AdjacencyClamp clamp = AdjacencyClamp::None;
+  lod::Reconstruction reconstruction = lod::Reconstruction::EdgeVector;
 };
 
 // One side of a shared edge.
@@ -236,28 +337,37 @@ struct EdgeSide {
   PatchRef patch;
   int edge = 0;                // FactorIndex of the edge in its patch: Ueq0 Veq0 Ueq1 Veq1
   float hullFactor = 0;        // factor the hull shader output (after the adjacency clamp)
+  uint32_t hullFactorBits = 0; // its bits
   float processedFactor = 0;   // after the tessellator's processing (EdgePoints::processedFactor)
-  bool culled = false;         // the patch is culled (some outer factor not > 0)
+  bool culled = false;         // the patch is culled (by the LOD, or by the tessellator: some outer factor not > 0)
+  EdgeLod lod;                 // where hullFactor came from
   float paramLo = 0, paramHi = 1; // the part of this edge that is shared, in its own edge parameter
   int pointCount = 0;          // edge points inside [paramLo, paramHi]
   int firstMismatch = -1;      // index (into those points) of the first vertex that differs, -1 if none
   DomainPoint mismatchDomain{};   // its (u, v)
-  Vec3 mismatchWorld{};           // its world position
+  glm::vec3 mismatchWorld{};      // its world position
 };
 
 struct Finding {
   Classification classification = Classification::Match;
   EdgeSide a;                  // the bigger (or, same size, lower-index) patch
   EdgeSide b;
-  Partitioning partitioning = Partitioning::FractionalEven;
-  Vec3 edgeStart{}, edgeEnd{}; // the shared edge's ends (flat corners, world)
+  Partitioning partitioning = Partitioning::FractionalEven; // the tessellator's partitioning (both sides)
+  glm::vec3 edgeStart{}, edgeEnd{}; // the shared edge's ends (flat corners, world)
   // Crack: the vertex farthest from the other side's polyline and that distance (exact with Epeck; converted to
   // double for printing). T-junction / match: 0.
   double gapWorld = 0;
-  double gapPixels = 0;        // gapWorld projected at the vertex's view depth (0 if at or behind the eye plane)
-  Vec3 gapVertex{};
+  // gapWorld in pixels at the vertex's view depth, with lod's projection (lod::makeCamera): gapWorld *
+  // projection[1][1] * viewport.y / 2 / depth, depth = -(view * vertex).z (0 if at or behind the eye plane).
+  double gapPixels = 0;
+  glm::vec3 gapVertex{};
   int gapSide = 0;             // 0: the vertex is on side a, 1: on side b
 };
+
+// The LOD's record of one side in words: the fix names (lod::fixName, in bit order), then the neighbour rule
+// ("neighbour 2x: rebuilt edge_vector", "neighbour 0.5x") and "culled"; "" when lod/ did not run or changed
+// nothing. For printing; cli prints from the record itself where it needs more.
+std::string lodWords(const EdgeSide& side);
 
 struct Stats {
   int64_t patches = 0;         // patches in the layout
@@ -272,16 +382,17 @@ struct Stats {
 };
 
 struct Report {
-  std::string error;             // non-empty: the scene or camera is invalid and nothing was checked
+  std::string error;             // non-empty: the camera is invalid and nothing was checked
   std::vector<Finding> findings; // non-matching pairs (and matches with keepMatches), in layout order
   bool truncated = false;        // more findings than maxFindings
   Stats stats;
+  WorkStats work;                // this camera's work (camera-dependent only; see Terrain::stats())
 };
 
-// Checks every shared edge of the scene's terrain from one camera.
-// scene: from loadScene/parseScene (or built by hand: displacement.texels must be set unless kind is None).
-// camera: finite values; a camera behind, inside or on a patch is fine (the LOD decides what is culled).
-Report checkScene(const Scene& scene, const Camera& camera, const CheckOptions& options = {});
+// Checks every shared edge of the terrain from one camera.
+// terrain: from prepareTerrain. camera: finite values; a camera behind, inside or on a patch is fine (the LOD
+// decides what is culled); an invalid camera gives Report::error.
+Report checkScene(const Terrain& terrain, const Camera& camera, const CheckOptions& options = {});
 
 // Whole-mesh check: tessellates every patch fully (fftess::Tessellator), builds a CGAL polygon soup, merges
 // exactly-equal points, repairs degenerate polygons, converts it to a CGAL Surface_mesh and lists every border
@@ -296,58 +407,38 @@ struct PatchEdgeRef {
 };
 
 struct MeshReport {
+  std::string error;             // non-empty: the camera is invalid and nothing was checked
   int64_t patchesDrawn = 0;
   int64_t triangles = 0;         // after removing degenerate (repeated-vertex) triangles
   int64_t vertices = 0;          // after merging exactly-equal points
   int64_t borderEdges = 0;       // all border edges
   int64_t innerBorderEdges = 0;  // border edges not on the terrain's outer boundary (cracks and T-junctions)
   std::vector<PatchEdgeRef> flagged; // sorted, unique: patch edges holding an inner border edge
+  WorkStats work;                // this camera's work
 };
 
-MeshReport checkSceneMesh(const Scene& scene, const Camera& camera, const CheckOptions& options = {});
+// terrain: from prepareTerrain; camera as for checkScene.
+MeshReport checkSceneMesh(const Terrain& terrain, const Camera& camera, const CheckOptions& options = {});
 
 // The patch edges of a report's non-matching findings (both sides), sorted and unique: compare with
 // MeshReport::flagged. Needs maxFindings large enough that the report is not truncated.
 std::vector<PatchEdgeRef> flaggedPatchEdges(const Report& report);
 
 // ---------------------------------------------------------------------------------------------------------------
-// Domain-shader emulation, public for tests and `fftess explain`.
-
-// World position of domain point (u, v) of patch `patchIndex` as the scene's domain shader computes it.
-// patchIndex: 0 .. patchCount(scene) - 1.
-Vec3 domainPosition(const Scene& scene, int patchIndex, float u, float v);
-// Patches in the scene's layout, and the reference of one.
-int patchCount(const Scene& scene);
-PatchRef patchRef(const Scene& scene, int patchIndex);
-// Every patch of the layout at once (one terrain build; the per-patch queries above rebuild it on each call):
-// patchGeometry(scene)[i] is patch i, its ref as patchRef(scene, i) and its four flat corners (y = 0) exactly as the
-// checker and domain shader use them (layout.corners decides how they are computed), corners[u + 2v]: [0] (u0, v0),
-// [1] (u1, v0), [2] (u0, v1), [3] (u1, v1). Empty for an invalid scene.
-struct PatchGeometry {
-  PatchRef ref;
-  Vec3 corners[4];
-};
-std::vector<PatchGeometry> patchGeometry(const Scene& scene);
-// Terrain extent in x/z: [minX, maxX] x [minZ, maxZ].
-struct Extent {
-  float minX = 0, minZ = 0, maxX = 0, maxZ = 0;
-};
-Extent terrainExtent(const Scene& scene);
-
-// ---------------------------------------------------------------------------------------------------------------
-// Cameras for sweeps. All return cameras with the scene camera's fov, near, far and viewport.
+// Cameras for sweeps. All return cameras with the scene camera's fov, near, far and viewport; none builds a layout
+// (they read terrain.extent()).
 
 // The scene's camera path, or just the scene camera when it has none.
-std::vector<Camera> pathCameras(const Scene& scene);
-// count cameras on a circle around the terrain centre, looking at the centre. radius <= 0: half the extent;
+std::vector<Camera> pathCameras(const Terrain& terrain);
+// count (>= 0) cameras on a circle around the terrain centre, looking at the centre. radius <= 0: half the extent;
 // height <= 0: a quarter of the radius.
-std::vector<Camera> orbitCameras(const Scene& scene, int count, float radius = 0, float height = 0);
+std::vector<Camera> orbitCameras(const Terrain& terrain, int count, float radius = 0, float height = 0);
 // count cameras on a straight line across the terrain (diagonal, -x-z to +x+z) at `height` above it (<= 0: 2% of
 // the extent plus the displacement scale), looking along the flight direction and slightly down.
-std::vector<Camera> flyoverCameras(const Scene& scene, int count, float height = 0);
+std::vector<Camera> flyoverCameras(const Terrain& terrain, int count, float height = 0);
 // count cameras at uniform random positions over the extent, heights in (0, 25% of extent], random yaw, pitch
-// in [-60, 0] degrees. Deterministic for a seed (own generator, same on every platform).
-std::vector<Camera> randomCameras(const Scene& scene, int count, uint64_t seed);
+// in [-60, 0] degrees. Deterministic for a seed (splitmix64, same on every platform).
+std::vector<Camera> randomCameras(const Terrain& terrain, int count, uint64_t seed);
 
 struct SweepOptions {
   int threads = 0;               // 0: std::thread::hardware_concurrency()
@@ -377,11 +468,13 @@ struct SweepResult {
   std::vector<CameraResult> cameras; // one per input camera, in input order
   std::vector<Report> reports;       // keepReports: one per camera (empty reports for skipped cameras)
   Stats total;                       // summed over cameras done; worst gaps are maxima
+  WorkStats work;                    // summed over cameras done (the terrain's own work is terrain.stats())
   size_t camerasDone = 0;
   bool cancelled = false;
 };
 
-SweepResult sweep(const Scene& scene, const std::vector<Camera>& cameras, const CheckOptions& options = {},
+// Checks every camera against the one prepared terrain (shared read-only by the threads).
+SweepResult sweep(const Terrain& terrain, const std::vector<Camera>& cameras, const CheckOptions& options = {},
                   const SweepOptions& sweepOptions = {});
 
 // Names as the scene format spells them.
@@ -390,6 +483,7 @@ const char* toString(LayoutKind k);
 const char* toString(DisplacementKind k);
 const char* toString(LodScheme s);
 const char* toString(AdjacencyClamp c);
+const char* toString(lod::Reconstruction r);
 const char* toString(LerpFormula f);
 const char* toString(Kernel k);
 bool parseKernel(const char* s, Kernel& out);

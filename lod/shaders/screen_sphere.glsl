@@ -47,3 +47,26 @@ LodResult screenSphereLod(vec3 c0, vec3 c1, vec3 c2, vec3 c3, bool useHeightBoun
   r.e[3] = screenSphereEdge(c2, c3, cam, s);
   return withInsideFromEdges(r, s.insideRule);
 }
+
+// Deliberately broken variant (a negative control for the verifier, not a scheme to ship): every edge's sphere sits
+// at the patch centre instead of the edge midpoint: the edge p0-p1 is moved to centre - (p1 - p0) * 0.5 ..
+// centre + (p1 - p0) * 0.5 (same direction and length), so two patches sharing an edge measure it at different
+// places and disagree. Culling as screenSphereLod; inside factors from the edges by the inside rule.
+EdgeLod patchCenterEdge(vec3 centre, vec3 p0, vec3 p1, LodCamera cam, ScreenSphereSettings s) {
+  vec3 halfEdge = (p1 - p0) * 0.5f;
+  return screenSphereEdge(centre - halfEdge, centre + halfEdge, cam, s);
+}
+
+LodResult patchCenterLod(vec3 c0, vec3 c1, vec3 c2, vec3 c3, bool useHeightBounds, float minHeight,
+                         float maxHeight, LodCamera cam, ScreenSphereSettings s) {
+  if (s.frustumCull && patchOutsideFrustum(c0, c1, c2, c3, useHeightBounds, minHeight, maxHeight, cam)) {
+    return culledLodResult(s.culledFactor);
+  }
+  vec3 centre = patchCentre(c0, c1, c2, c3);
+  LodResult r = emptyLodResult();
+  r.e[0] = patchCenterEdge(centre, c0, c2, cam, s);
+  r.e[1] = patchCenterEdge(centre, c0, c1, cam, s);
+  r.e[2] = patchCenterEdge(centre, c1, c3, cam, s);
+  r.e[3] = patchCenterEdge(centre, c2, c3, cam, s);
+  return withInsideFromEdges(r, s.insideRule);
+}

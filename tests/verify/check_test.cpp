@@ -33,10 +33,10 @@ TEST_CASE("uniform_grid_never_cracks: every scheme and partitioning", "[verify][
                                           "layout.patches_x=10", "layout.patches_z=10",
                                           "layout.corners=reconstructed"});
       for (Kernel k : kKernels) {
-        for (const Camera& cam : orbitCameras(s, 2, 30.0f, 12.0f)) {
+        for (const Camera& cam : orbitCameras(prepared(s), 2, 30.0f, 12.0f)) {
           CheckOptions o;
           o.kernel = k;
-          Report r = checkScene(s, cam, o);
+          Report r = checkScene(prepared(s), cam, o);
           INFO(scheme << " " << part << " " << toString(k));
           REQUIRE(r.error.empty());
           CHECK(r.stats.edgesChecked + r.stats.skippedCulled == 2 * 10 * 9);
@@ -54,7 +54,7 @@ TEST_CASE("broken_lod_patch_center_is_caught", "[verify][check]") {
     CheckOptions o;
     o.kernel = k;
     Scene broken = loadExample("broken_lod.toml");
-    Report r = checkScene(broken, broken.camera, o);
+    Report r = checkScene(prepared(broken), broken.camera, o);
     INFO(toString(k));
     CHECK(r.stats.cracks > 0);
     REQUIRE_FALSE(r.findings.empty());
@@ -68,7 +68,7 @@ TEST_CASE("broken_lod_patch_center_is_caught", "[verify][check]") {
     CHECK(f.a.firstMismatch >= 1); // the corners always agree
     // The same scene with the edge-midpoint sphere is watertight.
     Scene fixed = loadExample("broken_lod.toml", {"lod.scheme=screen_sphere"});
-    Report g = checkScene(fixed, fixed.camera, o);
+    Report g = checkScene(prepared(fixed), fixed.camera, o);
     CHECK(g.stats.cracks == 0);
     CHECK(g.stats.tJunctions == 0);
   }
@@ -83,8 +83,8 @@ TEST_CASE("broken_lod_patch_center_is_caught", "[verify][check]") {
 TEST_CASE("exact_and_float_checkers_disagree_on_a_sub_ulp_offset", "[verify][check]") {
   const float fifth = 0.2f;
   REQUIRE(bitsOf(fifth) == 0x3E4CCCCDu);
-  const Vec3 a[] = {{0, 0, 0}, {5, 1, 0}};
-  const Vec3 b[] = {{0, 0, 0}, {1, fifth, 0}, {5, 1, 0}};
+  const glm::vec3 a[] = {{0, 0, 0}, {5, 1, 0}};
+  const glm::vec3 b[] = {{0, 0, 0}, {1, fifth, 0}, {5, 1, 0}};
   const double expected = (5.0 * double(fifth) - 1.0) / std::sqrt(26.0);
   for (Kernel k : kKernels) {
     detail::ExactVerdict v = detail::classifyExact(k, a, 2, a, 2, b, 3);
@@ -105,7 +105,7 @@ TEST_CASE("t_junction_on_flat_terrain_crack_when_displaced", "[verify][check]") 
     CheckOptions o;
     o.kernel = k;
     Scene flat = loadExample("terrain.toml", {"lod.adjacency_clamp=integer", "displacement.kind=none"});
-    Report rf = checkScene(flat, flat.camera, o);
+    Report rf = checkScene(prepared(flat), flat.camera, o);
     CHECK(rf.stats.tJunctions > 0);
     CHECK(rf.stats.cracks == 0);
     for (const Finding& f : rf.findings) CHECK(f.gapWorld == 0);
@@ -131,8 +131,8 @@ TEST_CASE("whole_mesh_check_agrees_with_edge_check", "[verify][check][mesh]") {
     Scene s = loadExample(c.file, c.overrides);
     CheckOptions o;
     o.maxFindings = 1000000;
-    Report r = checkScene(s, s.camera, o);
-    MeshReport m = checkSceneMesh(s, s.camera, o);
+    Report r = checkScene(prepared(s), s.camera, o);
+    MeshReport m = checkSceneMesh(prepared(s), s.camera, o);
     std::string label = c.file;
     for (const auto& ov : c.overrides) label += " " + ov;
     INFO(label << ": edge check " << r.stats.cracks << " cracks, " << r.stats.tJunctions << " T-junctions; mesh "
@@ -150,7 +150,7 @@ TEST_CASE("epick_and_epeck_agree_on_every_verdict", "[verify][check]") {
   CheckOptions a, b;
   a.kernel = Kernel::Epick;
   b.kernel = Kernel::Epeck;
-  Report ra = checkScene(s, s.camera, a), rb = checkScene(s, s.camera, b);
+  Report ra = checkScene(prepared(s), s.camera, a), rb = checkScene(prepared(s), s.camera, b);
   REQUIRE(ra.findings.size() == rb.findings.size());
   CHECK(ra.stats.cracks > 0);
   CHECK(ra.stats.cracks == rb.stats.cracks);
@@ -185,10 +185,10 @@ target = [0.0, 0.0, 0.0]
   SceneResult blend = parseScene(base, "f.toml", {"domain.formula=blend"});
   REQUIRE(lerp.ok);
   REQUIRE(blend.ok);
-  const Extent e = terrainExtent(lerp.scene);
+  const Extent e = prepared(lerp.scene).extent();
   REQUIRE(bitsOf(e.minX) == 0xBE6B851Fu);
   REQUIRE(bitsOf(e.maxX) == 0x3E8A3D71u);
-  CHECK(bitsOf(domainPosition(lerp.scene, 0, 1.0f, 0.0f).x) == 0x3E8A3D70u);
-  CHECK(bitsOf(domainPosition(blend.scene, 0, 1.0f, 0.0f).x) == 0x3E8A3D71u);
-  CHECK(bitsOf(domainPosition(lerp.scene, 0, 0.0f, 0.0f).x) == 0xBE6B851Fu);
+  CHECK(bitsOf(domainPosition(prepared(lerp.scene), 0, 1.0f, 0.0f).x) == 0x3E8A3D70u);
+  CHECK(bitsOf(domainPosition(prepared(blend.scene), 0, 1.0f, 0.0f).x) == 0x3E8A3D71u);
+  CHECK(bitsOf(domainPosition(prepared(lerp.scene), 0, 0.0f, 0.0f).x) == 0xBE6B851Fu);
 }

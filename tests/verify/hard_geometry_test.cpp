@@ -30,7 +30,7 @@ void requireWatertight(const Scene& s, const Camera& cam, const char* what) {
   for (Kernel k : {Kernel::Epick, Kernel::Epeck}) {
     CheckOptions o;
     o.kernel = k;
-    Report r = checkScene(s, cam, o);
+    Report r = checkScene(prepared(s), cam, o);
     INFO(what << " " << toString(k) << ": " << r.error);
     REQUIRE(r.error.empty());
     CHECK(r.stats.edgesChecked + r.stats.skippedCulled > 0);
@@ -45,13 +45,13 @@ void requireWatertight(const Scene& s, const Camera& cam, const char* what) {
 TEST_CASE("hard_geometry_128km_world_camera_1cm_above_a_corner", "[verify][hard]") {
   for (bool rings : {false, true}) {
     Scene s = world(rings);
-    const Extent e = terrainExtent(s);
+    const Extent e = prepared(s).extent();
     CHECK(e.maxX - e.minX == 128000.0f);
     // Patch 0's corner (0, 0), one centimetre above the terrain there.
-    const Vec3 corner = domainPosition(s, rings ? 0 : 64 * 128 + 64, 0.0f, 0.0f);
+    const glm::vec3 corner = domainPosition(prepared(s), rings ? 0 : 64 * 128 + 64, 0.0f, 0.0f);
     Camera cam = s.camera;
-    cam.eye = Vec3{corner.x, corner.y + 0.01f, corner.z};
-    cam.target = Vec3{corner.x + 100.0f, corner.y - 5.0f, corner.z + 70.0f};
+    cam.eye = glm::vec3{corner.x, corner.y + 0.01f, corner.z};
+    cam.target = glm::vec3{corner.x + 100.0f, corner.y - 5.0f, corner.z + 70.0f};
     cam.nearZ = 0.001f;
     cam.farZ = 300000.0f;
     requireWatertight(s, cam, rings ? "rings, 1 cm above a corner" : "grid, 1 cm above a corner");
@@ -62,11 +62,11 @@ TEST_CASE("hard_geometry_camera_exactly_on_an_edge", "[verify][hard]") {
   for (bool rings : {false, true}) {
     // Flat terrain: the eye lies on the edge's line itself (y = 0), looking along it.
     Scene s = world(rings, {"displacement.kind=none"});
-    const Vec3 a = domainPosition(s, rings ? 5 : 64 * 128 + 64, 0.0f, 0.0f);
-    const Vec3 b = domainPosition(s, rings ? 5 : 64 * 128 + 64, 0.0f, 1.0f);
+    const glm::vec3 a = domainPosition(prepared(s), rings ? 5 : 64 * 128 + 64, 0.0f, 0.0f);
+    const glm::vec3 b = domainPosition(prepared(s), rings ? 5 : 64 * 128 + 64, 0.0f, 1.0f);
     Camera cam = s.camera;
-    cam.eye = Vec3{a.x, 0.0f, 0.5f * (a.z + b.z)};
-    cam.target = Vec3{a.x, 0.0f, b.z + 1000.0f};
+    cam.eye = glm::vec3{a.x, 0.0f, 0.5f * (a.z + b.z)};
+    cam.target = glm::vec3{a.x, 0.0f, b.z + 1000.0f};
     cam.nearZ = 0.01f;
     cam.farZ = 300000.0f;
     requireWatertight(s, cam, rings ? "rings, eye on an edge" : "grid, eye on an edge");
@@ -77,12 +77,12 @@ TEST_CASE("hard_geometry_patches_behind_the_camera", "[verify][hard]") {
   for (bool rings : {false, true}) {
     Scene s = world(rings, {"lod.frustum_cull=false"});
     Camera cam = s.camera;
-    cam.eye = Vec3{0.0f, 50.0f, 0.0f};
-    cam.target = Vec3{0.0f, 40.0f, 1000.0f}; // half the world is behind
+    cam.eye = glm::vec3{0.0f, 50.0f, 0.0f};
+    cam.target = glm::vec3{0.0f, 40.0f, 1000.0f}; // half the world is behind
     cam.farZ = 300000.0f;
     requireWatertight(s, cam, rings ? "rings, no culling, half behind" : "grid, no culling, half behind");
     Scene culled = world(rings);
-    Report r = checkScene(culled, cam);
+    Report r = checkScene(prepared(culled), cam);
     CHECK(r.stats.culledPatches > 0);
     CHECK(r.stats.skippedCulled > 0);
     CHECK(r.stats.cracks == 0);
@@ -92,13 +92,13 @@ TEST_CASE("hard_geometry_patches_behind_the_camera", "[verify][hard]") {
 TEST_CASE("hard_geometry_far_patches_at_the_minimum_factor", "[verify][hard]") {
   Scene s = world(false, {"lod.frustum_cull=false", "lod.target_pixels=20"});
   Camera cam = s.camera;
-  cam.eye = Vec3{-63500.0f, 30.0f, -63500.0f}; // one corner of the world
-  cam.target = Vec3{0.0f, 0.0f, 0.0f};
+  cam.eye = glm::vec3{-63500.0f, 30.0f, -63500.0f}; // one corner of the world
+  cam.target = glm::vec3{0.0f, 0.0f, 0.0f};
   cam.farZ = 300000.0f;
   CheckOptions o;
   o.keepMatches = true;
   o.maxFindings = 1000000;
-  Report r = checkScene(s, cam, o);
+  Report r = checkScene(prepared(s), cam, o);
   REQUIRE(r.error.empty());
   CHECK(r.stats.cracks == 0);
   int far = 0;

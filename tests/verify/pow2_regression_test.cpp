@@ -46,7 +46,7 @@ TEST_CASE("pow2_regression_no_clamp_cracks_at_a_2x_jump", "[verify][pow2]") {
   for (Kernel k : {Kernel::Epick, Kernel::Epeck}) {
     CheckOptions o;
     o.kernel = k;
-    Report r = checkScene(s, s.camera, o);
+    Report r = checkScene(prepared(s), s.camera, o);
     INFO(toString(k));
     CHECK(r.stats.cracks > 0);
     for (const Finding& f : r.findings) {
@@ -75,9 +75,9 @@ TEST_CASE("pow2_regression_integer_clamp_12_beside_2x6_cracks_where_16_16_predic
     o.maxFindings = 100000;
     int seen12 = 0;
     std::vector<Camera> cams = {s.camera};
-    for (const Camera& c : orbitCameras(s, 4, 80.0f, 25.0f)) cams.push_back(c);
+    for (const Camera& c : orbitCameras(prepared(s), 4, 80.0f, 25.0f)) cams.push_back(c);
     for (const Camera& cam : cams) {
-      Report r = checkScene(s, cam, o);
+      Report r = checkScene(prepared(s), cam, o);
       for (const Finding& f : r.findings) {
         INFO(toString(k) << " big " << f.a.processedFactor << " small " << f.b.processedFactor);
         CHECK(f.classification == Classification::Crack);
@@ -104,13 +104,13 @@ TEST_CASE("pow2_regression_integer_clamp_12_beside_2x6_cracks_where_16_16_predic
 
 TEST_CASE("pow2_regression_pow2_clamp_never_cracks_over_1000_cameras", "[verify][pow2][sweep]") {
   Scene s = loadExample("rings_small.toml");
-  std::vector<Camera> cams = randomCameras(s, 900, 20261122);
-  for (const Camera& c : orbitCameras(s, 50, 60.0f, 10.0f)) cams.push_back(c);
-  for (const Camera& c : flyoverCameras(s, 50, 6.0f)) cams.push_back(c);
+  std::vector<Camera> cams = randomCameras(prepared(s), 900, 20261122);
+  for (const Camera& c : orbitCameras(prepared(s), 50, 60.0f, 10.0f)) cams.push_back(c);
+  for (const Camera& c : flyoverCameras(prepared(s), 50, 6.0f)) cams.push_back(c);
   REQUIRE(cams.size() >= 1000);
   SweepOptions so;
   so.threads = 2;
-  SweepResult r = sweep(s, cams, {}, so);
+  SweepResult r = sweep(prepared(s), cams, {}, so);
   CHECK(r.camerasDone == cams.size());
   CHECK(r.total.edgesChecked > 1000000);
   CHECK(r.total.cracks == 0);
@@ -119,7 +119,7 @@ TEST_CASE("pow2_regression_pow2_clamp_never_cracks_over_1000_cameras", "[verify]
   // The same cameras see size jumps that crack without the clamp (so the sweep did cross the ring borders).
   Scene none = loadExample("rings_small.toml", {"lod.adjacency_clamp=none"});
   std::vector<Camera> some(cams.begin(), cams.begin() + 100);
-  SweepResult rn = sweep(none, some, {}, so);
+  SweepResult rn = sweep(prepared(none), some, {}, so);
   CHECK(rn.total.cracks > 0);
 }
 
@@ -129,9 +129,9 @@ TEST_CASE("pow2_regression_pow2_clamp_never_cracks_over_1000_cameras", "[verify]
 // avoids it by passing the larger patch's own corner. Recorded so that a change in lod/ shows up here.
 TEST_CASE("pow2_clamp_with_displaced_corners_edge_vector_mismatches_factors", "[verify][pow2]") {
   Scene bad = loadExample("terrain.toml", {"lod.displaced_corners=true"});
-  Report r = checkScene(bad, bad.camera);
+  Report r = checkScene(prepared(bad), bad.camera);
   CHECK(r.stats.cracks > 0);
   for (const Finding& f : r.findings) CHECK(f.a.processedFactor != 2 * f.b.processedFactor);
   Scene good = loadExample("terrain.toml", {"lod.displaced_corners=true", "lod.reconstruction=far_corner"});
-  CHECK(checkScene(good, good.camera).stats.cracks == 0);
+  CHECK(checkScene(prepared(good), good.camera).stats.cracks == 0);
 }

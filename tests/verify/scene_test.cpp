@@ -45,7 +45,7 @@ TEST_CASE("bundled example scenes load", "[verify][scene]") {
   for (const char* name : {"terrain.toml", "grid.toml", "rings_small.toml", "broken_lod.toml", "luna.toml"}) {
     INFO(name);
     Scene s = loadExample(name);
-    CHECK(patchCount(s) > 0);
+    CHECK(prepared(s).patchCount() > 0);
     CHECK(s.source.find(name) != std::string::npos);
   }
 }
@@ -55,29 +55,29 @@ TEST_CASE("default scene is the NVIDIA sample setup", "[verify][scene]") {
   CHECK(s.layout.kind == LayoutKind::TileRings);
   CHECK(s.layout.patchesPerTileEdge == 8);
   CHECK(s.lod.scheme == LodScheme::ScreenSphere);
-  CHECK(s.lod.targetPixels == 3.0f);
+  CHECK(s.lod.screenSphere.sphere.tessellatedTriWidth == 3.0f);
   CHECK(s.camera.width == 1920);
   CHECK(s.camera.height == 1200);
   CHECK(s.partitioning == fftess::Partitioning::FractionalEven);
-  CHECK(s.lod.adjacencyClamp == AdjacencyClamp::Pow2);
+  CHECK(s.lod.screenSphere.clamp == AdjacencyClamp::Pow2);
   CHECK(s.displacement.kind == DisplacementKind::Fbm);
   REQUIRE(s.displacement.texels);
   CHECK(s.displacement.texels->size() == size_t(513) * 513);
   // rings 3 of 8x8 tiles of 8x8 patches: 64 tiles + 2 x 48 tiles.
-  CHECK(patchCount(s) == (64 + 48 + 48) * 64);
+  CHECK(prepared(s).patchCount() == (64 + 48 + 48) * 64);
 }
 
 TEST_CASE("tile ring layout: sizes and extent", "[verify][scene]") {
   SceneResult r = parseScene(kBase, "t.toml");
   REQUIRE(r.ok);
   // ring 0: 4x4 tiles of 2x2 patches; ring 1: 12 tiles of 2x2 patches of size 2.
-  CHECK(patchCount(r.scene) == 16 * 4 + 12 * 4);
-  Extent e = terrainExtent(r.scene);
+  CHECK(prepared(r.scene).patchCount() == 16 * 4 + 12 * 4);
+  Extent e = prepared(r.scene).extent();
   CHECK(e.minX == -8.0f);
   CHECK(e.maxX == 8.0f);
-  CHECK(patchRef(r.scene, 0).ring == 0);
-  CHECK(patchRef(r.scene, 16 * 4).ring == 1);
-  CHECK(patchRef(r.scene, 16 * 4).level == 1);
+  CHECK(prepared(r.scene).patches()[0].ref.ring == 0);
+  CHECK(prepared(r.scene).patches()[16 * 4].ref.ring == 1);
+  CHECK(prepared(r.scene).patches()[16 * 4].ref.level == 1);
 }
 
 TEST_CASE("malformed scenes name the key and the file position", "[verify][scene]") {
@@ -144,7 +144,7 @@ TEST_CASE("overrides are validated like the file", "[verify][scene]") {
                                                  "layout.rings=3", "displacement.kind=fbm"});
   INFO(ok.error);
   REQUIRE(ok.ok);
-  CHECK(ok.scene.lod.adjacencyClamp == AdjacencyClamp::Integer);
+  CHECK(ok.scene.lod.screenSphere.clamp == AdjacencyClamp::Integer);
   CHECK(ok.scene.camera.eye.z == 3.0f);
   CHECK(ok.scene.layout.rings == 3);
   CHECK(ok.scene.displacement.kind == DisplacementKind::Fbm);
@@ -164,27 +164,25 @@ TEST_CASE("loadScene reports a missing file", "[verify][scene]") {
   CHECK(r.error.find("/nonexistent/scene.toml") != std::string::npos);
 }
 
-TEST_CASE("patchGeometry: every patch's ref and corners at once, as the per-patch queries give them", "[verify][scene]") {
+TEST_CASE("prepared terrain: every patch's ref and corners, as the domain shader uses them", "[verify][scene]") {
   // kBase: hand-counted 16 * 4 ring-0 patches of size 1 and 12 * 4 ring-1 patches of size 2 over [-8, 8]^2.
   for (const char* corners : {"reconstructed", "shared"}) {
     INFO(corners);
     SceneResult r = parseScene(kBase, "t.toml", {std::string("layout.corners=") + corners});
     REQUIRE(r.ok);
-    const std::vector<PatchGeometry> geo = patchGeometry(r.scene);
-    REQUIRE(static_cast<int>(geo.size()) == patchCount(r.scene));
+    const Terrain terrain = prepared(r.scene);
+    const std::vector<PatchGeometry>& geo = terrain.patches();
+    REQUIRE(static_cast<int>(geo.size()) == terrain.patchCount());
     REQUIRE(geo.size() == 16 * 4 + 12 * 4);
     double area = 0;
     for (size_t i = 0; i < geo.size(); ++i) {
       INFO("patch " << i);
       const PatchGeometry& g = geo[i];
-      const PatchRef ref = patchRef(r.scene, static_cast<int>(i));
       CHECK(g.ref.index == static_cast<int>(i));
-      CHECK(g.ref.ring == ref.ring);
-      CHECK(g.ref.tile == ref.tile);
-      CHECK(g.ref.patch == ref.patch);
-      CHECK(g.ref.level == ref.level);
+      CHECK(g.ref.ring == (i < 16 * 4 ? 0 : 1));
+      CHECK(g.ref.level == g.ref.ring);
       // Flat terrain: the domain shader at the corner (u, v) = (0, 0) is corner 0 exactly; all corners have y = 0.
-      const Vec3 p = domainPosition(r.scene, static_cast<int>(i), 0.0f, 0.0f);
+      const glm::vec3 p = domainPosition(terrain, static_cast<int>(i), 0.0f, 0.0f);
       CHECK(p.x == g.corners[0].x);
       CHECK(p.z == g.corners[0].z);
       // corners[u + 2v]: an axis-aligned square of side 2^level.
@@ -195,7 +193,7 @@ TEST_CASE("patchGeometry: every patch's ref and corners at once, as the per-patc
       CHECK(g.corners[2].x == g.corners[0].x);
       CHECK(g.corners[3].x == g.corners[1].x);
       CHECK(g.corners[3].z == g.corners[2].z);
-      for (const Vec3& c : g.corners) {
+      for (const glm::vec3& c : g.corners) {
         CHECK(c.y == 0.0f);
         CHECK(std::fabs(c.x) <= 8.0f);
         CHECK(std::fabs(c.z) <= 8.0f);
@@ -208,5 +206,8 @@ TEST_CASE("patchGeometry: every patch's ref and corners at once, as the per-patc
   REQUIRE(bad.ok);
   bad.scene.displacement.kind = DisplacementKind::Fbm; // built by hand without its texture: no terrain
   bad.scene.displacement.texels.reset();
-  CHECK(patchGeometry(bad.scene).empty());
+  const TerrainResult none = prepareTerrain(bad.scene);
+  CHECK_FALSE(none.ok);
+  CHECK(none.error.find("displacement") != std::string::npos);
+  CHECK(none.terrain.empty());
 }

@@ -12,19 +12,19 @@ using namespace fftess::verify::test;
 
 TEST_CASE("camera generators are deterministic and sized", "[verify][sweep]") {
   Scene s = loadExample("rings_small.toml");
-  CHECK(randomCameras(s, 17, 5).size() == 17);
-  CHECK(orbitCameras(s, 9).size() == 9);
-  CHECK(flyoverCameras(s, 4).size() == 4);
-  CHECK(pathCameras(s).size() == 1);
-  auto a = randomCameras(s, 10, 42), b = randomCameras(s, 10, 42), c = randomCameras(s, 10, 43);
+  CHECK(randomCameras(prepared(s), 17, 5).size() == 17);
+  CHECK(orbitCameras(prepared(s), 9).size() == 9);
+  CHECK(flyoverCameras(prepared(s), 4).size() == 4);
+  CHECK(pathCameras(prepared(s)).size() == 1);
+  auto a = randomCameras(prepared(s), 10, 42), b = randomCameras(prepared(s), 10, 42), c = randomCameras(prepared(s), 10, 43);
   for (size_t i = 0; i < a.size(); ++i) {
     CHECK(a[i].eye.x == b[i].eye.x);
     CHECK(a[i].target.z == b[i].target.z);
     CHECK(a[i].width == s.camera.width);
   }
   CHECK(a[0].eye.x != c[0].eye.x);
-  const Extent e = terrainExtent(s);
-  for (const Camera& cam : randomCameras(s, 200, 7)) {
+  const Extent e = prepared(s).extent();
+  for (const Camera& cam : randomCameras(prepared(s), 200, 7)) {
     CHECK(cam.eye.x >= e.minX);
     CHECK(cam.eye.x <= e.maxX);
     CHECK(cam.eye.y > 0);
@@ -50,7 +50,7 @@ fov_y = 45.0
                              "path.toml");
   INFO(r.error);
   REQUIRE(r.ok);
-  auto cams = pathCameras(r.scene);
+  auto cams = pathCameras(prepared(r.scene));
   REQUIRE(cams.size() == 2);
   CHECK(cams[1].eye.x == 2.0f);
   CHECK(cams[1].fovY == 45.0f);
@@ -60,7 +60,7 @@ fov_y = 45.0
 
 TEST_CASE("sweep on threads equals one thread, with progress", "[verify][sweep]") {
   Scene s = loadExample("rings_small.toml", {"lod.adjacency_clamp=integer"});
-  auto cams = randomCameras(s, 24, 99);
+  auto cams = randomCameras(prepared(s), 24, 99);
   SweepOptions one, two;
   one.threads = 1;
   two.threads = 2;
@@ -69,7 +69,7 @@ TEST_CASE("sweep on threads equals one thread, with progress", "[verify][sweep]"
     CHECK(total == cams.size());
     seen.push_back(done);
   };
-  SweepResult a = sweep(s, cams, {}, one), b = sweep(s, cams, {}, two);
+  SweepResult a = sweep(prepared(s), cams, {}, one), b = sweep(prepared(s), cams, {}, two);
   REQUIRE(seen.size() == cams.size());
   for (size_t i = 0; i < seen.size(); ++i) CHECK(seen[i] == i + 1);
   CHECK(a.camerasDone == cams.size());
@@ -83,13 +83,13 @@ TEST_CASE("sweep on threads equals one thread, with progress", "[verify][sweep]"
     CHECK(a.cameras[i].stats.cracks == b.cameras[i].stats.cracks);
     CHECK(a.cameras[i].hasFinding == (a.cameras[i].stats.cracks > 0));
     // The same as checking the camera alone.
-    if (i < 3) CHECK(checkScene(s, cams[i]).stats.cracks == a.cameras[i].stats.cracks);
+    if (i < 3) CHECK(checkScene(prepared(s), cams[i]).stats.cracks == a.cameras[i].stats.cracks);
   }
 }
 
 TEST_CASE("sweep cancel stops early", "[verify][sweep]") {
   Scene s = loadExample("rings_small.toml");
-  auto cams = randomCameras(s, 200, 1);
+  auto cams = randomCameras(prepared(s), 200, 1);
   std::atomic<bool> cancel{false};
   SweepOptions so;
   so.threads = 2;
@@ -97,7 +97,7 @@ TEST_CASE("sweep cancel stops early", "[verify][sweep]") {
   so.progress = [&](size_t done, size_t) {
     if (done >= 3) cancel = true;
   };
-  SweepResult r = sweep(s, cams, {}, so);
+  SweepResult r = sweep(prepared(s), cams, {}, so);
   CHECK(r.cancelled);
   CHECK(r.camerasDone >= 3);
   CHECK(r.camerasDone < cams.size());
@@ -141,7 +141,7 @@ std::vector<ReportDigest> reportsOf(const Scene& s, const std::vector<Camera>& c
     }
     --active;
   };
-  result = sweep(s, cams, {}, so);
+  result = sweep(prepared(s), cams, {}, so);
   maxConcurrent = most;
   return got;
 }
@@ -150,7 +150,7 @@ std::vector<ReportDigest> reportsOf(const Scene& s, const std::vector<Camera>& c
 
 TEST_CASE("sweep onReport: every camera once, serialised, the same reports on 1 and 2 threads", "[verify][sweep]") {
   Scene s = loadExample("rings_small.toml", {"lod.adjacency_clamp=integer"});
-  auto cams = randomCameras(s, 24, 99);
+  auto cams = randomCameras(prepared(s), 24, 99);
   int concurrentOne = 0, concurrentTwo = 0;
   SweepResult a, b;
   const std::vector<ReportDigest> one = reportsOf(s, cams, 1, concurrentOne, a);
@@ -180,7 +180,7 @@ TEST_CASE("sweep onReport: every camera once, serialised, the same reports on 1 
 
 TEST_CASE("sweep onReport: cancelled sweeps report exactly the cameras done", "[verify][sweep]") {
   Scene s = loadExample("rings_small.toml");
-  auto cams = randomCameras(s, 200, 1);
+  auto cams = randomCameras(prepared(s), 200, 1);
   std::atomic<bool> cancel{false};
   std::vector<int> calls(cams.size(), 0);
   SweepOptions so;
@@ -190,7 +190,7 @@ TEST_CASE("sweep onReport: cancelled sweeps report exactly the cameras done", "[
   so.progress = [&](size_t done, size_t) {
     if (done >= 3) cancel = true;
   };
-  SweepResult r = sweep(s, cams, {}, so);
+  SweepResult r = sweep(prepared(s), cams, {}, so);
   CHECK(r.cancelled);
   for (size_t i = 0; i < cams.size(); ++i) {
     INFO("camera " << i);

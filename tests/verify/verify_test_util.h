@@ -19,6 +19,14 @@ inline Scene loadExample(const std::string& name, const std::vector<std::string>
   return r.scene;
 }
 
+// The scene's prepared terrain (REQUIREs that the scene is valid).
+inline Terrain prepared(const Scene& scene) {
+  TerrainResult r = prepareTerrain(scene);
+  INFO(r.error);
+  REQUIRE(r.ok);
+  return r.terrain;
+}
+
 inline const char* kernelName(Kernel k) { return toString(k); }
 
 } // namespace fftess::verify::test

@@ -1,0 +1,267 @@
+// The prepared terrain: layout (grid, NVIDIA tile rings, heightmap grid), neighbours, and every quantity the LOD
+// needs that does not depend on the camera (corner heights, height bounds, neighbour sizes, far corners), built
+// once per scene.
+#include "verify/internal.h"
+
+#include <atomic>
+#include <cmath>
+
+namespace fftess::verify {
+
+namespace detail {
+
+namespace {
+
+struct Builder {
+  const Scene& s;
+  TerrainData& t;
+  // tile rings
+  int R = 1, W = 1, P = 1;
+  int64_t H = 0; // half extent in base units
+  std::vector<std::vector<int>> tileOrdinal; // [ring][tz*W+tx] -> first patch index, -1 in the hole
+  // grid / heightmap grid
+  int64_t nx = 0, nz = 0;
+
+  int64_t ringHalf(int r) const { return static_cast<int64_t>(W) * P * (int64_t(1) << r) / 2; }
+
+  // Patch containing base-unit cell (cx, cz), -1 outside the terrain.
+  int locate(int64_t cx, int64_t cz) const {
+    if (cx < 0 || cz < 0 || cx >= t.unitsX || cz >= t.unitsZ) return -1;
+    if (s.layout.kind != LayoutKind::TileRings) return static_cast<int>(cz * nx + cx);
+    for (int r = 0; r < R; ++r) {
+      const int64_t lo = H - ringHalf(r), hi = H + ringHalf(r);
+      if (cx < lo || cx >= hi || cz < lo || cz >= hi) continue;
+      const int64_t size = int64_t(1) << r;
+      const int64_t px = (cx - lo) / size, pz = (cz - lo) / size;
+      const int tx = static_cast<int>(px / P), tz = static_cast<int>(pz / P);
+      const int first = tileOrdinal[r][static_cast<size_t>(tz) * W + tx];
+      if (first < 0) continue; // in the hole: an inner ring holds it
+      return first + static_cast<int>((pz % P) * P + (px % P));
+    }
+    return -1;
+  }
+};
+
+} // namespace
+
+namespace {
+
+bool buildLayout(const Scene& s, TerrainData& t, std::string& error) {
+  const Layout& L = s.layout;
+  if (s.displacement.kind != DisplacementKind::None &&
+      (!s.displacement.texels || s.displacement.texels->size() !=
+                                     static_cast<size_t>(s.displacement.texWidth) * s.displacement.texHeight ||
+       s.displacement.texWidth < 1 || s.displacement.texHeight < 1)) {
+    error = "displacement: texture not loaded (use loadScene / parseScene)";
+    return false;
+  }
+  Builder b{s, t, 1, 1, 1, 0, {}, 0, 0};
+  double patchWorld = 1; // world size of a base unit
+  const bool reconstructed = L.corners == CornerMode::Reconstructed;
+
+  if (L.kind == LayoutKind::TileRings) {
+    b.R = L.rings;
+    b.W = L.tilesPerRingEdge;
+    b.P = L.patchesPerTileEdge;
+    b.H = b.ringHalf(b.R - 1);
+    t.unitsX = t.unitsZ = 2 * b.H;
+    patchWorld = L.basePatchSize;
+    t.adjacency = b.R > 1;
+  } else if (L.kind == LayoutKind::Grid) {
+    b.nx = L.patchesX;
+    b.nz = L.patchesZ;
+    t.unitsX = b.nx;
+    t.unitsZ = b.nz;
+    patchWorld = L.patchSize;
+  } else {
+    const Displacement& d = s.displacement;
+    b.nx = (d.texWidth - 1) / L.cellsPerPatch;
+    b.nz = (d.texHeight - 1) / L.cellsPerPatch;
+    t.unitsX = b.nx;
+    t.unitsZ = b.nz;
+    patchWorld = static_cast<double>(L.cellsPerPatch) * L.cellSize;
+  }
+  t.unit = patchWorld;
+  const double minX = L.centerX - 0.5 * static_cast<double>(t.unitsX) * patchWorld;
+  const double minZ = L.centerZ - 0.5 * static_cast<double>(t.unitsZ) * patchWorld;
+  t.extent.minX = static_cast<float>(minX);
+  t.extent.minZ = static_cast<float>(minZ);
+  t.extent.maxX = static_cast<float>(minX + static_cast<double>(t.unitsX) * patchWorld);
+  t.extent.maxZ = static_cast<float>(minZ + static_cast<double>(t.unitsZ) * patchWorld);
+  t.invSizeX = 1.0f / (t.extent.maxX - t.extent.minX);
+  t.invSizeZ = 1.0f / (t.extent.maxZ - t.extent.minZ);
+
+  // Shared vertex buffer: each corner once, from its integer position, in double, rounded to float.
+  auto sharedX = [&](int64_t ux) { return static_cast<float>(minX + static_cast<double>(ux) * patchWorld); };
+  auto sharedZ = [&](int64_t uz) { return static_cast<float>(minZ + static_cast<double>(uz) * patchWorld); };
+
+  auto addPatch = [&](int ring, int tile, int patch, int64_t ux, int64_t uz, int64_t size, float ox, float oz,
+                      float tileSize, int iu, int iv, int perTile) {
+    TerrainPatch p;
+    p.ref.index = static_cast<int>(t.patches.size());
+    p.ref.ring = ring;
+    p.ref.tile = tile;
+    p.ref.patch = patch;
+    p.ref.level = ring;
+    p.ux = ux;
+    p.uz = uz;
+    p.size = size;
+    for (int c = 0; c < 4; ++c) {
+      const int du = c & 1, dv = c >> 1;
+      float x, z;
+      if (reconstructed) {
+        // NVIDIA sample: u = iu / (vertices per tile edge - 1), position = u * tileSize + tileOrigin, in float.
+        const float u = static_cast<float>(iu + du) / static_cast<float>(perTile);
+        const float v = static_cast<float>(iv + dv) / static_cast<float>(perTile);
+        x = u * tileSize + ox;
+        z = v * tileSize + oz;
+      } else {
+        x = sharedX(ux + du * size);
+        z = sharedZ(uz + dv * size);
+      }
+      p.corners[c] = glm::vec3(x, 0.0f, z);
+      p.tex[c][0] = (x - t.extent.minX) * t.invSizeX;
+      p.tex[c][1] = (z - t.extent.minZ) * t.invSizeZ;
+    }
+    t.patches.push_back(p);
+  };
+
+  if (L.kind == LayoutKind::TileRings) {
+    b.tileOrdinal.assign(b.R, std::vector<int>(static_cast<size_t>(b.W) * b.W, -1));
+    for (int r = 0; r < b.R; ++r) {
+      const int64_t size = int64_t(1) << r;
+      const int64_t lo = b.H - b.ringHalf(r);
+      const float tileSize = static_cast<float>(b.P) * L.basePatchSize * static_cast<float>(size);
+      for (int tz = 0; tz < b.W; ++tz) {
+        for (int tx = 0; tx < b.W; ++tx) {
+          const bool hole = r > 0 && tx >= b.W / 4 && tx < b.W - b.W / 4 && tz >= b.W / 4 && tz < b.W - b.W / 4;
+          if (hole) continue;
+          b.tileOrdinal[r][static_cast<size_t>(tz) * b.W + tx] = static_cast<int>(t.patches.size());
+          // Tile origin as the sample's CPU code places tiles: centre + (index - width/2) * tileSize, in float.
+          const float ox = L.centerX + static_cast<float>(tx - b.W / 2) * tileSize;
+          const float oz = L.centerZ + static_cast<float>(tz - b.W / 2) * tileSize;
+          for (int pz = 0; pz < b.P; ++pz)
+            for (int px = 0; px < b.P; ++px)
+              addPatch(r, tz * b.W + tx, pz * b.P + px, lo + (int64_t(tx) * b.P + px) * size,
+                       lo + (int64_t(tz) * b.P + pz) * size, size, ox, oz, tileSize, px, pz, b.P);
+        }
+      }
+    }
+  } else {
+    const float size = static_cast<float>(patchWorld);
+    const float ox = static_cast<float>(minX), oz = static_cast<float>(minZ);
+    for (int64_t z = 0; z < b.nz; ++z)
+      for (int64_t x = 0; x < b.nx; ++x) {
+        // Reconstructed grid: origin + i * size, in float.
+        const int idx = static_cast<int>(z * b.nx + x);
+        addPatch(0, 0, idx, x, z, 1, ox, oz, size, static_cast<int>(x), static_cast<int>(z), 1);
+      }
+  }
+
+  // Neighbours: the patch(es) holding the base-unit cells just across each edge, at its two ends.
+  for (TerrainPatch& p : t.patches) {
+    const int64_t s0 = p.size;
+    const int64_t cells[4][2][2] = {
+        {{p.ux - 1, p.uz}, {p.ux - 1, p.uz + s0 - 1}},   // Ueq0: -x
+        {{p.ux, p.uz - 1}, {p.ux + s0 - 1, p.uz - 1}},   // Veq0: -z
+        {{p.ux + s0, p.uz}, {p.ux + s0, p.uz + s0 - 1}}, // Ueq1: +x
+        {{p.ux, p.uz + s0}, {p.ux + s0 - 1, p.uz + s0}}, // Veq1: +z
+    };
+    for (int e = 0; e < 4; ++e) {
+      const int n0 = b.locate(cells[e][0][0], cells[e][0][1]);
+      const int n1 = b.locate(cells[e][1][0], cells[e][1][1]);
+      p.nb[e][0] = n0;
+      p.nb[e][1] = n1 != n0 ? n1 : -1;
+    }
+  }
+  return true;
+}
+
+
+// What lod/ sees of each patch: its corners raised to the heights the vertex shader samples (lod.displaced_corners)
+// and the culling box's height bounds; on tile rings with adjacency, the neighbour sizes, parity and far corners.
+void prepareLod(TerrainData& t) {
+  const Scene& s = t.scene;
+  const bool displaced = s.displacement.kind != DisplacementKind::None;
+  const bool raise = s.lod.displacedCorners && displaced;
+  for (TerrainPatch& p : t.patches) {
+    PatchGeometry& g = t.geometry[static_cast<size_t>(p.ref.index)];
+    for (int c = 0; c < 4; ++c) {
+      g.heights[c] = displaced ? heightAt(t, p.corners[c].x, p.corners[c].z) : 0.0f;
+      if (displaced) ++t.work.heightSamples;
+      p.lod.corners[c] = glm::vec3(p.corners[c].x, raise ? g.heights[c] : 0.0f, p.corners[c].z);
+    }
+    if (displaced) {
+      p.lod.useHeightBounds = true;
+      p.lod.minHeight = std::fmin(0.0f, s.displacement.heightScale);
+      p.lod.maxHeight = std::fmax(0.0f, s.displacement.heightScale);
+    }
+  }
+  if (!t.adjacency) return;
+  for (TerrainPatch& p : t.patches) {
+    lod::TileNeighbours& tn = p.tile;
+    tn.oddU = ((p.ux / p.size) & 1) != 0;
+    tn.oddV = ((p.uz / p.size) & 1) != 0;
+    for (int e = 0; e < 4; ++e) {
+      const int n0 = p.nb[e][0];
+      if (n0 < 0) continue; // outer border
+      const TerrainPatch& q = t.patches[static_cast<size_t>(n0)];
+      if (p.nb[e][1] >= 0 || q.size < p.size) {
+        tn.size[e] = 0.5f;
+      } else if (q.size > p.size) {
+        tn.size[e] = 2.0f;
+        // The far end of the larger neighbour's edge: its corner on the shared edge not shared with us.
+        const int oe = kOpposite[e];
+        const bool alongX = e == Veq0 || e == Veq1;
+        const int64_t lo = alongX ? p.ux : p.uz;
+        const int64_t qlo = alongX ? q.ux : q.uz;
+        const int farIdx = (qlo == lo) ? kEdgeCorners[oe][1] : kEdgeCorners[oe][0];
+        tn.farCorner[e] = q.lod.corners[farIdx];
+      }
+    }
+  }
+}
+
+std::atomic<int64_t> gTerrainBuilds{0};
+
+} // namespace
+
+} // namespace detail
+
+WorkStats& WorkStats::operator+=(const WorkStats& o) {
+  terrainBuilds += o.terrainBuilds;
+  heightSamples += o.heightSamples;
+  domainEvaluations += o.domainEvaluations;
+  lodEvaluations += o.lodEvaluations;
+  edgeQueries += o.edgeQueries;
+  cgalCalls += o.cgalCalls;
+  return *this;
+}
+
+int64_t terrainBuildCount() { return detail::gTerrainBuilds.load(); }
+
+TerrainResult prepareTerrain(const Scene& scene) {
+  TerrainResult r;
+  auto data = std::make_shared<detail::TerrainData>();
+  data->scene = scene;
+  if (!detail::buildLayout(data->scene, *data, r.error)) return r;
+  data->geometry.resize(data->patches.size());
+  for (size_t i = 0; i < data->patches.size(); ++i) {
+    data->geometry[i].ref = data->patches[i].ref;
+    for (int c = 0; c < 4; ++c) data->geometry[i].corners[c] = data->patches[i].corners[c];
+  }
+  detail::prepareLod(*data);
+  data->work.terrainBuilds = 1;
+  ++detail::gTerrainBuilds;
+  r.terrain.data_ = std::move(data);
+  r.ok = true;
+  return r;
+}
+
+const Scene& Terrain::scene() const { return data_->scene; }
+int Terrain::patchCount() const { return data_ ? static_cast<int>(data_->patches.size()) : 0; }
+const std::vector<PatchGeometry>& Terrain::patches() const { return data_->geometry; }
+const Extent& Terrain::extent() const { return data_->extent; }
+const WorkStats& Terrain::stats() const { return data_->work; }
+
+} // namespace fftess::verify
