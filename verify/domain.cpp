@@ -34,7 +34,8 @@ float bilerp(const DomainShader& ds, float c0, float c1, float c2, float c3, flo
 } // namespace
 
 // tx = (x - minX) * (1 / sizeX), tz likewise, each rounded to float; height = heightScale * sample.
-float heightAt(const TerrainData& t, float x, float z) {
+float heightAt(const TerrainData& t, float x, float z, WorkStats& work) {
+  ++work.heightSamples;
   const float tx = (x - t.extent.minX) * t.invSizeX;
   const float tz = (z - t.extent.minZ) * t.invSizeZ;
   const Displacement& d = t.scene.displacement;

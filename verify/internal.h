@@ -61,8 +61,8 @@ constexpr int kOpposite[4] = {Ueq1, Veq1, Ueq0, Veq0};
 // domain.cpp: the domain-shader emulation.
 
 // Height of the displacement at world (x, z) as the vertex and domain shaders sample it (NVIDIA: texture
-// coordinate from world x/z over the extent). Displacement must not be None.
-float heightAt(const TerrainData& t, float x, float z);
+// coordinate from world x/z over the extent). Displacement must not be None. Adds one to work.heightSamples.
+float heightAt(const TerrainData& t, float x, float z, WorkStats& work);
 // World position of (u, v) on patch p. Adds one to work.domainEvaluations and, when displaced, work.heightSamples.
 glm::vec3 evalDomain(const TerrainData& t, const TerrainPatch& p, float u, float v, WorkStats& work);
 

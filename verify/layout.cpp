@@ -187,8 +187,7 @@ void prepareLod(TerrainData& t) {
   for (TerrainPatch& p : t.patches) {
     PatchGeometry& g = t.geometry[static_cast<size_t>(p.ref.index)];
     for (int c = 0; c < 4; ++c) {
-      g.heights[c] = displaced ? heightAt(t, p.corners[c].x, p.corners[c].z) : 0.0f;
-      if (displaced) ++t.work.heightSamples;
+      g.heights[c] = displaced ? heightAt(t, p.corners[c].x, p.corners[c].z, t.work) : 0.0f;
       p.lod.corners[c] = glm::vec3(p.corners[c].x, raise ? g.heights[c] : 0.0f, p.corners[c].z);
     }
     if (displaced) {

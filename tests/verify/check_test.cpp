@@ -100,15 +100,44 @@ TEST_CASE("exact_and_float_checkers_disagree_on_a_sub_ulp_offset", "[verify][che
 
 TEST_CASE("t_junction_on_flat_terrain_crack_when_displaced", "[verify][check]") {
   // Integer clamp at a 12 | 2x6 jump: flat terrain keeps every vertex on the big edge's line (T-junctions);
-  // displacement lifts the off-line vertices (cracks). Same pairs, same first mismatch.
+  // displacement lifts the off-line vertices (cracks). Same pairs, same first mismatch. The LOD sees flat corners
+  // in both runs (lod.displaced_corners = false, frustum culling off), so both choose the same factors and only
+  // the domain shader's height differs.
+  const std::vector<std::string> common = {"lod.adjacency_clamp=integer", "lod.displaced_corners=false",
+                                           "lod.frustum_cull=false"};
+  std::vector<std::string> flatSet = common, displacedSet = common;
+  flatSet.push_back("displacement.kind=none");
   for (Kernel k : kKernels) {
+    INFO(toString(k));
     CheckOptions o;
     o.kernel = k;
-    Scene flat = loadExample("terrain.toml", {"lod.adjacency_clamp=integer", "displacement.kind=none"});
+    o.maxFindings = 1000000;
+    Scene flat = loadExample("terrain.toml", flatSet);
+    Scene displaced = loadExample("terrain.toml", displacedSet);
+    REQUIRE(displaced.displacement.kind != DisplacementKind::None);
     Report rf = checkScene(prepared(flat), flat.camera, o);
+    Report rd = checkScene(prepared(displaced), displaced.camera, o);
+    REQUIRE_FALSE(rf.truncated);
+    REQUIRE_FALSE(rd.truncated);
     CHECK(rf.stats.tJunctions > 0);
     CHECK(rf.stats.cracks == 0);
     for (const Finding& f : rf.findings) CHECK(f.gapWorld == 0);
+    if (k == Kernel::FloatNaive) continue; // float predicates may call a lifted vertex "on the line"
+    // Displaced: every flat T-junction is a crack now, at the same pair and the same first mismatch.
+    CHECK(rd.stats.tJunctions == 0);
+    CHECK(rd.stats.cracks == rf.stats.tJunctions);
+    REQUIRE(rd.findings.size() == rf.findings.size());
+    for (size_t i = 0; i < rf.findings.size(); ++i) {
+      const Finding& f = rf.findings[i];
+      const Finding& d = rd.findings[i];
+      CHECK(d.classification == Classification::Crack);
+      CHECK(d.gapWorld > 0);
+      CHECK(d.a.patch.index == f.a.patch.index);
+      CHECK(d.a.edge == f.a.edge);
+      CHECK(d.b.patch.index == f.b.patch.index);
+      CHECK(d.a.firstMismatch == f.a.firstMismatch);
+      CHECK(d.b.firstMismatch == f.b.firstMismatch);
+    }
   }
 }
 
