@@ -36,8 +36,16 @@ int runCheck(const CheckArgs& a) {
     cam = scene.cameraPath[static_cast<size_t>(a.pathCamera)];
   }
   vf::CheckOptions opt = checkOptions(a);
-  const vf::Report r = vf::checkScene(terrain, cam, opt);
-  if (!r.error.empty()) throw UsageError(r.error);
+  const size_t keep = opt.maxFindings;
+  if (a.mesh) opt.maxFindings = static_cast<size_t>(-1); // the mesh comparison needs every finding
+  vf::Report full = vf::checkScene(terrain, cam, opt); // the one edge check of this camera
+  if (!full.error.empty()) throw UsageError(full.error);
+  // What the report keeps (CheckOptions::maxFindings), the same as a check without --mesh.
+  vf::Report r = full;
+  if (r.findings.size() > keep) {
+    r.findings.resize(keep);
+    r.truncated = true;
+  }
   const bool jsonToStdout = a.json == "-";
   std::string text;
   if (!a.quiet && !jsonToStdout) {
@@ -61,8 +69,6 @@ int runCheck(const CheckArgs& a) {
   }
   vf::MeshReport mesh;
   if (a.mesh) {
-    opt.maxFindings = static_cast<size_t>(-1);
-    const vf::Report full = vf::checkScene(terrain, cam, opt);
     mesh = vf::checkSceneMesh(terrain, cam, opt);
     const bool agree = vf::flaggedPatchEdges(full) == mesh.flagged;
     if (!a.quiet && !jsonToStdout)
@@ -75,7 +81,7 @@ int runCheck(const CheckArgs& a) {
   if (!a.quiet && !jsonToStdout)
     text += std::string("verdict: ") + (r.stats.cracks > 0 ? "CRACKS" : r.stats.tJunctions > 0 ? "watertight now (T-junctions)" : "watertight") + "\n";
   // Reports first (atomically), then the text: a failure writing a report leaves no partial file.
-  if (!a.json.empty()) writeReport(a.json, checkJson(a, scene, cam, r, a.mesh ? &mesh : nullptr).dump(2) + "\n");
+  if (!a.json.empty()) writeReport(a.json, checkJson(a, terrain, cam, r, a.mesh ? &mesh : nullptr).dump(2) + "\n");
   if (!a.svg.empty()) writeReport(a.svg, checkSvg(terrain, r, "fftess check " + a.scene));
   writeStdout(text);
   return status;

@@ -47,45 +47,67 @@ vf::CheckOptions checkOptions(const SceneArgs& a) {
 }
 
 // ---- causes ------------------------------------------------------------------------------------------------------
+// From the finding's own records: the LOD's (EdgeSide::lod: scheme, fix bits, neighbour rule) and the tessellator's
+// (processed factors, partitioning). Nothing is inferred from factor pairs about what the LOD did.
 static bool isPow2(float f) {
   if (!(f >= 1) || f != std::floor(f) || f > 1e9f) return false;
   const auto n = static_cast<uint64_t>(f);
   return (n & (n - 1)) == 0;
 }
 
-Cause causeOf(const vf::Finding& f) {
+// The rule the LOD applied at a 2x jump, from the small side's record: "<clamp> clamp, rebuilt <reconstruction>",
+// or the scheme's name when no adjacency code ran.
+static std::string jumpRule(const vf::EdgeSide& small) {
+  const vf::EdgeLod& l = small.lod;
+  if (l.neighbourSize != 2.0f) return std::string("lod ") + vf::toString(l.scheme) + ": no neighbour rule";
+  return std::string("lod ") + vf::toString(l.clamp) + " clamp, rebuilt " + vf::toString(l.reconstruction);
+}
+
+// One side's fix bits in lod's words ("integer-clamp, larger-neighbour"), "-" when lod/ changed nothing.
+static std::string fixWords(const vf::EdgeSide& s) {
+  std::string out;
+  for (uint32_t bit = 1; bit <= lod::FixLiteralSource; bit <<= 1)
+    if (s.lod.why.fixes & bit) out += (out.empty() ? "" : ", ") + std::string(lod::fixName(static_cast<lod::Fix>(bit)));
+  return out.empty() ? "-" : out;
+}
+
+Cause findingCause(const vf::Finding& f) {
   const vf::EdgeSide& big = f.a.patch.level >= f.b.patch.level ? f.a : f.b;
   const vf::EdgeSide& small = f.a.patch.level >= f.b.patch.level ? f.b : f.a;
   const int jump = big.patch.level - small.patch.level;
   const float B = big.processedFactor, S = small.processedFactor;
   const std::string pair = formatFloat(B) + " beside " + formatFloat(S);
   const std::string part = toString(f.partitioning);
+  const std::string record = "; lod fixes: big " + fixWords(big) + "; small " + fixWords(small);
   if (jump == 0) {
+    const std::string sides = ", hull " + formatFloat(f.a.hullFactor) + " vs " + formatFloat(f.b.hullFactor) +
+                              "; lod fixes: a " + fixWords(f.a) + "; b " + fixWords(f.b);
     if (f.a.processedFactor != f.b.processedFactor)
-      return {"same-size neighbours chose different factors",
+      return {std::string("same-size neighbours chose different factors (lod ") + vf::toString(f.a.lod.scheme) + ")",
               "same-size neighbours chose different factors (" + formatFloat(f.a.processedFactor) + " vs " +
-                  formatFloat(f.b.processedFactor) + ", hull " + formatFloat(f.a.hullFactor) + " vs " +
-                  formatFloat(f.b.hullFactor) + ")"};
+                  formatFloat(f.b.processedFactor) + sides + ")"};
     return {"same factor, different positions (domain shader / corners)",
             "both sides use factor " + formatFloat(B) + " but compute different positions (domain shader or corners)"};
   }
   if (jump > 1)
-    return {"size jump larger than 2x", "patch sizes differ by 2^" + std::to_string(jump) + " (" + pair + ")"};
+    return {"size jump larger than 2x", "patch sizes differ by 2^" + std::to_string(jump) + " (" + pair + record + ")"};
+  const std::string rule = " (" + jumpRule(small) + ")";
   if (B != 2 * S) {
     const float minimum = f.partitioning == Partitioning::FractionalEven ? 2.0f : 1.0f;
-    return {"2x jump: the small side's factor is not half the big side's",
+    return {"2x jump: the small side's factor is not half the big side's" + rule,
             "2x jump: " + pair + " (" + part + "): the small side's factor is not half the big side's" +
-                (S == minimum && B < 2 * minimum ? " (half of it is below " + part + "'s minimum " + formatFloat(minimum) + ")" : "")};
+                (S == minimum && B < 2 * minimum ? " (half of it is below " + part + "'s minimum " + formatFloat(minimum) + ")" : "") +
+                record};
   }
   if (B != std::floor(B) || S != std::floor(S))
-    return {"2x jump: fractional factors do not nest",
-            "2x jump: fractional factors " + pair + " (" + part + ") do not nest"};
+    return {"2x jump: fractional factors do not nest" + rule,
+            "2x jump: fractional factors " + pair + " (" + part + ") do not nest" + record};
   if (!isPow2(B))
-    return {"2x jump: factor not a power of two (16.16 rounding)",
+    return {"2x jump: factor not a power of two (16.16 rounding)" + rule,
             "2x jump: " + pair + " (" + part + "): B is not a power of two, the 16.16 points do not nest (fftess explain "
-            "--partitioning " + part + " " + formatFloat(B) + " " + formatFloat(S) + ")"};
+            "--partitioning " + part + " " + formatFloat(B) + " " + formatFloat(S) + ")" + record};
   return {"2x jump: nesting factors, different positions (domain shader / corners)",
-          "2x jump: " + pair + " nests in 16.16 but the positions differ (domain shader or corners)"};
+          "2x jump: " + pair + " nests in 16.16 but the positions differ (domain shader or corners)" + record};
 }
 
 // ---- text --------------------------------------------------------------------------------------------------------
@@ -101,7 +123,7 @@ std::string findingLine(const vf::Finding& f) {
                   static_cast<double>(f.gapVertex.z));
   return std::string(f.classification == vf::Classification::Crack ? "crack      " : "t-junction ") +
          patchText(f.a.patch) + " " + edgeName(f.a.edge) + " | " + patchText(f.b.patch) + " " + edgeName(f.b.edge) +
-         ":" + gap + " " + causeOf(f).detail;
+         ":" + gap + " " + findingCause(f).detail;
 }
 
 std::string fmtWorld(double v) {

@@ -17,13 +17,14 @@ const char* edgeName(int e);                          // Ueq0 Veq0 Ueq1 Veq1, "?
 std::string patchText(const vf::PatchRef& p);         // "ring R tile T patch P"
 std::string fmtWorld(double v);                       // %.3g
 
-// A short, stable name for why a finding happened (the grouping key of sweep summaries), and a longer explanation
-// with the numbers of this finding.
+// Why a finding happened, printed from its records (the LOD's per side, the tessellator's): a short, stable key (the
+// grouping key of sweep summaries: the size jump, the tessellator fact and the rule the LOD applied) and a longer
+// explanation with the numbers of this finding and each side's LOD record (vf::lodWords).
 struct Cause {
   std::string key;
   std::string detail;
 };
-Cause causeOf(const vf::Finding& f);
+Cause findingCause(const vf::Finding& f);
 
 std::string findingLine(const vf::Finding& f);        // one line: classification, both sides, gap, cause
 std::string statsText(const vf::Stats& s);            // the indented stats block of check and sweep

@@ -2,9 +2,34 @@
 #include "report_json.h"
 #include "common.h"
 
+#include <cstdio>
+
 namespace fftess::cli {
 
 json vec3Json(const glm::vec3& v) { return json::array({v.x, v.y, v.z}); }
+
+json lodJson(const vf::EdgeLod& l) {
+  json fixes = json::array();
+  for (uint32_t bit = 1; bit <= lod::FixLiteralSource; bit <<= 1)
+    if (l.why.fixes & bit) fixes.push_back(lod::fixName(static_cast<lod::Fix>(bit)));
+  json j;
+  j["scheme"] = vf::toString(l.scheme);
+  j["fixes"] = fixes;
+  j["metric"] = l.why.metric;
+  j["unclamped"] = l.why.unclamped;
+  j["exponent"] = l.why.exponent;
+  j["culled"] = l.culled;
+  j["neighbour_size"] = l.neighbourSize;
+  j["clamp"] = vf::toString(l.clamp);
+  j["reconstruction"] = vf::toString(l.reconstruction);
+  return j;
+}
+
+json workJson(const vf::WorkStats& w) {
+  return {{"terrain_builds", w.terrainBuilds},   {"height_samples", w.heightSamples},
+          {"domain_evaluations", w.domainEvaluations}, {"lod_evaluations", w.lodEvaluations},
+          {"edge_queries", w.edgeQueries},       {"cgal_calls", w.cgalCalls}};
+}
 
 static json sideJson(const vf::EdgeSide& s) {
   json j;
@@ -12,8 +37,12 @@ static json sideJson(const vf::EdgeSide& s) {
                 {"level", s.patch.level}};
   j["edge"] = edgeName(s.edge);
   j["hull_factor"] = s.hullFactor;
+  char bits[16];
+  std::snprintf(bits, sizeof bits, "0x%08X", static_cast<unsigned>(s.hullFactorBits));
+  j["factor_bits"] = bits;
   j["processed_factor"] = s.processedFactor;
   j["culled"] = s.culled;
+  j["lod"] = lodJson(s.lod);
   j["param_range"] = json::array({s.paramLo, s.paramHi});
   j["point_count"] = s.pointCount;
   j["first_mismatch"] = s.firstMismatch;
@@ -30,8 +59,8 @@ static json sideJson(const vf::EdgeSide& s) {
 json findingJson(const vf::Finding& f) {
   json j;
   j["classification"] = vf::toString(f.classification);
-  j["cause"] = causeOf(f).key;
-  j["explanation"] = causeOf(f).detail;
+  j["cause"] = findingCause(f).key;
+  j["explanation"] = findingCause(f).detail;
   j["partitioning"] = toString(f.partitioning);
   j["a"] = sideJson(f.a);
   j["b"] = sideJson(f.b);
@@ -68,8 +97,9 @@ json sceneJson(const SceneArgs& a, const vf::Scene& s) {
           {"kernel", a.kernel}};
 }
 
-json checkJson(const SceneArgs& a, const vf::Scene& scene, const vf::Camera& cam, const vf::Report& r,
+json checkJson(const SceneArgs& a, const vf::Terrain& terrain, const vf::Camera& cam, const vf::Report& r,
                const vf::MeshReport* mesh) {
+  const vf::Scene& scene = terrain.scene();
   json j;
   j["version"] = kReportVersion;
   j["kind"] = "check";
@@ -85,11 +115,17 @@ json checkJson(const SceneArgs& a, const vf::Scene& scene, const vf::Camera& cam
   if (mesh)
     j["mesh"] = {{"triangles", mesh->triangles}, {"vertices", mesh->vertices}, {"border_edges", mesh->borderEdges},
                  {"inner_border_edges", mesh->innerBorderEdges}, {"flagged_patch_edges", mesh->flagged.size()}};
+  vf::WorkStats work = terrain.stats();
+  work += r.work;
+  if (mesh) work += mesh->work;
+  work.terrainBuilds = vf::terrainBuildCount(); // every build in this process, not just the one counted above
+  j["work"] = workJson(work);
   return j;
 }
 
-json sweepJson(const SceneArgs& a, const vf::Scene& scene, const std::string& camerasSource,
+json sweepJson(const SceneArgs& a, const vf::Terrain& terrain, const std::string& camerasSource,
                const std::vector<vf::Camera>& cams, const vf::SweepResult& res, const std::vector<CauseRow>& causes) {
+  const vf::Scene& scene = terrain.scene();
   json j;
   j["version"] = kReportVersion;
   j["kind"] = "sweep";
@@ -118,6 +154,10 @@ json sweepJson(const SceneArgs& a, const vf::Scene& scene, const std::string& ca
     cl.push_back(jc);
   }
   j["cameras"] = cl;
+  vf::WorkStats work = terrain.stats();
+  work += res.work;
+  work.terrainBuilds = vf::terrainBuildCount();
+  j["work"] = workJson(work);
   return j;
 }
 

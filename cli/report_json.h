@@ -13,10 +13,12 @@ namespace fftess::cli {
 
 using json = nlohmann::ordered_json;
 
-constexpr int kReportVersion = 1; // "version" of every JSON report; bumped on any change of the schema
+constexpr int kReportVersion = 2; // "version" of every JSON report; bumped on any change of the schema
 
 json vec3Json(const glm::vec3& v);
 json findingJson(const vf::Finding& f);
+json lodJson(const vf::EdgeLod& l);   // one side's LOD record (docs/cli.md)
+json workJson(const vf::WorkStats& w);
 json statsJson(const vf::Stats& s);
 json cameraJson(const vf::Camera& c);
 json sceneJson(const SceneArgs& a, const vf::Scene& s);
@@ -31,10 +33,10 @@ struct CauseRow {
 };
 
 // The whole report of `fftess check` (mesh: null unless --mesh ran).
-json checkJson(const SceneArgs& a, const vf::Scene& scene, const vf::Camera& cam, const vf::Report& r,
+json checkJson(const SceneArgs& a, const vf::Terrain& terrain, const vf::Camera& cam, const vf::Report& r,
                const vf::MeshReport* mesh);
 // The whole report of `fftess sweep`.
-json sweepJson(const SceneArgs& a, const vf::Scene& scene, const std::string& camerasSource,
+json sweepJson(const SceneArgs& a, const vf::Terrain& terrain, const std::string& camerasSource,
                const std::vector<vf::Camera>& cams, const vf::SweepResult& res, const std::vector<CauseRow>& causes);
 
 } // namespace fftess::cli

@@ -15,7 +15,7 @@
 namespace fftess::cli {
 namespace {
 
-// Causes over a sweep: every finding of every camera names a cause (classification + causeOf key). Per cause: the
+// Causes over a sweep: every finding of every camera names a cause (classification + findingCause key). Per cause: the
 // findings, the cameras where it appeared, and the first camera where it appeared (lowest camera index; within that
 // camera the first finding in layout order, whose explanation is the example). Fed by SweepOptions::onReport, which
 // sweep serialises, in whatever order the cameras finish: the result does not depend on that order.
@@ -35,7 +35,7 @@ struct CauseTally {
     for (size_t k = 0; k < r.findings.size(); ++k) {
       const vf::Finding& f = r.findings[k];
       if (f.classification == vf::Classification::Match) continue;
-      const Cause cause = causeOf(f);
+      const Cause cause = findingCause(f);
       const std::string key = std::string(vf::toString(f.classification)) + ": " + cause.key;
       auto [it, added] = causes.try_emplace(key);
       CauseInfo& c = it->second;
@@ -180,7 +180,7 @@ int runSweep(const SweepArgs& a) {
       const CauseInfo& c = causes.at(k);
       rows.push_back({k, c.findings, c.cameras, c.first, c.detail});
     }
-    writeReport(a.json, sweepJson(a, scene, how, cams, res, rows).dump(2) + "\n");
+    writeReport(a.json, sweepJson(a, terrain, how, cams, res, rows).dump(2) + "\n");
   }
   if (!a.svg.empty()) {
     std::vector<size_t> firsts;

@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <map>
 #include <string>
 
@@ -37,6 +38,15 @@ void checkFindingShape(const json& f) {
     CHECK((e == "Ueq0" || e == "Veq0" || e == "Ueq1" || e == "Veq1"));
     CHECK(s.at("processed_factor").is_number());
     CHECK(s.at("param_range").size() == 2);
+    CHECK(s.at("factor_bits").get<std::string>().rfind("0x", 0) == 0);
+    const json& l = s.at("lod"); // the LOD's own record of this edge (docs/cli.md)
+    CHECK(l.at("scheme").is_string());
+    CHECK(l.at("fixes").is_array());
+    CHECK(l.at("metric").is_number());
+    CHECK(l.at("unclamped").is_number());
+    CHECK(l.at("culled").is_boolean());
+    CHECK(l.at("neighbour_size").is_number());
+    CHECK(l.at("clamp").is_string());
   }
   CHECK(f.at("gap_world").is_number());
   CHECK(f.at("gap_vertex").size() == 3);
@@ -99,7 +109,7 @@ TEST_CASE("check: the bundled scene is watertight with the pow2 workaround, crac
   CHECK(r.status == 0);
   CHECK(r.out.find("verdict: watertight") != std::string::npos);
   json j = json::parse(clitest::readFile(js));
-  CHECK(j.at("version") == 1);
+  CHECK(j.at("version") == 2);
   CHECK(j.at("kind") == "check");
   checkStatsShape(j.at("stats"));
   CHECK(j.at("stats").at("cracks") == 0);
@@ -117,10 +127,55 @@ TEST_CASE("check: the bundled scene is watertight with the pow2 workaround, crac
   for (const json& f : j.at("findings")) checkFindingShape(f);
   CHECK(svgOk(svg).find("id=\"inset\"") != std::string::npos);
 
-  // The integer clamp alone still cracks where B is not a power of two (the 16.16 rounding).
+  // The integer clamp alone still cracks where B is not a power of two (the 16.16 rounding): exit 1, and every
+  // finding is a crack at a 2x jump whose big side is not a power of two, with the integer clamp in both sides'
+  // LOD records.
   r = run({"check", kScene, "--set", "lod.adjacency_clamp=integer", "-q"});
-  CHECK((r.status == 0 || r.status == 1));
+  CHECK(r.status == 1);
   CHECK(r.out.empty());
+  r = run({"check", kScene, "--set", "lod.adjacency_clamp=integer", "--json", js});
+  CHECK(r.status == 1);
+  j = json::parse(clitest::readFile(js));
+  CHECK(j.at("stats").at("cracks").get<int64_t>() > 0);
+  REQUIRE_FALSE(j.at("findings").empty());
+  for (const json& f : j.at("findings")) {
+    INFO(f.dump());
+    CHECK(f.at("classification") == "crack");
+    CHECK(f.at("cause").get<std::string>().find("factor not a power of two (16.16 rounding)") != std::string::npos);
+    CHECK(f.at("cause").get<std::string>().find("integer clamp") != std::string::npos);
+    const json& big = f.at("a").at("patch").at("level") > f.at("b").at("patch").at("level") ? f.at("a") : f.at("b");
+    const json& small = &big == &f.at("a") ? f.at("b") : f.at("a");
+    const double B = big.at("processed_factor"), S = small.at("processed_factor");
+    CHECK(B == 2 * S);
+    const auto n = static_cast<uint64_t>(B);
+    CHECK(static_cast<double>(n) == B);
+    CHECK((n & (n - 1)) != 0); // not a power of two
+    for (const json* side : {&big, &small}) {
+      const json& fixes = side->at("lod").at("fixes");
+      CHECK(std::find(fixes.begin(), fixes.end(), "integer-clamp") != fixes.end());
+      CHECK(side->at("lod").at("clamp") == "integer");
+    }
+    CHECK(small.at("lod").at("neighbour_size") == 2.0);
+  }
+}
+
+// One terrain build per command: the JSON reports count the builds of the whole process.
+TEST_CASE("check, check --mesh and sweep build the terrain once", "[cli][check][sweep]") {
+  const std::string js = clitest::tmpDir() + "/builds.json";
+  const std::string svg = clitest::tmpDir() + "/builds.svg";
+  auto r = run({"check", kScene, "--json", js, "--svg", svg});
+  CHECK(r.status == 0);
+  CHECK(json::parse(clitest::readFile(js)).at("work").at("terrain_builds") == 1);
+  r = run({"check", kScene, "--mesh", "--json", js, "--svg", svg});
+  CHECK(r.status == 0);
+  json j = json::parse(clitest::readFile(js));
+  CHECK(j.at("work").at("terrain_builds") == 1);
+  CHECK(j.at("work").at("lod_evaluations") == 2 * j.at("stats").at("patches").get<int64_t>()); // edge + mesh check
+  r = run({"sweep", kScene, "--orbit", "3", "--json", js, "--svg", svg});
+  CHECK(r.status == 0);
+  j = json::parse(clitest::readFile(js));
+  CHECK(j.at("work").at("terrain_builds") == 1);
+  CHECK(j.at("work").at("lod_evaluations") == j.at("stats").at("patches")); // stats sum the patches per camera
 }
 
 TEST_CASE("check: --json - prints only JSON; --quiet prints nothing", "[cli][check]") {
@@ -183,7 +238,7 @@ TEST_CASE("sweep: workaround on is clean, off cracks; summary names causes; JSON
   CHECK(r.out.find("causes") != std::string::npos);
   CHECK(r.out.find("not a power of two") != std::string::npos);
   const json j = json::parse(clitest::readFile(js));
-  CHECK(j.at("version") == 1);
+  CHECK(j.at("version") == 2);
   CHECK(j.at("kind") == "sweep");
   CHECK(j.at("cameras_total") == 16);
   CHECK(j.at("cameras_done") == 16);
