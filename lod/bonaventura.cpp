@@ -6,19 +6,7 @@
 namespace fftess::lod {
 
 PatchLod bonaventura(const Patch& patch, const Camera& camera, const BonaventuraParams& params) {
-  glsl::BonaventuraSettings s;
-  s.minDistance = params.minDistance;
-  s.maxDistance = params.maxDistance;
-  s.minExponent = params.minExponent;
-  s.maxExponent = params.maxExponent;
-  s.angleCorrection = params.angleCorrection;
-  s.rank = params.rank;
-  s.up = params.up;
-  s.minFactor = params.minFactor;
-  s.maxFactor = params.maxFactor;
-  s.frustumCull = params.frustumCull;
-  s.culledFactor = params.culledFactor;
-  s.literalFourthCornerAngle = params.literalFourthCornerAngle;
+  const glsl::BonaventuraSettings s = detail::toGlsl(params);
   const glm::vec3* c = patch.corners;
   glsl::LodResult r = glsl::bonaventuraLod(c[0], c[1], c[2], c[3], patch.useHeightBounds, patch.minHeight,
                                            patch.maxHeight, detail::toGlsl(camera), s);

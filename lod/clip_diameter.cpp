@@ -5,13 +5,7 @@
 namespace fftess::lod {
 
 PatchLod clipDiameter(const Patch& patch, const Camera& camera, const ClipDiameterParams& params) {
-  glsl::ClipDiameterSettings s;
-  s.edgesPerScreenHeight = params.edgesPerScreenHeight;
-  s.minFactor = params.minFactor;
-  s.maxFactor = params.maxFactor;
-  s.insideRule = detail::insideRuleCode(params.inside);
-  s.frustumCull = params.frustumCull;
-  s.culledFactor = params.culledFactor;
+  const glsl::ClipDiameterSettings s = detail::toGlsl(params);
   const glm::vec3* c = patch.corners;
   glsl::LodResult r = glsl::clipDiameterLod(c[0], c[1], c[2], c[3], patch.useHeightBounds, patch.minHeight,
                                             patch.maxHeight, detail::toGlsl(camera), s);

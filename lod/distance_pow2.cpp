@@ -5,12 +5,7 @@
 namespace fftess::lod {
 
 PatchLod distancePow2(const Patch& patch, const Camera& camera, const DistancePow2Params& params) {
-  glsl::DistancePow2Settings s;
-  s.minDistance = params.minDistance;
-  s.maxDistance = params.maxDistance;
-  s.minExponent = params.minTessExponent;
-  s.maxExponent = params.maxTessExponent;
-  s.frustumCull = params.frustumCull;
+  const glsl::DistancePow2Settings s = detail::toGlsl(params);
   const glm::vec3* c = patch.corners;
   glsl::LodResult r = glsl::distancePow2Lod(c[0], c[1], c[2], c[3], patch.useHeightBounds, patch.minHeight,
                                             patch.maxHeight, detail::toGlsl(camera), s);

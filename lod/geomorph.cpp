@@ -4,21 +4,9 @@
 
 namespace fftess::lod {
 
-namespace {
-glsl::GeomorphSettings toGlsl(const GeomorphParams& p) {
-  glsl::GeomorphSettings s;
-  s.minDistance = p.minDistance;
-  s.maxDistance = p.maxDistance;
-  s.finestLevel = p.finestLevel;
-  s.coarsestLevel = p.coarsestLevel;
-  s.literalArticleWeight = p.literalArticleWeight;
-  return s;
-}
-} // namespace
-
 float geomorphLevel(const Patch& patch, const Camera& camera, const GeomorphParams& params) {
   const glm::vec3* c = patch.corners;
-  return glsl::geomorphLevelAt(glsl::patchCentre(c[0], c[1], c[2], c[3]), detail::toGlsl(camera), toGlsl(params));
+  return glsl::geomorphLevelAt(glsl::patchCentre(c[0], c[1], c[2], c[3]), detail::toGlsl(camera), detail::toGlsl(params));
 }
 
 PatchLod geomorph(float level, const float neighbourLevel[4]) {
@@ -33,7 +21,7 @@ GeomorphEdge geomorphEdgeHeights(float level, float neighbourLevel, const float 
   for (int i = 0; i < 65; ++i) {
     fine[i] = fineHeights[i];
   }
-  glsl::GeomorphBorder b = glsl::geomorphBorderHeights(level, neighbourLevel, fine, toGlsl(params));
+  glsl::GeomorphBorder b = glsl::geomorphBorderHeights(level, neighbourLevel, fine, detail::toGlsl(params));
   GeomorphEdge e;
   e.segments = b.segments;
   for (int i = 0; i < 65; ++i) {

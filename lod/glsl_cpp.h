@@ -39,7 +39,11 @@ static_assert(glsl::kFixClampedMin == FixClampedMin && glsl::kFixClampedMax == F
 
 namespace detail {
 
-// Public structs -> shader structs, and the shader result -> PatchLod.
+// Public structs -> shader structs, and the shader result -> PatchLod: the one place where lod.h's parameter structs
+// become the shaders' settings structs. They cannot be one type: a GLSL struct has no default member initialisers
+// and no constructors (lod.h documents each default in the struct), GLSL has no enums (the shaders take int codes;
+// lod.h takes InsideRule, AdjacencyClamp, Reconstruction), and the shader structs are compiled per translation unit
+// inside an unnamed namespace, so they cannot appear in a public header.
 glsl::LodCamera toGlsl(const Camera& camera) {
   glsl::LodCamera c;
   c.view = camera.view;
@@ -70,6 +74,75 @@ glsl::ScreenSphereSettings toGlsl(const ScreenSphereParams& p) {
   s.insideRule = insideRuleCode(p.inside);
   s.frustumCull = p.frustumCull;
   s.culledFactor = p.culledFactor;
+  return s;
+}
+
+glsl::TileSettings toGlsl(const NvidiaTileParams& p) {
+  glsl::TileSettings s;
+  s.sphere = toGlsl(p.sphere);
+  s.clampMode = p.clamp == AdjacencyClamp::Integer ? glsl::kClampInteger
+                : p.clamp == AdjacencyClamp::Pow2  ? glsl::kClampPow2
+                                                   : glsl::kClampNone;
+  s.rebuild = p.reconstruction == Reconstruction::FarCorner ? glsl::kRebuildFarCorner : glsl::kRebuildEdgeVector;
+  return s;
+}
+
+glsl::TileNeighbourInfo toGlsl(const TileNeighbours& t) {
+  glsl::TileNeighbourInfo n;
+  for (int i = 0; i < 4; ++i) {
+    n.size[i] = t.size[i];
+    n.farCorner[i] = t.farCorner[i];
+  }
+  n.oddU = t.oddU;
+  n.oddV = t.oddV;
+  return n;
+}
+
+glsl::DistancePow2Settings toGlsl(const DistancePow2Params& p) {
+  glsl::DistancePow2Settings s;
+  s.minDistance = p.minDistance;
+  s.maxDistance = p.maxDistance;
+  s.minExponent = p.minTessExponent;
+  s.maxExponent = p.maxTessExponent;
+  s.frustumCull = p.frustumCull;
+  return s;
+}
+
+glsl::BonaventuraSettings toGlsl(const BonaventuraParams& p) {
+  glsl::BonaventuraSettings s;
+  s.minDistance = p.minDistance;
+  s.maxDistance = p.maxDistance;
+  s.minExponent = p.minExponent;
+  s.maxExponent = p.maxExponent;
+  s.angleCorrection = p.angleCorrection;
+  s.rank = p.rank;
+  s.up = p.up;
+  s.minFactor = p.minFactor;
+  s.maxFactor = p.maxFactor;
+  s.frustumCull = p.frustumCull;
+  s.culledFactor = p.culledFactor;
+  s.literalFourthCornerAngle = p.literalFourthCornerAngle;
+  return s;
+}
+
+glsl::ClipDiameterSettings toGlsl(const ClipDiameterParams& p) {
+  glsl::ClipDiameterSettings s;
+  s.edgesPerScreenHeight = p.edgesPerScreenHeight;
+  s.minFactor = p.minFactor;
+  s.maxFactor = p.maxFactor;
+  s.insideRule = insideRuleCode(p.inside);
+  s.frustumCull = p.frustumCull;
+  s.culledFactor = p.culledFactor;
+  return s;
+}
+
+glsl::GeomorphSettings toGlsl(const GeomorphParams& p) {
+  glsl::GeomorphSettings s;
+  s.minDistance = p.minDistance;
+  s.maxDistance = p.maxDistance;
+  s.finestLevel = p.finestLevel;
+  s.coarsestLevel = p.coarsestLevel;
+  s.literalArticleWeight = p.literalArticleWeight;
   return s;
 }
 

@@ -6,20 +6,8 @@ namespace fftess::lod {
 
 PatchLod nvidiaTile(const Patch& patch, const TileNeighbours& neighbours, const Camera& camera,
                     const NvidiaTileParams& params) {
-  glsl::TileSettings s;
-  s.sphere = detail::toGlsl(params.sphere);
-  s.clampMode = params.clamp == AdjacencyClamp::Integer ? glsl::kClampInteger
-                : params.clamp == AdjacencyClamp::Pow2  ? glsl::kClampPow2
-                                                        : glsl::kClampNone;
-  s.rebuild = params.reconstruction == Reconstruction::FarCorner ? glsl::kRebuildFarCorner
-                                                                 : glsl::kRebuildEdgeVector;
-  glsl::TileNeighbourInfo n;
-  for (int i = 0; i < 4; ++i) {
-    n.size[i] = neighbours.size[i];
-    n.farCorner[i] = neighbours.farCorner[i];
-  }
-  n.oddU = neighbours.oddU;
-  n.oddV = neighbours.oddV;
+  const glsl::TileSettings s = detail::toGlsl(params);
+  const glsl::TileNeighbourInfo n = detail::toGlsl(neighbours);
   const glm::vec3* c = patch.corners;
   glsl::LodResult r = glsl::nvidiaTileLod(c[0], c[1], c[2], c[3], patch.useHeightBounds, patch.minHeight,
                                           patch.maxHeight, n, detail::toGlsl(camera), s);
