@@ -32,11 +32,12 @@ TEST_CASE("uniform_grid_never_cracks: every scheme and partitioning", "[verify][
                                           std::string("tessellation.partitioning=") + part, "lod.factor=7.3",
                                           "layout.patches_x=10", "layout.patches_z=10",
                                           "layout.corners=reconstructed"});
+      const Terrain t = prepared(s);
       for (Kernel k : kKernels) {
-        for (const Camera& cam : orbitCameras(prepared(s), 2, 30.0f, 12.0f)) {
+        for (const Camera& cam : orbitCameras(t, 2, 30.0f, 12.0f)) {
           CheckOptions o;
           o.kernel = k;
-          Report r = checkScene(prepared(s), cam, o);
+          Report r = checkScene(t, cam, o);
           INFO(scheme << " " << part << " " << toString(k));
           REQUIRE(r.error.empty());
           CHECK(r.stats.edgesChecked + r.stats.skippedCulled == 2 * 10 * 9);

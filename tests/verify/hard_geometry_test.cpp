@@ -45,10 +45,11 @@ void requireWatertight(const Scene& s, const Camera& cam, const char* what) {
 TEST_CASE("hard_geometry_128km_world_camera_1cm_above_a_corner", "[verify][hard]") {
   for (bool rings : {false, true}) {
     Scene s = world(rings);
-    const Extent e = prepared(s).extent();
+    const Terrain terrain = prepared(s);
+    const Extent e = terrain.extent();
     CHECK(e.maxX - e.minX == 128000.0f);
     // Patch 0's corner (0, 0), one centimetre above the terrain there.
-    const glm::vec3 corner = domainPosition(prepared(s), rings ? 0 : 64 * 128 + 64, 0.0f, 0.0f);
+    const glm::vec3 corner = domainPosition(terrain, rings ? 0 : 64 * 128 + 64, 0.0f, 0.0f);
     Camera cam = s.camera;
     cam.eye = glm::vec3{corner.x, corner.y + 0.01f, corner.z};
     cam.target = glm::vec3{corner.x + 100.0f, corner.y - 5.0f, corner.z + 70.0f};
@@ -62,8 +63,9 @@ TEST_CASE("hard_geometry_camera_exactly_on_an_edge", "[verify][hard]") {
   for (bool rings : {false, true}) {
     // Flat terrain: the eye lies on the edge's line itself (y = 0), looking along it.
     Scene s = world(rings, {"displacement.kind=none"});
-    const glm::vec3 a = domainPosition(prepared(s), rings ? 5 : 64 * 128 + 64, 0.0f, 0.0f);
-    const glm::vec3 b = domainPosition(prepared(s), rings ? 5 : 64 * 128 + 64, 0.0f, 1.0f);
+    const Terrain terrain = prepared(s);
+    const glm::vec3 a = domainPosition(terrain, rings ? 5 : 64 * 128 + 64, 0.0f, 0.0f);
+    const glm::vec3 b = domainPosition(terrain, rings ? 5 : 64 * 128 + 64, 0.0f, 1.0f);
     Camera cam = s.camera;
     cam.eye = glm::vec3{a.x, 0.0f, 0.5f * (a.z + b.z)};
     cam.target = glm::vec3{a.x, 0.0f, b.z + 1000.0f};

@@ -69,15 +69,17 @@ TEST_CASE("pow2_regression_integer_clamp_12_beside_2x6_cracks_where_16_16_predic
   }
 
   Scene s = loadExample("terrain.toml", {"lod.adjacency_clamp=integer"});
+
+  const Terrain terrain = prepared(s);
   for (Kernel k : {Kernel::Epick, Kernel::Epeck}) {
     CheckOptions o;
     o.kernel = k;
     o.maxFindings = 100000;
     int seen12 = 0;
     std::vector<Camera> cams = {s.camera};
-    for (const Camera& c : orbitCameras(prepared(s), 4, 80.0f, 25.0f)) cams.push_back(c);
+    for (const Camera& c : orbitCameras(terrain, 4, 80.0f, 25.0f)) cams.push_back(c);
     for (const Camera& cam : cams) {
-      Report r = checkScene(prepared(s), cam, o);
+      Report r = checkScene(terrain, cam, o);
       for (const Finding& f : r.findings) {
         INFO(toString(k) << " big " << f.a.processedFactor << " small " << f.b.processedFactor);
         CHECK(f.classification == Classification::Crack);
@@ -104,13 +106,14 @@ TEST_CASE("pow2_regression_integer_clamp_12_beside_2x6_cracks_where_16_16_predic
 
 TEST_CASE("pow2_regression_pow2_clamp_never_cracks_over_1000_cameras", "[verify][pow2][sweep]") {
   Scene s = loadExample("rings_small.toml");
-  std::vector<Camera> cams = randomCameras(prepared(s), 900, 20261122);
-  for (const Camera& c : orbitCameras(prepared(s), 50, 60.0f, 10.0f)) cams.push_back(c);
-  for (const Camera& c : flyoverCameras(prepared(s), 50, 6.0f)) cams.push_back(c);
+  const Terrain terrain = prepared(s);
+  std::vector<Camera> cams = randomCameras(terrain, 900, 20261122);
+  for (const Camera& c : orbitCameras(terrain, 50, 60.0f, 10.0f)) cams.push_back(c);
+  for (const Camera& c : flyoverCameras(terrain, 50, 6.0f)) cams.push_back(c);
   REQUIRE(cams.size() >= 1000);
   SweepOptions so;
   so.threads = 2;
-  SweepResult r = sweep(prepared(s), cams, {}, so);
+  SweepResult r = sweep(terrain, cams, {}, so);
   CHECK(r.camerasDone == cams.size());
   CHECK(r.total.edgesChecked > 1000000);
   CHECK(r.total.cracks == 0);

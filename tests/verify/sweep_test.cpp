@@ -12,19 +12,20 @@ using namespace fftess::verify::test;
 
 TEST_CASE("camera generators are deterministic and sized", "[verify][sweep]") {
   Scene s = loadExample("rings_small.toml");
-  CHECK(randomCameras(prepared(s), 17, 5).size() == 17);
-  CHECK(orbitCameras(prepared(s), 9).size() == 9);
-  CHECK(flyoverCameras(prepared(s), 4).size() == 4);
-  CHECK(pathCameras(prepared(s)).size() == 1);
-  auto a = randomCameras(prepared(s), 10, 42), b = randomCameras(prepared(s), 10, 42), c = randomCameras(prepared(s), 10, 43);
+  const Terrain terrain = prepared(s);
+  CHECK(randomCameras(terrain, 17, 5).size() == 17);
+  CHECK(orbitCameras(terrain, 9).size() == 9);
+  CHECK(flyoverCameras(terrain, 4).size() == 4);
+  CHECK(pathCameras(terrain).size() == 1);
+  auto a = randomCameras(terrain, 10, 42), b = randomCameras(terrain, 10, 42), c = randomCameras(terrain, 10, 43);
   for (size_t i = 0; i < a.size(); ++i) {
     CHECK(a[i].eye.x == b[i].eye.x);
     CHECK(a[i].target.z == b[i].target.z);
     CHECK(a[i].width == s.camera.width);
   }
   CHECK(a[0].eye.x != c[0].eye.x);
-  const Extent e = prepared(s).extent();
-  for (const Camera& cam : randomCameras(prepared(s), 200, 7)) {
+  const Extent e = terrain.extent();
+  for (const Camera& cam : randomCameras(terrain, 200, 7)) {
     CHECK(cam.eye.x >= e.minX);
     CHECK(cam.eye.x <= e.maxX);
     CHECK(cam.eye.y > 0);
@@ -60,7 +61,8 @@ fov_y = 45.0
 
 TEST_CASE("sweep on threads equals one thread, with progress", "[verify][sweep]") {
   Scene s = loadExample("rings_small.toml", {"lod.adjacency_clamp=integer"});
-  auto cams = randomCameras(prepared(s), 24, 99);
+  const Terrain terrain = prepared(s);
+  auto cams = randomCameras(terrain, 24, 99);
   SweepOptions one, two;
   one.threads = 1;
   two.threads = 2;
@@ -69,7 +71,7 @@ TEST_CASE("sweep on threads equals one thread, with progress", "[verify][sweep]"
     CHECK(total == cams.size());
     seen.push_back(done);
   };
-  SweepResult a = sweep(prepared(s), cams, {}, one), b = sweep(prepared(s), cams, {}, two);
+  SweepResult a = sweep(terrain, cams, {}, one), b = sweep(terrain, cams, {}, two);
   REQUIRE(seen.size() == cams.size());
   for (size_t i = 0; i < seen.size(); ++i) CHECK(seen[i] == i + 1);
   CHECK(a.camerasDone == cams.size());
@@ -83,13 +85,14 @@ TEST_CASE("sweep on threads equals one thread, with progress", "[verify][sweep]"
     CHECK(a.cameras[i].stats.cracks == b.cameras[i].stats.cracks);
     CHECK(a.cameras[i].hasFinding == (a.cameras[i].stats.cracks > 0));
     // The same as checking the camera alone.
-    if (i < 3) CHECK(checkScene(prepared(s), cams[i]).stats.cracks == a.cameras[i].stats.cracks);
+    if (i < 3) CHECK(checkScene(terrain, cams[i]).stats.cracks == a.cameras[i].stats.cracks);
   }
 }
 
 TEST_CASE("sweep cancel stops early", "[verify][sweep]") {
   Scene s = loadExample("rings_small.toml");
-  auto cams = randomCameras(prepared(s), 200, 1);
+  const Terrain terrain = prepared(s);
+  auto cams = randomCameras(terrain, 200, 1);
   std::atomic<bool> cancel{false};
   SweepOptions so;
   so.threads = 2;
@@ -97,7 +100,7 @@ TEST_CASE("sweep cancel stops early", "[verify][sweep]") {
   so.progress = [&](size_t done, size_t) {
     if (done >= 3) cancel = true;
   };
-  SweepResult r = sweep(prepared(s), cams, {}, so);
+  SweepResult r = sweep(terrain, cams, {}, so);
   CHECK(r.cancelled);
   CHECK(r.camerasDone >= 3);
   CHECK(r.camerasDone < cams.size());
@@ -180,7 +183,8 @@ TEST_CASE("sweep onReport: every camera once, serialised, the same reports on 1 
 
 TEST_CASE("sweep onReport: cancelled sweeps report exactly the cameras done", "[verify][sweep]") {
   Scene s = loadExample("rings_small.toml");
-  auto cams = randomCameras(prepared(s), 200, 1);
+  const Terrain terrain = prepared(s);
+  auto cams = randomCameras(terrain, 200, 1);
   std::atomic<bool> cancel{false};
   std::vector<int> calls(cams.size(), 0);
   SweepOptions so;
@@ -190,7 +194,7 @@ TEST_CASE("sweep onReport: cancelled sweeps report exactly the cameras done", "[
   so.progress = [&](size_t done, size_t) {
     if (done >= 3) cancel = true;
   };
-  SweepResult r = sweep(prepared(s), cams, {}, so);
+  SweepResult r = sweep(terrain, cams, {}, so);
   CHECK(r.cancelled);
   for (size_t i = 0; i < cams.size(); ++i) {
     INFO("camera " << i);
