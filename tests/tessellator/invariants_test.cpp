@@ -10,7 +10,7 @@
 using namespace fftess;
 using namespace fftess::testing;
 
-TEST_CASE("invariants on random patches with special values", "[invariants]") {
+TEST_CASE("invariants on random patches with special values", "[invariants][slow]") {
   FactorDraw draw(20261121u);
   Tessellator t, tw;
   int tessellated = 0, culled = 0;

@@ -102,7 +102,7 @@ TEST_CASE("pow2_regression_integer_clamp_12_beside_2x6_cracks_where_16_16_predic
   }
 }
 
-TEST_CASE("pow2_regression_pow2_clamp_never_cracks_over_1000_cameras", "[verify][pow2][sweep]") {
+TEST_CASE("pow2_regression_pow2_clamp_never_cracks_over_1000_cameras", "[verify][pow2][sweep][slow]") {
   Scene s = loadExample("rings_small.toml");
   std::vector<Camera> cams = randomCameras(s, 900, 20261122);
   for (const Camera& c : orbitCameras(s, 50, 60.0f, 10.0f)) cams.push_back(c);
