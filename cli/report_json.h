@@ -13,7 +13,9 @@ namespace fftess::cli {
 
 using json = nlohmann::ordered_json;
 
-constexpr int kReportVersion = 1; // "version" of every JSON report; bumped on any change of the schema
+// "version" of the check and sweep JSON reports; bumped on any change of their schema (docs/cli.md).
+// 2: the classification and cause keys spell T-junctions "t_junction" (version 1 wrote "t-junction").
+constexpr int kReportVersion = 2;
 
 json vec3Json(const vf::Vec3& v);
 json findingJson(const vf::Finding& f);

@@ -515,7 +515,7 @@ SceneResult loadScene(const std::string& path, const std::vector<std::string>& o
 const char* toString(Classification c) {
   switch (c) {
   case Classification::Match: return "match";
-  case Classification::TJunction: return "t-junction";
+  case Classification::TJunction: return "t_junction";
   case Classification::Crack: return "crack";
   }
   return "?";
