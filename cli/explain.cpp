@@ -8,7 +8,9 @@
 #include "common.h"
 
 #include "tessellator/batch.h"
+#include "tessellator/names.h"
 #include "tessellator/tessellator.h"
+#include "tessellator/trace.h"
 
 #include <nlohmann/json.hpp>
 
@@ -508,11 +510,10 @@ CLI::App* addExplain(CLI::App& app, ExplainArgs& a) {
               "  fftess explain --why-pow2 --partitioning fractional_even --json");
   sub->add_option("factors", a.factors, "BIG SMALL: the factors (decimal, or 0x + 8 hex digits)")->expected(0, 2);
   sub->add_option("-p,--partitioning", a.partitioning, "Partitioning")
-      ->check(CLI::IsMember({"integer", "pow2", "fractional_even", "fractional_odd"}))
+      ->check(CLI::IsMember(partitioningNames()))
       ->capture_default_str();
   sub->add_option("--stage", a.stage, "Stage the factors enter: hw, or an hlsl-* stage (edge preconditioning)")
-      ->check(CLI::IsMember({"hw", "hlsl-avg", "hlsl-min", "hlsl-max", "hlsl-avg-1axis", "hlsl-min-1axis",
-                             "hlsl-max-1axis"}))
+      ->check(CLI::IsMember(stageNames()))
       ->capture_default_str();
   sub->add_flag("--why-pow2", a.whyPow2, "Table of B = 2..64 against S = B/2: which pairs meet, worst gap");
   sub->add_flag("--json", a.json, "Machine-readable output on stdout (schema in docs/cli.md)");

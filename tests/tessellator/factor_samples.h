@@ -8,7 +8,9 @@
 #include <string>
 #include <vector>
 
+#include "tessellator/names.h"
 #include "tessellator/tessellator.h"
+#include "tessellator/trace.h"
 
 namespace fftess {
 namespace testing {
