@@ -159,10 +159,7 @@ SharedEdgeTicks sharedEdgeTicks(const SharedEdgeSpan& a, const SharedEdgeSpan& b
   SharedEdgeTicks r;
   const EdgePoints ea = edgePoints(a.factor, partitioning, stage, options);
   const EdgePoints eb = edgePoints(b.factor, partitioning, stage, options);
-  if (ea.culled || eb.culled) {
-    r.culled = true;
-    return r;
-  }
+  r.culled = ea.culled || eb.culled; // a culled side has no points: no ticks, and no partners for the other side
   auto ticks = [](const EdgePoints& e, const SharedEdgeSpan& s) {
     std::vector<SharedEdgeTick> out;
     const double lo = s.lo, hi = s.hi;
