@@ -1,6 +1,6 @@
 // fftess tessellator: a bit-exact CPU emulator of the Direct3D 11 fixed-function tessellator.
 //
-// This header is the whole public contract of the module (standard library only).
+// This header is the contract of the module (standard library only).
 //
 // Two stages, both public:
 //   * the hardware stage ("hw"): tessellation factors exactly as a hull shader hands them to the fixed-function
