@@ -80,7 +80,8 @@ std::string whyText(const HalfEdgeComparison& c, const HalfEdgeRow& r) {
            qText(halfOf(sb.ideal, small.edge == 2 ? 65536 : 0)) + " /65536): the factors' segments do not nest";
   std::vector<std::string> parts;
   if (has(r, MismatchCause::SpecialHalf))
-    parts.push_back(std::string(bb.midpoint ? "big" : "small") + " point is the special-cased exact 0.5; the other is " +
+    parts.push_back(std::string(bb.midpoint ? "big" : "small") +
+                    " point is the special-cased exact 0.5; the other is " +
                     "computed (" + pointFormula(bb.midpoint ? c.small : c.big, bb.midpoint ? small.index : big.index,
                                                  bb.midpoint ? "small" : "big") + ")");
   if (has(r, MismatchCause::ReciprocalTable)) {
@@ -100,8 +101,8 @@ std::string whyText(const HalfEdgeComparison& c, const HalfEdgeRow& r) {
     parts.push_back(s);
   }
   if (has(r, MismatchCause::LerpRounding))
-    parts.push_back("lerp rounded to 16.16 [error big " + qText(bb.lerpError) + ", small " + qText(halfOf(sb.lerpError)) +
-                    " (in 1/65536)]");
+    parts.push_back("lerp rounded to 16.16 [error big " + qText(bb.lerpError) + ", small " +
+                    qText(halfOf(sb.lerpError)) + " (in 1/65536)]");
   std::string why;
   for (size_t i = 0; i < parts.size(); ++i) why += (i ? "; " : "") + parts[i];
   return why;

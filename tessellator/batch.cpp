@@ -103,7 +103,8 @@ bool parseBatchLine(const std::string& line, Patch& patch, BatchError& err) {
   };
   Patch p;
   if (t.empty()) return fail(1, "", std::string("empty line (expected ") + kFormat + ")");
-  if (!parseDomain(t[0].c_str(), p.domain)) return fail(1, t[0], "unknown domain (expected " + joinNames(domainNames()) + ")");
+  if (!parseDomain(t[0].c_str(), p.domain))
+    return fail(1, t[0], "unknown domain (expected " + joinNames(domainNames()) + ")");
   if (t.size() < 2)
     return fail(2, "", "missing partitioning after '" + t[0] + "' (expected " + kFormat + ")");
   if (!parsePartitioning(t[1].c_str(), p.partitioning))

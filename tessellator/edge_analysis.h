@@ -120,7 +120,7 @@ struct SharedEdgeTick {
 };
 
 struct SharedEdgeTicks {
-  bool culled = false;           // a side's factor is not > 0: that side has no ticks (the other side's have no partner)
+  bool culled = false;           // a side's factor is not > 0: it has no ticks, the other side's have no partner
   std::vector<SharedEdgeTick> a; // side a's points with lo <= param <= hi, in increasing t
   std::vector<SharedEdgeTick> b;
 };

@@ -1,7 +1,6 @@
 // Scene files: TOML (toml++) -> Scene, with every error naming the key and the file position, unknown keys
 // rejected, and `KEY=VALUE` overrides validated exactly like the file.
 #include "verify/internal.h"
-#include "tessellator/names.h"
 
 #include <cmath>
 #include <cstring>

@@ -55,7 +55,8 @@ TEST_CASE("S = 7: r(7) = 2 r(14) but 14 r(14) = 65534", "[pow2]") {
   CHECK_FALSE(compareHalfEdges(14.0f, 7.0f, Partitioning::Integer).match);
 }
 
-TEST_CASE("causes: 12 beside 2x6 is the reciprocal table (and the small edges' special 0.5); odd 7 beside 2x3.5 is the point count", "[pow2]") {
+TEST_CASE("causes: 12 beside 2x6 is the reciprocal table (and the special 0.5); 7 beside 2x3.5 the point count",
+          "[pow2]") {
   const HalfEdgeComparison c = compareHalfEdges(12.0f, 6.0f, Partitioning::Integer);
   REQUIRE(c.paired);
   int attributed = 0;
