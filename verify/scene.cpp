@@ -376,8 +376,7 @@ void readScene(Reader& r, const toml::table& root, Scene& s, const std::string& 
     std::string stage;
     if (r.string(t, p, "stage", stage) && !parseStage(stage.c_str(), s.stage))
       r.fail(p + "stage", t.get("stage"),
-             "unknown value \"" + stage + "\" (expected hw | hlsl-avg | hlsl-min | hlsl-max | hlsl-avg-1axis | "
-                                          "hlsl-min-1axis | hlsl-max-1axis)");
+             "unknown value \"" + stage + "\" (expected " + joinNames(stageNames(), " | ") + ")");
   }
 
   // [domain]
