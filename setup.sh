@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # fftess setup: installs the Debian 12 packages fftess needs (when missing), builds, and runs.
 #   bash setup.sh run    install, build, run the main job (crack sweep of the bundled default scene, twice)
-#   bash setup.sh test   install, build, run the whole test suite (ctest)
+#   bash setup.sh test   install, build, run the whole test suite (ctest), then a second build with ASan+UBSan
+#                        (build-sanitize/) and the tests not labelled slow under it
 #   bash setup.sh build  install and build only
-# Environment: BUILD_DIR (default build), BUILD_TYPE (default Release), JOBS (default: all cores).
+# Environment: BUILD_DIR (default build), BUILD_TYPE (default Release), JOBS (default: all cores),
+#   SANITIZE (default 1; 0 skips the sanitizer build of `test`), SANITIZE_DIR (default build-sanitize).
 set -euo pipefail
 cd "$(dirname "$0")"
 
@@ -11,6 +13,8 @@ mode=${1:-run}
 BUILD_DIR=${BUILD_DIR:-build}
 BUILD_TYPE=${BUILD_TYPE:-Release}
 JOBS=${JOBS:-$(nproc)}
+SANITIZE=${SANITIZE:-1}
+SANITIZE_DIR=${SANITIZE_DIR:-build-sanitize}
 
 packages=(
   g++ cmake ninja-build
@@ -40,6 +44,16 @@ build() {
   cmake --build "$BUILD_DIR" -j "$JOBS"
 }
 
+# The fast tests (ctest -LE slow) again, built with AddressSanitizer and UndefinedBehaviorSanitizer (any report fails
+# the test: -fno-sanitize-recover=all). No benchmarks in this build.
+sanitize_tests() {
+  echo "setup: sanitizer build ($SANITIZE_DIR, address,undefined) and the tests not labelled slow"
+  cmake -S . -B "$SANITIZE_DIR" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFFTESS_SANITIZE=address,undefined \
+    -DFFTESS_BENCHMARKS=OFF
+  cmake --build "$SANITIZE_DIR" -j "$JOBS"
+  UBSAN_OPTIONS=print_stacktrace=1 ctest --test-dir "$SANITIZE_DIR" --output-on-failure -j "$JOBS" -LE slow
+}
+
 case "$mode" in
   build)
     install_packages
@@ -67,6 +81,7 @@ case "$mode" in
     install_packages
     build
     ctest --test-dir "$BUILD_DIR" --output-on-failure -j "$JOBS"
+    if [ "$SANITIZE" != 0 ]; then sanitize_tests; fi
     ;;
   *)
     echo "usage: bash setup.sh [run|test|build]" >&2

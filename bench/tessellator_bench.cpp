@@ -1,6 +1,8 @@
 // What accuracy costs in time, tessellator side: full tessellation vs points only vs the edge query vs the trace,
 // hw vs HLSL stage, uniform vs terrain-like factors. Run: fftess bench [--benchmark_filter=REGEX].
+#include "tessellator/names.h"
 #include "tessellator/tessellator.h"
+#include "tessellator/trace.h"
 
 #include <benchmark/benchmark.h>
 

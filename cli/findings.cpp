@@ -121,7 +121,7 @@ std::string findingLine(const vf::Finding& f) {
     std::snprintf(gap, sizeof gap, " gap %.3g world (%.3g px) at (%.6g, %.6g, %.6g);", f.gapWorld, f.gapPixels,
                   static_cast<double>(f.gapVertex.x), static_cast<double>(f.gapVertex.y),
                   static_cast<double>(f.gapVertex.z));
-  return std::string(f.classification == vf::Classification::Crack ? "crack      " : "t-junction ") +
+  return std::string(f.classification == vf::Classification::Crack ? "crack      " : "t_junction ") +
          patchText(f.a.patch) + " " + edgeName(f.a.edge) + " | " + patchText(f.b.patch) + " " + edgeName(f.b.edge) +
          ":" + gap + " " + findingCause(f).detail;
 }

@@ -13,7 +13,10 @@ namespace fftess::cli {
 
 using json = nlohmann::ordered_json;
 
-constexpr int kReportVersion = 2; // "version" of every JSON report; bumped on any change of the schema
+// "version" of the check and sweep JSON reports; bumped on any change of their schema (docs/cli.md).
+// 2: the classification and cause keys spell T-junctions "t_junction" (version 1 wrote "t-junction").
+// 3: per side "factor_bits" and "lod" (the LOD's own record), and "work" (the command's work counters).
+constexpr int kReportVersion = 3;
 
 json vec3Json(const glm::vec3& v);
 json findingJson(const vf::Finding& f);

@@ -3,6 +3,7 @@
 #include "common.h"
 
 #include "tessellator/batch.h"
+#include "tessellator/names.h"
 #include "tessellator/tessellator.h"
 
 #include <cerrno>
@@ -230,8 +231,8 @@ CLI::App* addTessellate(CLI::App& app, TessellateArgs& a) {
   CLI::App* sub = app.add_subcommand("tessellate", "Tessellate patches given one per line (batch format)");
   sub->footer(
       "Batch line: DOMAIN PARTITIONING TOPOLOGY STAGE f0 f1 f2 f3 f4 f5   (blank lines and # comments ignored)\n"
-      "  DOMAIN quad|tri|isoline   PARTITIONING integer|pow2|fractional_even|fractional_odd\n"
-      "  TOPOLOGY point|line|triangle_cw|triangle_ccw   STAGE hw|hlsl-avg|hlsl-min|hlsl-max|hlsl-*-1axis\n"
+      "  DOMAIN " + joinNames(domainNames()) + "   PARTITIONING " + joinNames(partitioningNames()) + "\n"
+      "  TOPOLOGY " + joinNames(outputPrimitiveNames()) + "   STAGE " + joinNames(stageNames()) + "\n"
       "  factor: decimal float, or 0x + 8 hex digits (IEEE-754 bits)\n"
       "Examples:\n"
       "  fftess tessellate -e 'quad fractional_odd triangle_cw hw 3.5 2 5 4 3 3'\n"

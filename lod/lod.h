@@ -284,9 +284,9 @@ GeomorphEdge geomorphEdgeHeights(float level, float neighbourLevel, const float 
 
 // ---------------------------------------------------------------------------------------------------------------
 // Printing helpers for the CLI.
-const char* schemeName(Scheme scheme);   // "screen-sphere", "nvidia-tile", "distance-pow2", "bonaventura", ...,
-                                         // "patch-center"
-const char* fixName(Fix fix);            // one bit's name, "" for FixNone or several bits
+const char* schemeName(Scheme scheme);   // "screen_sphere", "nvidia_tile", "distance_pow2", "bonaventura", ...,
+                                         // "patch_center" (snake_case, as every name fftess prints)
+const char* fixName(Fix fix);            // one bit's name ("pow2_clamp"), "" for FixNone or several bits
 
 // The shader sources, in the order GLSL needs them concatenated (common first): for a GPU port or an oracle.
 // Each entry is one .glsl file's text; count via glslSourceCount().

@@ -20,19 +20,19 @@ Camera makeCamera(glm::vec3 eye, glm::vec3 target, glm::vec3 up, float fovyRadia
 const char* schemeName(Scheme scheme) {
   switch (scheme) {
   case Scheme::ScreenSphere:
-    return "screen-sphere";
+    return "screen_sphere";
   case Scheme::NvidiaTile:
-    return "nvidia-tile";
+    return "nvidia_tile";
   case Scheme::DistancePow2:
-    return "distance-pow2";
+    return "distance_pow2";
   case Scheme::Bonaventura:
     return "bonaventura";
   case Scheme::ClipDiameter:
-    return "clip-diameter";
+    return "clip_diameter";
   case Scheme::Geomorph:
     return "geomorph";
   case Scheme::PatchCenter:
-    return "patch-center";
+    return "patch_center";
   }
   return "";
 }
@@ -42,27 +42,27 @@ const char* fixName(Fix fix) {
   case FixNone:
     return "";
   case FixClampedMin:
-    return "clamped-min";
+    return "clamped_min";
   case FixClampedMax:
-    return "clamped-max";
+    return "clamped_max";
   case FixCulled:
     return "culled";
   case FixLargerNeighbour:
-    return "larger-neighbour";
+    return "larger_neighbour";
   case FixSmallerNeighbour:
-    return "smaller-neighbour";
+    return "smaller_neighbour";
   case FixIntegerClamp:
-    return "integer-clamp";
+    return "integer_clamp";
   case FixPow2Clamp:
-    return "pow2-clamp";
+    return "pow2_clamp";
   case FixAngleCorrection:
-    return "angle-correction";
+    return "angle_correction";
   case FixRoundedExponent:
-    return "rounded-exponent";
+    return "rounded_exponent";
   case FixCoarserNeighbour:
-    return "coarser-neighbour";
+    return "coarser_neighbour";
   case FixLiteralSource:
-    return "literal-source";
+    return "literal_source";
   }
   return "";
 }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "fixed.h"
+#include "names.h"
 
 namespace fftess {
 namespace {
@@ -91,8 +92,8 @@ const char* factorName(Domain domain, int i) {
 
 bool parseBatchLine(const std::string& line, Patch& patch, BatchError& err) {
   static const char* const kFormat = "DOMAIN PARTITIONING TOPOLOGY STAGE f0 f1 f2 f3 f4 f5";
-  static const char* const kTopologies = "point|line|triangle_cw|triangle_ccw";
-  static const char* const kStages = "hw|hlsl-avg|hlsl-min|hlsl-max|hlsl-avg-1axis|hlsl-min-1axis|hlsl-max-1axis";
+  static const std::string kTopologies = joinNames(outputPrimitiveNames());
+  static const std::string kStages = joinNames(stageNames());
   const std::vector<std::string> t = tokens(line);
   auto fail = [&](int column, const std::string& token, const std::string& message) {
     err.column = column;
@@ -102,19 +103,20 @@ bool parseBatchLine(const std::string& line, Patch& patch, BatchError& err) {
   };
   Patch p;
   if (t.empty()) return fail(1, "", std::string("empty line (expected ") + kFormat + ")");
-  if (!parseDomain(t[0].c_str(), p.domain)) return fail(1, t[0], "unknown domain (expected quad|tri|isoline)");
+  if (!parseDomain(t[0].c_str(), p.domain))
+    return fail(1, t[0], "unknown domain (expected " + joinNames(domainNames()) + ")");
   if (t.size() < 2)
     return fail(2, "", "missing partitioning after '" + t[0] + "' (expected " + kFormat + ")");
   if (!parsePartitioning(t[1].c_str(), p.partitioning))
-    return fail(2, t[1], "unknown partitioning (expected integer|pow2|fractional_even|fractional_odd)");
-  if (t.size() < 3) return fail(3, "", std::string("missing topology (expected ") + kTopologies + ")");
+    return fail(2, t[1], "unknown partitioning (expected " + joinNames(partitioningNames()) + ")");
+  if (t.size() < 3) return fail(3, "", "missing topology (expected " + kTopologies + ")");
   if (!parseOutputPrimitive(t[2].c_str(), p.primitive))
-    return fail(3, t[2], std::string("unknown topology (expected ") + kTopologies + ")");
+    return fail(3, t[2], "unknown topology (expected " + kTopologies + ")");
   if (p.domain == Domain::Isoline &&
       (p.primitive == OutputPrimitive::TriangleCw || p.primitive == OutputPrimitive::TriangleCcw))
     return fail(3, t[2], "isoline output is point or line");
-  if (t.size() < 4) return fail(4, "", std::string("missing stage (expected ") + kStages + ")");
-  if (!parseStage(t[3].c_str(), p.stage)) return fail(4, t[3], std::string("unknown stage (expected ") + kStages + ")");
+  if (t.size() < 4) return fail(4, "", "missing stage (expected " + kStages + ")");
+  if (!parseStage(t[3].c_str(), p.stage)) return fail(4, t[3], "unknown stage (expected " + kStages + ")");
   if (t.size() < 10)
     return fail(int(t.size()) + 1, "",
                 "expected 6 factors after the stage, got " + std::to_string(t.size() - 4) + " (format: " + kFormat + ")");

@@ -53,4 +53,15 @@ float hlslOuterEdge(float factor, Partitioning p);
 // Applies Options: flushes denormal inputs to zero when asked.
 inline float applyOptions(float f, const Options& o) { return o.flushDenormals ? fx::flushDenormal(f) : f; }
 
+// One outer edge through both stages, as the edge query and the trace see it: options, then the HLSL stage's
+// per-edge preconditioning if asked, then the hardware stage. hlslFactor (may be null) receives the factor the
+// hardware stage gets.
+inline ProcessedEdge processEdgeThroughStages(float factor, Partitioning p, const Stage& stage, const Options& options,
+                                              float* hlslFactor) {
+  float f = applyOptions(factor, options);
+  if (stage.hlsl && f > 0.0f) f = hlslOuterEdge(f, p);
+  if (hlslFactor) *hlslFactor = f;
+  return processOuterEdge(f, p);
+}
+
 } // namespace fftess

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "names.h"
 #include "tessellator.h"
 
 using namespace fftess;
@@ -18,9 +19,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   p.domain = Domain(data[0] % 3);
   p.partitioning = Partitioning(data[1] % 4);
   p.primitive = OutputPrimitive(data[2] % 4);
-  const char* stages[] = {"hw", "hlsl-avg", "hlsl-min", "hlsl-max", "hlsl-avg-1axis", "hlsl-min-1axis",
-                          "hlsl-max-1axis"};
-  parseStage(stages[data[3] % 7], p.stage);
+  const std::vector<std::string>& stages = stageNames();
+  parseStage(stages[data[3] % stages.size()].c_str(), p.stage);
   std::memcpy(p.factors, data + 4, sizeof p.factors);
   Options o;
   o.flushDenormals = data[28] & 1;

@@ -1,6 +1,6 @@
 #include "spacing.h"
 
-#include "tessellator.h"
+#include "trace.h"
 
 namespace fftess {
 namespace {

@@ -1,4 +1,4 @@
-// Public entry points: Tessellator, edge query, trace, names, output counts.
+// Public entry points: Tessellator, edge query, output counts. (Traces: trace.cpp; names: names.cpp.)
 #include "tessellator.h"
 
 #include <cstring>
@@ -82,17 +82,9 @@ int Tessellator::tessellate(const Patch& patch, const Options& options) {
 
 // ---------------------------------------------------------------------------------------------------------------
 
-static ProcessedEdge edgeThroughStages(float factor, Partitioning p, const Stage& stage, const Options& options,
-                                       float* hlslFactor) {
-  float f = applyOptions(factor, options);
-  if (stage.hlsl && f > 0.0f) f = hlslOuterEdge(f, p);
-  if (hlslFactor) *hlslFactor = f;
-  return processOuterEdge(f, p);
-}
-
 EdgePoints edgePoints(float factor, Partitioning partitioning, const Stage& stage, const Options& options) {
   EdgePoints r;
-  const ProcessedEdge e = edgeThroughStages(factor, partitioning, stage, options, nullptr);
+  const ProcessedEdge e = processEdgeThroughStages(factor, partitioning, stage, options, nullptr);
   if (e.culled) {
     r.culled = true;
     return r;
@@ -107,38 +99,6 @@ EdgePoints edgePoints(float factor, Partitioning partitioning, const Stage& stag
     r.param[k] = fx::fixedToFloat(r.fixed[k]);
   }
   return r;
-}
-
-EdgeTrace traceEdge(float factor, Partitioning partitioning, const Stage& stage, const Options& options) {
-  EdgeTrace t;
-  t.input = factor;
-  t.flushedDenormal = fx::bitsOf(applyOptions(factor, options)) != fx::bitsOf(factor);
-  const ProcessedEdge e = edgeThroughStages(factor, partitioning, stage, options, &t.hlslFactor);
-  if (e.culled) {
-    t.culled = true;
-    return t;
-  }
-  t.clamped = e.clamped;
-  t.rounded = e.rounded;
-  t.oddParity = e.odd;
-  t.fixedFactor = e.fixed;
-  const AxisSpacing s = makeAxisSpacing(e.fixed, e.odd);
-  t.halfFactor = s.halfFactor;
-  t.floorHalf = s.floorHalf;
-  t.ceilHalf = s.ceilHalf;
-  t.halfFraction = s.halfFraction;
-  t.numHalfPoints = s.numHalfPoints;
-  t.splitPoint = s.splitPoint;
-  t.floorSegments = s.floorSegments;
-  t.ceilSegments = s.ceilSegments;
-  t.reciprocalFloor = s.invFloorSegments;
-  t.reciprocalCeil = s.invCeilSegments;
-  t.count = s.numPoints;
-  for (int k = 0; k < s.numPoints; ++k) {
-    placePoint(s, k, &t.points[k]);
-    t.points[k].param = fx::fixedToFloat(t.points[k].fixed);
-  }
-  return t;
 }
 
 // ---------------------------------------------------------------------------------------------------------------
@@ -217,81 +177,6 @@ OutputCounts outputCounts(const Patch& patch, const Options& options) {
   else
     c.indices = c.points > 0 ? 2 * (c.points - 1) : 0;
   return c;
-}
-
-// ---------------------------------------------------------------------------------------------------------------
-
-const char* toString(Domain d) {
-  switch (d) {
-  case Domain::Quad: return "quad";
-  case Domain::Tri: return "tri";
-  case Domain::Isoline: return "isoline";
-  }
-  return "?";
-}
-const char* toString(Partitioning p) {
-  switch (p) {
-  case Partitioning::Integer: return "integer";
-  case Partitioning::Pow2: return "pow2";
-  case Partitioning::FractionalOdd: return "fractional_odd";
-  case Partitioning::FractionalEven: return "fractional_even";
-  }
-  return "?";
-}
-const char* toString(OutputPrimitive p) {
-  switch (p) {
-  case OutputPrimitive::Point: return "point";
-  case OutputPrimitive::Line: return "line";
-  case OutputPrimitive::TriangleCw: return "triangle_cw";
-  case OutputPrimitive::TriangleCcw: return "triangle_ccw";
-  }
-  return "?";
-}
-
-bool parseDomain(const char* s, Domain& out) {
-  for (Domain d : {Domain::Quad, Domain::Tri, Domain::Isoline})
-    if (std::strcmp(s, toString(d)) == 0) return out = d, true;
-  return false;
-}
-bool parsePartitioning(const char* s, Partitioning& out) {
-  for (Partitioning p :
-       {Partitioning::Integer, Partitioning::Pow2, Partitioning::FractionalOdd, Partitioning::FractionalEven})
-    if (std::strcmp(s, toString(p)) == 0) return out = p, true;
-  return false;
-}
-bool parseOutputPrimitive(const char* s, OutputPrimitive& out) {
-  for (OutputPrimitive p :
-       {OutputPrimitive::Point, OutputPrimitive::Line, OutputPrimitive::TriangleCw, OutputPrimitive::TriangleCcw})
-    if (std::strcmp(s, toString(p)) == 0) return out = p, true;
-  return false;
-}
-
-namespace {
-struct StageName {
-  const char* name;
-  Stage stage;
-};
-const StageName kStages[] = {
-    {"hw", {false, Reduction::Average, ReductionAxes::TwoAxis}},
-    {"hlsl-avg", {true, Reduction::Average, ReductionAxes::TwoAxis}},
-    {"hlsl-min", {true, Reduction::Min, ReductionAxes::TwoAxis}},
-    {"hlsl-max", {true, Reduction::Max, ReductionAxes::TwoAxis}},
-    {"hlsl-avg-1axis", {true, Reduction::Average, ReductionAxes::OneAxis}},
-    {"hlsl-min-1axis", {true, Reduction::Min, ReductionAxes::OneAxis}},
-    {"hlsl-max-1axis", {true, Reduction::Max, ReductionAxes::OneAxis}},
-};
-} // namespace
-
-bool parseStage(const char* s, Stage& out) {
-  for (const StageName& n : kStages)
-    if (std::strcmp(s, n.name) == 0) return out = n.stage, true;
-  return false;
-}
-const char* toString(const Stage& s) {
-  if (!s.hlsl) return "hw";
-  for (const StageName& n : kStages)
-    if (n.stage.hlsl && n.stage.reduction == s.reduction && n.stage.axes == s.axes) return n.name;
-  return "?";
 }
 
 } // namespace fftess

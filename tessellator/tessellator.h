@@ -1,6 +1,6 @@
 // fftess tessellator: a bit-exact CPU emulator of the Direct3D 11 fixed-function tessellator.
 //
-// This header is the whole public contract of the module (standard library only).
+// This header is the contract of the module (standard library only).
 //
 // Two stages, both public:
 //   * the hardware stage ("hw"): tessellation factors exactly as a hull shader hands them to the fixed-function
@@ -16,7 +16,12 @@
 // denormals, negatives and values above 64. See docs/tessellator.md for the list of surprising inputs.
 //
 // Buffers: Tessellator owns reusable output buffers sized for the largest patch once, at construction; tessellating
-// a patch never allocates. Edge queries and traces return fixed-size values (no allocation at all).
+// a patch never allocates. Edge queries return fixed-size values (no allocation at all).
+//
+// Beside the contract, in their own headers: tessellator/names.h (the batch-format names of the enums, parsing and
+// printing), tessellator/trace.h (every 16.16 step of one outer edge, for `fftess explain`),
+// tessellator/edge_analysis.h (an edge beside two half-length edges: where and why they do not meet) and
+// tessellator/batch.h (the batch text format).
 #pragma once
 
 #include <cstdint>
@@ -137,60 +142,6 @@ struct EdgePoints {
 // factor: any float. partitioning: any. stage: hw or hlsl (reduction/axes are irrelevant to outer edges).
 // Domain::Isoline is not an edge domain: use Quad or Tri semantics (identical for outer edges).
 EdgePoints edgePoints(float factor, Partitioning partitioning, const Stage& stage = {}, const Options& options = {});
-
-// ---------------------------------------------------------------------------------------------------------------
-// Trace: every fixed-point step that places the points of one outer edge, for `fftess explain`.
-struct EdgePointTrace {
-  int index = 0;                 // point index along the edge (0 .. count-1), in increasing parameter order
-  bool mirrored = false;         // second half: placed as 1 - (mirror point's location)
-  bool midpoint = false;         // the special-cased exact 0.5
-  int halfIndex = 0;             // index on the half edge after mirroring
-  int indexOnFloor = 0;          // index on the floor(half factor) placement
-  int indexOnCeil = 0;           // index on the ceil(half factor) placement
-  uint32_t locationOnFloor = 0;  // indexOnFloor * reciprocal(floor segments), 16.16
-  uint32_t locationOnCeil = 0;   // indexOnCeil * reciprocal(ceil segments), 16.16
-  uint32_t lerp = 0;             // floor*(1-fraction) + ceil*fraction in 32-bit unsigned arithmetic (x.32), before rounding
-  uint32_t halfLocation = 0;     // (lerp + 0x8000) >> 16: location on the half edge, 16.16
-  uint32_t fixed = 0;            // final 16.16 parameter
-  float param = 0;               // final float parameter
-};
-
-struct EdgeTrace {
-  float input = 0;                 // factor as given
-  bool culled = false;
-  bool flushedDenormal = false;    // options.flushDenormals changed the input
-  float hlslFactor = 0;            // after the HLSL stage (equals input for hw)
-  float clamped = 0;               // after the hardware clamp to the partitioning's range
-  float rounded = 0;               // after ceil (integer/pow2), = clamped otherwise
-  bool oddParity = false;
-  uint32_t fixedFactor = 0;        // rounded in 16.16 (round to nearest even on the 16th fraction bit)
-  uint32_t halfFactor = 0;         // (fixedFactor + 1) / 2, + 0.5 for odd parity or a factor of 1
-  uint32_t floorHalf = 0;          // floor(halfFactor), 16.16
-  uint32_t ceilHalf = 0;           // ceil(halfFactor), 16.16
-  uint32_t halfFraction = 0;       // halfFactor - floorHalf, 16.16
-  int numHalfPoints = 0;           // points on a half edge (ceilHalf as an integer)
-  int splitPoint = 0;              // first half-edge index past which the floor placement lags one point behind
-  int floorSegments = 0;           // segments of the floor placement (reciprocal table index)
-  int ceilSegments = 0;
-  uint32_t reciprocalFloor = 0;    // table entry round(65536 / floorSegments)
-  uint32_t reciprocalCeil = 0;
-  int count = 0;
-  EdgePointTrace points[kMaxEdgePoints];
-};
-
-EdgeTrace traceEdge(float factor, Partitioning partitioning, const Stage& stage = {}, const Options& options = {});
-
-// ---------------------------------------------------------------------------------------------------------------
-// Small helpers shared with the CLI and tests.
-const char* toString(Domain d);
-const char* toString(Partitioning p);
-const char* toString(OutputPrimitive p);
-bool parseDomain(const char* s, Domain& out);
-bool parsePartitioning(const char* s, Partitioning& out);
-bool parseOutputPrimitive(const char* s, OutputPrimitive& out);
-// Batch stage names: hw | hlsl-avg | hlsl-min | hlsl-max | hlsl-avg-1axis | hlsl-min-1axis | hlsl-max-1axis
-bool parseStage(const char* s, Stage& out);
-const char* toString(const Stage& s);
 
 // Closed-form output sizes, independent of the tessellation code (used by the invariant tests and for buffer
 // planning): the number of points and indices tessellate() produces for this patch.

@@ -392,8 +392,7 @@ void readScene(Reader& r, const toml::table& root, Scene& s, const std::string& 
     std::string stage;
     if (r.string(t, p, "stage", stage) && !parseStage(stage.c_str(), s.stage))
       r.fail(p + "stage", t.get("stage"),
-             "unknown value \"" + stage + "\" (expected hw | hlsl-avg | hlsl-min | hlsl-max | hlsl-avg-1axis | "
-                                          "hlsl-min-1axis | hlsl-max-1axis)");
+             "unknown value \"" + stage + "\" (expected " + joinNames(stageNames(), " | ") + ")");
   }
 
   // [domain]
@@ -531,7 +530,7 @@ SceneResult loadScene(const std::string& path, const std::vector<std::string>& o
 const char* toString(Classification c) {
   switch (c) {
   case Classification::Match: return "match";
-  case Classification::TJunction: return "t-junction";
+  case Classification::TJunction: return "t_junction";
   case Classification::Crack: return "crack";
   }
   return "?";

@@ -18,6 +18,7 @@
 #pragma once
 
 #include "lod/lod.h"
+#include "tessellator/names.h" // toString / parse of the tessellator enums in Scene and Finding
 #include "tessellator/tessellator.h"
 
 #include <glm/glm.hpp>

@@ -2,6 +2,7 @@
 #include <cstdio>
 
 #include "tessellator/tessellator.h"
+#include "tessellator/trace.h"
 
 int main() {
   fftess::Tessellator t; // owns reusable buffers: no allocation per patch

@@ -1,5 +1,5 @@
 // Headless OpenGL 4.5 core context through EGL, shared by the GL test tools: the llvmpipe oracle (gl_capture.cpp),
-// the NVIDIA comparison (nvidia/nvidia_compare.cpp) and the LOD drift measurement (tests/lod/gpu/lod_gpu_drift.cpp).
+// the NVIDIA comparison (tests/tools/nvidia_compare/nvidia_compare.cpp) and the LOD drift measurement (tests/tools/lod_gpu_drift/lod_gpu_drift.cpp).
 // EGL device platform (EGL_EXT_device_enumeration) or Mesa's surfaceless platform; the context is made current
 // without a surface; GL entry points come from eglGetProcAddress, so only libEGL is linked. See docs/oracle.md,
 // "How a patch is captured".

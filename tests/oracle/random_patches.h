@@ -7,6 +7,7 @@
 #pragma once
 
 #include "gl_capture.h" // Patch and its enums
+#include "tests/common/splitmix.h"
 
 #include <cstdint>
 #include <cstring>
@@ -15,18 +16,9 @@
 namespace fftess {
 namespace oracle {
 
-// splitmix64: the same sequence on every platform and standard library (std distributions are not).
-struct Rng {
-  uint64_t s;
-  uint64_t next() {
-    uint64_t z = (s += 0x9e3779b97f4a7c15ull);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    return z ^ (z >> 31);
-  }
-  uint32_t below(uint32_t n) { return static_cast<uint32_t>(next() % n); }
-  float unit() { return static_cast<float>(next() >> 40) * (1.0f / 16777216.0f); } // [0,1), 24 bits
-};
+// splitmix64 (tests/common/splitmix.h): the same sequence on every platform and standard library (std distributions
+// are not). below(n) and unit() (24-bit float in [0,1)) are the ones this generator has always used.
+using Rng = testing::SplitMix64;
 
 inline uint32_t bitsOf(float f) {
   uint32_t b;

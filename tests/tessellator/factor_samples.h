@@ -1,14 +1,17 @@
-// Shared factor sampling for the tessellator tests: a table of special floats plus seeded random draws.
+// Shared factor sampling for the tessellator tests: a table of special floats plus seeded random draws (splitmix64,
+// so the draws are the same with every standard library).
 #pragma once
 
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
-#include <random>
 #include <string>
 #include <vector>
 
+#include "tessellator/names.h"
 #include "tessellator/tessellator.h"
+#include "tessellator/trace.h"
+#include "tests/common/splitmix.h"
 
 namespace fftess {
 namespace testing {
@@ -49,27 +52,28 @@ inline std::vector<float> specialFactors() {
 }
 
 struct FactorDraw {
-  std::mt19937 rng;
+  SplitMix64 rng;
   std::vector<float> special = specialFactors();
-  explicit FactorDraw(uint32_t seed) : rng(seed) {}
+  explicit FactorDraw(uint64_t seed) : rng{seed} {}
 
   float factor() {
-    const uint32_t kind = rng() % 8;
-    if (kind < 2) return special[rng() % special.size()];
-    if (kind == 2) return float(1 + rng() % 64);                              // integers
-    if (kind == 3) return float(1 + rng() % 64) + float(int(rng() % 5) - 2) / 65536.0f; // 16.16 steps
-    return std::uniform_real_distribution<float>(0.0f, 70.0f)(rng);
+    const uint32_t kind = rng.below(8);
+    if (kind < 2) return special[rng.below(special.size())];
+    if (kind == 2) return float(1 + rng.below(64));                                   // integers
+    if (kind == 3) return float(1 + rng.below(64)) + float(int(rng.below(5)) - 2) / 65536.0f; // 16.16 steps
+    return rng.uniform(0.0f, 70.0f);
   }
-  float scale() { return rng() % 4 == 0 ? special[rng() % special.size()] : std::uniform_real_distribution<float>(0, 1)(rng); }
+  float scale() { return rng.below(4) == 0 ? special[rng.below(special.size())] : rng.unit(); }
 
   Patch patch() {
     Patch p;
-    p.domain = Domain(rng() % 3);
-    p.partitioning = Partitioning(rng() % 4);
-    p.primitive = OutputPrimitive(rng() % 4);
-    static const char* stages[] = {"hw", "hw", "hw", "hlsl-avg", "hlsl-min", "hlsl-max", "hlsl-avg-1axis",
-                                   "hlsl-min-1axis", "hlsl-max-1axis"};
-    parseStage(stages[rng() % 9], p.stage);
+    p.domain = Domain(rng.below(3));
+    p.partitioning = Partitioning(rng.below(4));
+    p.primitive = OutputPrimitive(rng.below(4));
+    // hw in 3 of 9 draws, each of the six hlsl stages in 1 of 9.
+    const std::vector<std::string>& stages = stageNames();
+    const uint32_t k = rng.below(stages.size() + 2);
+    parseStage(stages[k < 3 ? 0 : k - 2].c_str(), p.stage);
     for (int i = 0; i < 6; ++i) p.factors[i] = factor();
     if (p.stage.hlsl) {
       if (p.domain == Domain::Quad) p.factors[4] = scale(), p.factors[5] = scale();

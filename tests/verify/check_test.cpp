@@ -142,7 +142,7 @@ TEST_CASE("t_junction_on_flat_terrain_crack_when_displaced", "[verify][check]") 
   }
 }
 
-TEST_CASE("whole_mesh_check_agrees_with_edge_check", "[verify][check][mesh]") {
+TEST_CASE("whole_mesh_check_agrees_with_edge_check", "[verify][check][mesh][slow]") {
   struct Case {
     const char* file;
     std::vector<std::string> overrides;

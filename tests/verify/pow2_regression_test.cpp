@@ -104,7 +104,7 @@ TEST_CASE("pow2_regression_integer_clamp_12_beside_2x6_cracks_where_16_16_predic
   }
 }
 
-TEST_CASE("pow2_regression_pow2_clamp_never_cracks_over_1000_cameras", "[verify][pow2][sweep]") {
+TEST_CASE("pow2_regression_pow2_clamp_never_cracks_over_1000_cameras", "[verify][pow2][sweep][slow]") {
   Scene s = loadExample("rings_small.toml");
   const Terrain terrain = prepared(s);
   std::vector<Camera> cams = randomCameras(terrain, 900, 20261122);

@@ -133,7 +133,7 @@ TEST_CASE("findings carry the LOD's own record", "[verify][prepared][causes]") {
       CHECK((f.b.lod.why.fixes & lod::FixLargerNeighbour) != 0);
       CHECK_FALSE(f.a.lod.culled);
       CHECK(f.a.hullFactorBits == floatBits(f.a.hullFactor));
-      CHECK(lodWords(f.b).find("integer-clamp") != std::string::npos);
+      CHECK(lodWords(f.b).find("integer_clamp") != std::string::npos);
       CHECK(lodWords(f.b).find("neighbour 2x") != std::string::npos);
     }
     CHECK(jumps > 0);

@@ -1,5 +1,5 @@
 // fftess_nvidia_compare: fftess against a real hardware tessellator (NVIDIA, through OpenGL 4.5 + headless EGL),
-// compared as what is comparable when the hardware's order differs from the reference. See tests/oracle/nvidia/README.md
+// compared as what is comparable when the hardware's order differs from the reference. See tests/tools/nvidia_compare/README.md
 // and docs/oracle.md, "Real hardware: NVIDIA".
 //
 //   fftess_nvidia_compare gen [PATCHES [SEED]]            print the batch lines (sweep + seeded random patches)

@@ -1,5 +1,5 @@
 // fftess_lod_gpu_drift: how far the GLSL build of lod/shaders/*.glsl drifts from the C++ (GLM) build, bit for bit,
-// on a real GPU. See tests/lod/gpu/README.md and docs/lod.md, "Known GPU divergence" / "Measured on NVIDIA".
+// on a real GPU. See tests/tools/lod_gpu_drift/README.md and docs/lod.md, "Known GPU divergence" / "Measured on NVIDIA".
 //
 //   fftess_lod_gpu_drift [options] [CASES [SEED]]      (defaults: 200000 cases, seed 1)
 //     --precise          declare the shader's result variables `precise` (the LodResult each scheme returns, the
@@ -382,7 +382,7 @@ std::string buildShader(bool precise, bool nvPragmas) {
 using fftess::gltest::GlFunctions;
 
 // A headless GL 4.5 core context: hardware EGL devices first; software devices and Mesa's surfaceless platform
-// only with allowSoftware (the same choice as tests/oracle/nvidia). 'info' = the renderer lines this tool prints.
+// only with allowSoftware (the same choice as tests/tools/nvidia_compare). 'info' = the renderer lines this tool prints.
 bool createContext(bool allowSoftware, fftess::gltest::GlContext& ctx, std::string& info, std::string& error) {
   fftess::gltest::ContextOptions options;
   options.order = fftess::gltest::DeviceOrder::HardwareFirst;

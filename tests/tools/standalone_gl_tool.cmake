@@ -1,5 +1,5 @@
-# Shared setup of the standalone GL tools (not part of the main build or CI): tests/oracle/nvidia/CMakeLists.txt and
-# tests/lod/gpu/CMakeLists.txt include this after their project(). It sets C++17, Release by default, the main build's
+# Shared setup of the standalone GL tools (not part of the main build or CI): tests/tools/nvidia_compare/CMakeLists.txt and
+# tests/tools/lod_gpu_drift/CMakeLists.txt include this after their project(). It sets C++17, Release by default, the main build's
 # floating-point flags, libstdc++/libgcc linked statically (the binaries run on a machine without a compiler; only
 # libEGL.so.1 from glvnd stays dynamic), builds fftess_tessellator from the tree, finds EGL and GL/glcorearb.h, and
 # gives:

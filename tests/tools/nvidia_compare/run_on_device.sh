@@ -1,7 +1,7 @@
 #!/bin/bash
 # Runs the NVIDIA comparison on a machine with an NVIDIA GPU and driver but no compiler and no libEGL.so.1 loader:
 # the binaries and glvnd's libEGL.so.1 + libGLdispatch.so.0 come prebuilt in build-nv/dist (see README.md).
-#   tests/oracle/nvidia/run_on_device.sh OUTDIR [RANDOM_PATCHES [SEED]]
+#   tests/tools/nvidia_compare/run_on_device.sh OUTDIR [RANDOM_PATCHES [SEED]]
 # Writes OUTDIR/*.txt: the environment, the unchanged oracle's behaviour on NVIDIA, the comparisons.
 set -u
 out=${1:?OUTDIR}; big=${2:-1000000}; seed=${3:-1}

@@ -2,7 +2,7 @@
 # Runs the GLSL-versus-C++ LOD drift measurement on a machine with an NVIDIA GPU and driver but no compiler and no
 # libEGL.so.1 loader: the binary and glvnd's libEGL.so.1 + libGLdispatch.so.0 come prebuilt in build-lodgpu/dist
 # (see README.md).
-#   tests/lod/gpu/run_on_device.sh OUTDIR [CASES [SEED]]
+#   tests/tools/lod_gpu_drift/run_on_device.sh OUTDIR [CASES [SEED]]
 # Writes OUTDIR/env.txt and one OUTDIR/<variant>.txt per shader variant.
 set -u
 out=${1:?OUTDIR}; cases=${2:-1000000}; seed=${3:-1}
