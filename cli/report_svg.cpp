@@ -113,9 +113,12 @@ void svgInset(std::string& o, const vf::Scene& scene, const vf::Finding& f, doub
                   t.partner ? "b" : "x", lx + t.t * lw, ly, lx + t.t * lw, ly + 25);
     o += buf;
   }
+  // Why, from the finding's records (the LOD's per side and the tessellator's), as the text report says it.
+  o += "<text class=\"s\" x=\"" + formatFloat(static_cast<float>(x + 8)) + "\" y=\"" +
+       formatFloat(static_cast<float>(y + 124)) + "\">why: " + xmlEscape(findingCause(f).key) + "</text>\n";
   std::snprintf(buf, sizeof buf,
                 "<text class=\"s\" x=\"%.1f\" y=\"%.1f\">a: %s %s factor %s  b: %s %s factor %s  gap %s world</text>\n</g>\n",
-                x + 8, y + 140, patchText(f.a.patch).c_str(), edgeName(f.a.edge), formatFloat(f.a.processedFactor).c_str(),
+                x + 8, y + 142, patchText(f.a.patch).c_str(), edgeName(f.a.edge), formatFloat(f.a.processedFactor).c_str(),
                 patchText(f.b.patch).c_str(), edgeName(f.b.edge), formatFloat(f.b.processedFactor).c_str(),
                 fmtWorld(f.gapWorld).c_str());
   o += buf;
