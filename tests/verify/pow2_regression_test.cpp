@@ -134,7 +134,16 @@ TEST_CASE("pow2_clamp_with_displaced_corners_edge_vector_mismatches_factors", "[
   Scene bad = loadExample("terrain.toml", {"lod.displaced_corners=true"});
   Report r = checkScene(prepared(bad), bad.camera);
   CHECK(r.stats.cracks > 0);
-  for (const Finding& f : r.findings) CHECK(f.a.processedFactor != 2 * f.b.processedFactor);
+  for (const Finding& f : r.findings) {
+    CHECK(f.a.processedFactor != 2 * f.b.processedFactor);
+    // The LOD's own record: both sides went through the pow2 clamp; the small side rebuilt the big edge by the
+    // edge vector.
+    CHECK((f.a.lod.why.fixes & fftess::lod::FixPow2Clamp) != 0);
+    CHECK((f.b.lod.why.fixes & fftess::lod::FixPow2Clamp) != 0);
+    CHECK((f.b.lod.why.fixes & fftess::lod::FixLargerNeighbour) != 0);
+    CHECK(f.b.lod.neighbourSize == 2.0f);
+    CHECK(f.b.lod.reconstruction == fftess::lod::Reconstruction::EdgeVector);
+  }
   Scene good = loadExample("terrain.toml", {"lod.displaced_corners=true", "lod.reconstruction=far_corner"});
   CHECK(checkScene(prepared(good), good.camera).stats.cracks == 0);
 }
