@@ -3,11 +3,14 @@
 // This header is the whole public contract of the module. It speaks plain structs; CGAL and toml++ stay inside
 // verify's .cpp files.
 //
-// Pipeline for one camera (each stage consumes only the previous stage's plain data, and is skipped when the scene
-// does not call for it):
-//   layout     patches of the terrain (uniform grid, NVIDIA tile rings, heightmap grid) and their neighbours;
-//   lod        per patch the four outer factors as the hull shader computes them (fftess::lod), including the
-//              clamp at different-sized neighbours (tile rings only; a uniform grid never runs adjacency code);
+// Once per scene (prepareTerrain -> Terrain; everything that does not depend on the camera):
+//   layout     patches of the terrain (uniform grid, NVIDIA tile rings, heightmap grid), their neighbours, corners,
+//              corner heights, the LOD's height bounds, neighbour sizes and far corners, the extent.
+// Per camera (each stage consumes only the previous stage's plain data, and is skipped when the scene does not
+// call for it):
+//   lod        per patch the four outer factors as the hull shader computes them (fftess::lod) and lod's record of
+//              why, including the clamp at different-sized neighbours (tile rings only; a uniform grid never runs
+//              adjacency code);
 //   tessellate the 16.16 points of each outer edge (fftess::edgePoints; interiors only for the whole-mesh check);
 //   domain     world position of each edge point as a domain shader computes it, in float, in a stated order;
 //   check      per shared edge: match | T-junction | crack, decided with CGAL exact predicates.
