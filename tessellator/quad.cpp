@@ -18,45 +18,45 @@ void minimumQuad(bool triangles, MeshWriter& out) {
   }
 }
 
+// D3D11.3 spec 11.7.6-11.7.8: points from 1D tables. Every point of the quad is (u table[i], v table[j]) of one
+// outer edge's table or of the two inside axes' tables, so placement runs once per axis, not once per point.
 void quadPoints(const ProcessedQuad& q, MeshWriter& out) {
+  DomainPoint* dst = out.points + out.numPoints;
   // Outer ring. Edges in order Ueq0, Veq0, Ueq1, Veq1; each without its last point (the next edge's first).
   // Ueq0 runs v from 1 down to 0, Veq0 u up from 0, Ueq1 v up from 0, Veq1 u down from 1.
+  AxisTable t;
   for (int e = 0; e < 4; ++e) {
-    const AxisSpacing& s = q.outer[e];
-    const int last = s.numPoints - 1;
-    const bool forward = e == 1 || e == 2;
-    for (int p = 0; p < last; ++p) {
-      const fx::Fixed t = placePoint(s, forward ? p : last - p);
-      if (e & 1)
-        out.point(t, e == 3 ? fx::kOne : 0);
-      else
-        out.point(e == 2 ? fx::kOne : 0, t);
+    fillAxisTable(q.outer[e], t);
+    const int last = t.count - 1;
+    switch (e) {
+    case 0: for (int p = 0; p < last; ++p) *dst++ = {0.0f, t.param[last - p]}; break;
+    case 1: for (int p = 0; p < last; ++p) *dst++ = {t.param[p], 0.0f}; break;
+    case 2: for (int p = 0; p < last; ++p) *dst++ = {1.0f, t.param[p]}; break;
+    default: for (int p = 0; p < last; ++p) *dst++ = {t.param[last - p], 1.0f}; break;
     }
   }
   // Inner rings, same edge order, each edge at a fixed position on the perpendicular axis.
+  AxisTable tu, tv;
+  fillAxisTable(q.inside[U], tu);
+  fillAxisTable(q.inside[V], tv);
+  const float* U_ = tu.param;
+  const float* V_ = tv.param;
   const int nU = q.inside[U].numPoints, nV = q.inside[V].numPoints;
   const int rings = (nU < nV ? nU : nV) >> 1;
   for (int ring = 1; ring < rings; ++ring) {
-    const int end[2] = {nU - 1 - ring, nV - 1 - ring};
-    for (int e = 0; e < 4; ++e) {
-      const int across = e & 1, along = 1 - across; // axis of the fixed coordinate / of the moving coordinate
-      const fx::Fixed fixedCoord = placePoint(q.inside[across], e < 2 ? ring : end[across]);
-      const bool forward = e == 1 || e == 2;
-      for (int p = ring; p < end[along]; ++p) {
-        const fx::Fixed t = placePoint(q.inside[along], forward ? p : end[along] - (p - ring));
-        if (along == V)
-          out.point(fixedCoord, t);
-        else
-          out.point(t, fixedCoord);
-      }
-    }
+    const int endU = nU - 1 - ring, endV = nV - 1 - ring;
+    for (int p = ring; p < endV; ++p) *dst++ = {U_[ring], V_[endV - (p - ring)]};
+    for (int p = ring; p < endU; ++p) *dst++ = {U_[p], V_[ring]};
+    for (int p = ring; p < endV; ++p) *dst++ = {U_[endU], V_[p]};
+    for (int p = ring; p < endU; ++p) *dst++ = {U_[endU - (p - ring)], V_[endV]};
   }
   // Even parity on the shorter axis leaves a degenerate innermost ring: one row of points through the middle.
   if (nU > nV && !q.inside[V].odd) {
-    for (int p = rings; p <= nU - 1 - rings; ++p) out.point(placePoint(q.inside[U], p), fx::kHalf);
+    for (int p = rings; p <= nU - 1 - rings; ++p) *dst++ = {U_[p], 0.5f};
   } else if (nV >= nU && !q.inside[U].odd) {
-    for (int p = nV - 1 - rings; p >= rings; --p) out.point(fx::kHalf, placePoint(q.inside[V], p));
+    for (int p = nV - 1 - rings; p >= rings; --p) *dst++ = {0.5f, V_[p]};
   }
+  out.numPoints = int(dst - out.points);
 }
 
 void quadTriangles(const ProcessedQuad& q, MeshWriter& out, int firstInsidePoint) {

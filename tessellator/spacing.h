@@ -33,4 +33,15 @@ AxisSpacing makeAxisSpacing(fx::Fixed fixedFactor, bool odd);
 // The 16.16 location of point 'index' (0 .. numPoints-1) along the axis. trace may be null.
 fx::Fixed placePoint(const AxisSpacing& s, int index, EdgePointTrace* trace = nullptr);
 
+// Every point of one axis at once, in 16.16 and as the output floats: the 1D tables the domain kernels read their
+// points from (a quad's interior point is (u table[i], v table[j])). Entry k equals placePoint(s, k) for
+// k < s.numPoints (which may exceed the factor's own count: inside axes are raised to the minimum ring size).
+constexpr int kMaxAxisPoints = 72; // >= 65, a multiple of 8
+struct AxisTable {
+  int count = 0;
+  fx::Fixed fixed[kMaxAxisPoints];
+  float param[kMaxAxisPoints];
+};
+void fillAxisTable(const AxisSpacing& s, AxisTable& t);
+
 } // namespace fftess
