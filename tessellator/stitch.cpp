@@ -27,94 +27,178 @@ constexpr RulerOrder kRuler{};
 static_assert(kRuler.position[2] == 16 && kRuler.position[3] == 8 && kRuler.position[4] == 17, "ruler order");
 static_assert(kRuler.position[9] == 2 && kRuler.position[17] == 1 && kRuler.position[32] == 31, "ruler order");
 
-// kBelow[n]: bit k (0..32) set when the k-th inserted point of the ruler order lands below n, i.e. is one of the
-// first n points of a half row. A half row's moves are the set bits in order (first half) or reverse order (second).
-struct RulerMasks {
-  uint64_t below[34];
-  constexpr RulerMasks() : below{} {
-    for (int n = 0; n <= 33; ++n)
-      for (int k = 0; k <= 32; ++k)
-        if (kRuler.position[k] < n) below[n] |= uint64_t(1) << k;
+// The moves of the first half of a transition between rows of nIn and nOut half points (nIn, nOut <= 33), as bits
+// in order, 1 = a triangle based on the inside row, 0 = on the outside row: ruler order 0 (outside only), then
+// 1..32, inside before outside at each step. The second half is the same sequence reversed.
+struct TransitionMoves {
+  uint64_t seq[34][34];
+  uint8_t len[34][34];
+  uint8_t insideMoves[34][34];
+  constexpr TransitionMoves() : seq{}, len{}, insideMoves{} {
+    for (int nIn = 0; nIn <= 33; ++nIn)
+      for (int nOut = 0; nOut <= 33; ++nOut) {
+        uint64_t bits = 0;
+        int n = 0;
+        if (kRuler.position[0] < nOut) ++n;
+        for (int k = 1; k <= 32; ++k) {
+          if (kRuler.position[k] < nIn) bits |= uint64_t(1) << n++, ++insideMoves[nIn][nOut];
+          if (kRuler.position[k] < nOut) ++n;
+        }
+        seq[nIn][nOut] = bits;
+        len[nIn][nOut] = uint8_t(n);
+      }
   }
 };
-constexpr RulerMasks kMasks{};
+constexpr TransitionMoves kMoves{};
 
-struct Cursor {
-  MeshWriter& out;
-  const Row& in;
-  const Row& outRow;
-  int i = 0, o = 0; // positions on the inside and outside rows
+template <bool Ccw>
+inline void tri(int32_t* d, int a, int b, int c) {
+  d[0] = a;
+  d[1] = Ccw ? c : b;
+  d[2] = Ccw ? b : c;
+}
 
-  void advanceOutside() { // triangle with its base on the outside row
-    out.triangle(outRow.at(o), outRow.at(o + 1), in.at(i));
-    ++o;
+// One move of a transition: bit 1 = triangle (I(i), O(o), I(i+1)), bit 0 = triangle (O(o), O(o+1), I(i)).
+// I and O are the rows' point indices, looked up (no per-move redirect test).
+template <bool Ccw>
+inline void move(int32_t* d, uint32_t bit, const int32_t* I, const int32_t* O, int& i, int& o) {
+  // Selects by mask: the bits follow no pattern a branch predictor could learn.
+  const int32_t m = -int32_t(bit);
+  const int32_t ii = I[i], oo = O[o], i1 = I[i + 1], o1 = O[o + 1];
+  tri<Ccw>(d, (ii & m) | (oo & ~m), (oo & m) | (o1 & ~m), (i1 & m) | (ii & ~m));
+  i += int(bit);
+  o += int(bit ^ 1);
+}
+
+constexpr int kMaxRow = 72; // > 2 * 33 + 2 positions
+
+template <bool Ccw>
+void transition(MeshWriter& w, const Row& in, int nIn, bool insideOdd, const Row& out, int nOut, bool outsideOdd) {
+  const uint64_t seq = kMoves.seq[nIn][nOut];
+  const int len = kMoves.len[nIn][nOut];
+  const int insideMoves = kMoves.insideMoves[nIn][nOut];
+  // Positions used on each row: every move and the middle advance one of them by one, plus the last corner.
+  const int nI = 2 * insideMoves + (insideOdd ? 1 : 0) + 1, nO = 2 * (len - insideMoves) + (outsideOdd ? 1 : 0) + 1;
+  int32_t I[kMaxRow], O[kMaxRow];
+  for (int k = 0; k < nI; ++k) I[k] = in.first + in.step * k;
+  for (int k = 0; k < nO; ++k) O[k] = out.first + out.step * k;
+  if (in.redirectFrom >= 0 && in.redirectFrom < nI) I[in.redirectFrom] = in.redirectTo;
+  if (out.redirectFrom >= 0 && out.redirectFrom < nO) O[out.redirectFrom] = out.redirectTo;
+  int32_t* d = w.indices + w.numIndices;
+  int i = 0, o = 0;
+  for (int j = 0; j < len; ++j, d += 3) move<Ccw>(d, uint32_t(seq >> j) & 1u, I, O, i, o);
+  // Middle.
+  if (insideOdd && outsideOdd) { // a quad
+    tri<Ccw>(d, I[i], O[o], I[i + 1]);
+    tri<Ccw>(d + 3, I[i + 1], O[o], O[o + 1]);
+    d += 6, ++i, ++o;
+  } else if (outsideOdd) { // the outside has the middle segment
+    tri<Ccw>(d, I[i], O[o], O[o + 1]);
+    d += 3, ++o;
+  } else if (insideOdd) { // the inside has it
+    tri<Ccw>(d, I[i], O[o], I[i + 1]);
+    d += 3, ++i;
   }
-  void advanceInside() { // triangle with its base on the inside row
-    out.triangle(in.at(i), outRow.at(o), in.at(i + 1));
-    ++i;
+  for (int j = len - 1; j >= 0; --j, d += 3) move<Ccw>(d, uint32_t(seq >> j) & 1u, I, O, i, o);
+  w.numIndices = int(d - w.indices);
+}
+
+// Quads between two rows. Quad p has inside corners I(p), I(p+1) and outside corners O(p+t), O(p+t+1).
+enum QuadKind { FromOutside, FromInside, OutsideForward };
+
+template <int K, bool Ccw>
+inline void quad(int32_t* d, int i0, int i1, int o0, int o1) {
+  if (K == FromOutside) { // diagonal outside(o) - inside(i+1)
+    tri<Ccw>(d, o0, i1, i0);
+    tri<Ccw>(d + 3, o0, o1, i1);
+  } else if (K == FromInside) { // diagonal inside(i) - outside(o+1)
+    tri<Ccw>(d, i0, o0, o1);
+    tri<Ccw>(d + 3, i0, o1, i1);
+  } else { // same diagonal, outside triangle first
+    tri<Ccw>(d, o0, o1, i0);
+    tri<Ccw>(d + 3, i0, o1, i1);
   }
-};
+}
 
-// One corner of a quad between the rows: on the outside row (else inside) at offset d from the quad's position.
-struct Corner {
-  bool outside;
-  int d;
+// Rows as affine maps k -> first + step * k (redirects are patched afterwards).
+struct Affine {
+  int fi, si, fo, so, t;
 };
-using QuadShape = Corner[6]; // two triangles, clockwise
-
-// Quad p (0-based within the row pair) has its inside corner at position p and its outside corner at p + shift
-// (shift 1 after a trapezoid's first triangle).
-constexpr QuadShape kFromOutside = {{true, 0}, {false, 1}, {false, 0}, {true, 0}, {true, 1}, {false, 1}};
-constexpr QuadShape kFromInside = {{false, 0}, {true, 0}, {true, 1}, {false, 0}, {true, 1}, {false, 1}};
-constexpr QuadShape kOutsideForward = {{true, 0}, {true, 1}, {false, 0}, {false, 0}, {true, 1}, {false, 1}};
 
 using v8i = int32_t __attribute__((vector_size(32)));
 
-// Writes quads [begin, end) of one shape. Quads whose corners may be redirected (the row's first and last) go
-// through Row::at; the others are affine in p (index = a + b * p) and are written 4 quads (24 indices) per step.
-void quadRun(MeshWriter& out, const Row& in, const Row& outRow, int shift, const QuadShape& shape, int begin, int end,
-             int quads) {
+// Quads [begin, end) of one kind, without redirects. Long runs: 4 quads (24 indices) per step, each index affine in p.
+template <int K, bool Ccw>
+int32_t* quadRun(int32_t* d, const Affine& r, int begin, int end) {
   int p = begin;
-  auto scalarQuad = [&](int q) {
-    int v[6];
-    for (int j = 0; j < 6; ++j)
-      v[j] = shape[j].outside ? outRow.at(q + shift + shape[j].d) : in.at(q + shape[j].d);
-    out.triangle(v[0], v[1], v[2]);
-    out.triangle(v[3], v[4], v[5]);
-  };
-  if (p < end && p == 0) scalarQuad(p++);
-  const int affineEnd = end < quads - 1 ? end : quads - 1;
-  if (p < affineEnd) {
-    int32_t a[6], b[6];
-    for (int j = 0; j < 6; ++j) {
-      const int jj = out.ccw && (j % 3) ? (j % 3 == 1 ? j + 1 : j - 1) : j; // ccw: 2nd and 3rd swapped
-      const Corner c = shape[jj];
-      a[j] = c.outside ? outRow.first + (shift + c.d) * outRow.step : in.first + c.d * in.step;
-      b[j] = c.outside ? outRow.step : in.step;
+  if (end - begin >= 12) {
+    int32_t base[24], next[24], step[24];
+    for (int q = 0; q < 4; ++q) {
+      const int pq = p + q;
+      quad<K, Ccw>(base + 6 * q, r.fi + r.si * pq, r.fi + r.si * (pq + 1), r.fo + r.so * (pq + r.t),
+                   r.fo + r.so * (pq + r.t + 1));
+      quad<K, Ccw>(next + 6 * q, r.fi + r.si * (pq + 4), r.fi + r.si * (pq + 5), r.fo + r.so * (pq + 4 + r.t),
+                   r.fo + r.so * (pq + 5 + r.t));
     }
-    int32_t* dst = out.indices + out.numIndices;
-    const int count = affineEnd - p;
-    int q = 0;
-    if (count >= 4) {
-      int32_t base[24], step[24];
-      for (int t = 0; t < 24; ++t) {
-        base[t] = a[t % 6] + b[t % 6] * (p + t / 6);
-        step[t] = 4 * b[t % 6];
-      }
-      v8i v0, v1, v2, d0, d1, d2;
-      std::memcpy(&v0, base, 32), std::memcpy(&v1, base + 8, 32), std::memcpy(&v2, base + 16, 32);
-      std::memcpy(&d0, step, 32), std::memcpy(&d1, step + 8, 32), std::memcpy(&d2, step + 16, 32);
-      for (; q + 4 <= count; q += 4, dst += 24) {
-        std::memcpy(dst, &v0, 32), std::memcpy(dst + 8, &v1, 32), std::memcpy(dst + 16, &v2, 32);
-        v0 += d0, v1 += d1, v2 += d2;
-      }
+    for (int j = 0; j < 24; ++j) step[j] = next[j] - base[j];
+    v8i v0, v1, v2, d0, d1, d2;
+    std::memcpy(&v0, base, 32), std::memcpy(&v1, base + 8, 32), std::memcpy(&v2, base + 16, 32);
+    std::memcpy(&d0, step, 32), std::memcpy(&d1, step + 8, 32), std::memcpy(&d2, step + 16, 32);
+    for (; p + 4 <= end; p += 4, d += 24) {
+      std::memcpy(d, &v0, 32), std::memcpy(d + 8, &v1, 32), std::memcpy(d + 16, &v2, 32);
+      v0 += d0, v1 += d1, v2 += d2;
     }
-    for (; q < count; ++q, dst += 6)
-      for (int j = 0; j < 6; ++j) dst[j] = a[j] + b[j] * (p + q);
-    out.numIndices += 6 * count;
-    p = affineEnd;
   }
-  for (; p < end; ++p) scalarQuad(p);
+  int i0 = r.fi + r.si * p, o0 = r.fo + r.so * (p + r.t);
+  for (; p < end; ++p, d += 6, i0 += r.si, o0 += r.so) quad<K, Ccw>(d, i0, i0 + r.si, o0, o0 + r.so);
+  return d;
+}
+
+template <bool Ccw>
+void regular(MeshWriter& w, bool trapezoid, Diagonals diagonals, int numIn, const Row& in, const Row& out) {
+  const int t = trapezoid ? 1 : 0;
+  const int quads = numIn - 1 > 0 ? numIn - 1 : 0;
+  const Affine r{in.first, in.step, out.first, out.step, t};
+  int32_t* const start = w.indices + w.numIndices;
+  int32_t* d = start;
+  if (trapezoid) tri<Ccw>(d, r.fo, r.fo + r.so, r.fi), d += 3;
+  const int before = numIn / 2 - 1; // InsideToOutsideExceptMiddle: quads before the middle one
+  const int half = numIn / 2 < quads ? numIn / 2 : quads; // Mirrored: quads with the outside diagonal
+  switch (diagonals) {
+  case Diagonals::InsideToOutside: d = quadRun<FromInside, Ccw>(d, r, 0, quads); break;
+  case Diagonals::InsideToOutsideExceptMiddle: // (odd strips only) the middle quad takes the other diagonal
+    d = quadRun<OutsideForward, Ccw>(d, r, 0, before);
+    d = quadRun<FromOutside, Ccw>(d, r, before, before + 1);
+    d = quadRun<OutsideForward, Ccw>(d, r, before + 1, quads);
+    break;
+  case Diagonals::Mirrored:
+    d = quadRun<FromOutside, Ccw>(d, r, 0, half);
+    d = quadRun<FromInside, Ccw>(d, r, half, quads);
+    break;
+  }
+  if (trapezoid) tri<Ccw>(d, r.fo + r.so * (quads + 1), r.fo + r.so * (quads + 2), r.fi + r.si * quads), d += 3;
+  w.numIndices = int(d - w.indices);
+  if (in.redirectFrom < 0 && out.redirectFrom < 0) return;
+  // Redirects only ever move a row's first or last position: rewrite the opening triangle and first quad, the last
+  // quad and the closing triangle through Row::at.
+  auto rewriteQuad = [&](int p) {
+    if (p < 0 || p >= quads) return;
+    int32_t* q = start + 3 * t + 6 * p;
+    const int i0 = in.at(p), i1 = in.at(p + 1), o0 = out.at(p + t), o1 = out.at(p + t + 1);
+    const bool fromOutside = diagonals == Diagonals::Mirrored ? p < half
+                                                              : diagonals == Diagonals::InsideToOutsideExceptMiddle &&
+                                                                    p == before;
+    if (fromOutside)
+      quad<FromOutside, Ccw>(q, i0, i1, o0, o1);
+    else if (diagonals == Diagonals::InsideToOutsideExceptMiddle)
+      quad<OutsideForward, Ccw>(q, i0, i1, o0, o1);
+    else
+      quad<FromInside, Ccw>(q, i0, i1, o0, o1);
+  };
+  if (trapezoid) tri<Ccw>(start, out.at(0), out.at(1), in.at(0));
+  rewriteQuad(0);
+  rewriteQuad(quads - 1);
+  if (trapezoid) tri<Ccw>(d - 3, out.at(quads + 1), out.at(quads + 2), in.at(quads));
 }
 
 } // namespace
@@ -124,67 +208,18 @@ void stitchTransition(MeshWriter& out, const Row& inside, int insideNumHalf, boo
   // Odd factors have a middle segment, not a middle point: count the half without it.
   const int nIn = insideOdd ? insideNumHalf - 1 : insideNumHalf;
   const int nOut = outsideOdd ? outsideNumHalf - 1 : outsideNumHalf;
-  const uint64_t bIn = kMasks.below[nIn], bOut = kMasks.below[nOut];
-  Cursor c{out, inside, outside};
-
-  // First half, outwards from the start (ruler order 0, 1, ..., 32): inside before outside at each step.
-  if (bOut & 1) c.advanceOutside();
-  for (uint64_t m = (bIn | bOut) & ~uint64_t(1); m; m &= m - 1) {
-    const int k = __builtin_ctzll(m);
-    if ((bIn >> k) & 1) c.advanceInside();
-    if ((bOut >> k) & 1) c.advanceOutside();
-  }
-  // Middle.
-  if (insideOdd != outsideOdd || insideOdd) {
-    if (insideOdd == outsideOdd) { // both odd: a quad
-      out.triangle(inside.at(c.i), outside.at(c.o), inside.at(c.i + 1));
-      out.triangle(inside.at(c.i + 1), outside.at(c.o), outside.at(c.o + 1));
-      ++c.i;
-      ++c.o;
-    } else if (!insideOdd) { // the outside has the middle segment
-      out.triangle(inside.at(c.i), outside.at(c.o), outside.at(c.o + 1));
-      ++c.o;
-    } else { // the inside has it
-      out.triangle(inside.at(c.i), outside.at(c.o), inside.at(c.i + 1));
-      ++c.i;
-    }
-  }
-  // Second half, mirrored (ruler order 32 down to 1, then 0): outside before inside at each step.
-  for (uint64_t m = (bIn | bOut) & ~uint64_t(1); m;) {
-    const int k = 63 - __builtin_clzll(m);
-    m &= ~(uint64_t(1) << k);
-    if ((bOut >> k) & 1) c.advanceOutside();
-    if ((bIn >> k) & 1) c.advanceInside();
-  }
-  if (bOut & 1) c.advanceOutside();
+  if (out.ccw)
+    transition<true>(out, inside, nIn, insideOdd, outside, nOut, outsideOdd);
+  else
+    transition<false>(out, inside, nIn, insideOdd, outside, nOut, outsideOdd);
 }
 
 void stitchRegular(MeshWriter& out, bool trapezoid, Diagonals diagonals, int numInsidePoints, const Row& inside,
                    const Row& outside) {
-  const int shift = trapezoid ? 1 : 0;
-  const int quads = numInsidePoints - 1;
-  if (trapezoid) out.triangle(outside.at(0), outside.at(1), inside.at(0));
-  switch (diagonals) {
-  case Diagonals::InsideToOutside:
-    quadRun(out, inside, outside, shift, kFromInside, 0, quads, quads);
-    break;
-  case Diagonals::InsideToOutsideExceptMiddle: {
-    // (odd strips only) the middle quad takes the other diagonal.
-    const int before = numInsidePoints / 2 - 1;
-    quadRun(out, inside, outside, shift, kOutsideForward, 0, before, quads);
-    quadRun(out, inside, outside, shift, kFromOutside, before, before + 1, quads);
-    quadRun(out, inside, outside, shift, kOutsideForward, before + 1, quads, quads);
-    break;
-  }
-  case Diagonals::Mirrored: {
-    const int half = numInsidePoints / 2 < quads ? numInsidePoints / 2 : (quads > 0 ? quads : 0);
-    quadRun(out, inside, outside, shift, kFromOutside, 0, half, quads);
-    quadRun(out, inside, outside, shift, kFromInside, half, quads, quads);
-    break;
-  }
-  }
-  const int i = quads > 0 ? quads : 0;
-  if (trapezoid) out.triangle(outside.at(i + 1), outside.at(i + 2), inside.at(i));
+  if (out.ccw)
+    regular<true>(out, trapezoid, diagonals, numInsidePoints, inside, outside);
+  else
+    regular<false>(out, trapezoid, diagonals, numInsidePoints, inside, outside);
 }
 
 } // namespace fftess
