@@ -114,43 +114,60 @@ Tessellator::Tessellator() {
   indices_.reserve(kMaxIndices);
 }
 
-// The output is written once, straight into points_ / indices_: their sizes come first from the closed-form
-// counts (resize within the reserved capacity never allocates, and only zero-fills what grows).
-int Tessellator::tessellate(const Patch& patch, const Options& options) {
+namespace {
+
+// Factors through both stages, sizes from the closed-form counts, then generation into the buffers that
+// prepare(counts, writer) points the writer at.
+template <class Prepare>
+int tessellateWith(const Patch& patch, const Options& options, HlslFactors* hlsl, Prepare&& prepare) {
   float f[6];
-  hardwareFactors(patch, options, f, &hlsl_);
+  hardwareFactors(patch, options, f, hlsl);
   const bool triangles = isTriangles(patch.primitive);
   MeshWriter out;
   out.ccw = patch.primitive == OutputPrimitive::TriangleCcw;
-  auto prepare = [&](const OutputCounts& c) {
-    points_.resize(size_t(c.points));
-    indices_.resize(size_t(c.indices));
-    out.points = points_.data();
-    out.indices = indices_.data();
-  };
   switch (patch.domain) {
   case Domain::Quad: {
     const ProcessedQuad q = processQuadFactors(f, patch.partitioning);
-    prepare(quadCounts(q, patch.primitive));
+    prepare(quadCounts(q, patch.primitive), out);
     generateQuad(q, triangles, out);
     if (!triangles) trivialIndices(patch.primitive, out);
     break;
   }
   case Domain::Tri: {
     const ProcessedTri t = processTriFactors(f, patch.partitioning);
-    prepare(triCounts(t, patch.primitive));
+    prepare(triCounts(t, patch.primitive), out);
     generateTri(t, triangles, out);
     if (!triangles) trivialIndices(patch.primitive, out);
     break;
   }
   case Domain::Isoline: {
     const ProcessedIsoline l = processIsolineFactors(f[IsolineDensity], f[IsolineDetail], patch.partitioning);
-    prepare(isolineCounts(l, patch.primitive));
+    prepare(isolineCounts(l, patch.primitive), out);
     generateIsoline(l, patch.primitive == OutputPrimitive::Point, out);
     break;
   }
   }
   return out.numPoints;
+}
+
+} // namespace
+
+// The output is written once, straight into points_ / indices_: their sizes come first from the closed-form
+// counts (resize within the reserved capacity never allocates, and only zero-fills what grows).
+int Tessellator::tessellate(const Patch& patch, const Options& options) {
+  return tessellateWith(patch, options, &hlsl_, [this](const OutputCounts& c, MeshWriter& out) {
+    points_.resize(size_t(c.points));
+    indices_.resize(size_t(c.indices));
+    out.points = points_.data();
+    out.indices = indices_.data();
+  });
+}
+
+int tessellateInto(const Patch& patch, const Options& options, DomainPoint* points, int32_t* indices) {
+  return tessellateWith(patch, options, nullptr, [&](const OutputCounts&, MeshWriter& out) {
+    out.points = points;
+    out.indices = indices;
+  });
 }
 
 // ---------------------------------------------------------------------------------------------------------------
