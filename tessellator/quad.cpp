@@ -2,6 +2,8 @@
 // axis; connectivity ring by ring, then the middle strip of an odd axis. Order exactly as the D3D11 reference.
 #include "generate.h"
 
+#include <vector>
+
 namespace fftess {
 namespace {
 
@@ -59,75 +61,129 @@ void quadPoints(const ProcessedQuad& q, MeshWriter& out) {
   out.numPoints = int(dst - out.points);
 }
 
-void quadTriangles(const ProcessedQuad& q, MeshWriter& out, int firstInsidePoint) {
-  const int n[2] = {q.inside[U].numPoints, q.inside[V].numPoints};
-  const int rowsToCentre[2] = {(n[U] + 1) >> 1, (n[V] + 1) >> 1};
-  const int rings = rowsToCentre[U] < rowsToCentre[V] ? rowsToCentre[U] : rowsToCentre[V];
-  // With an even inside axis, the innermost ring of the other axis is a degenerate row of points; the rows along it
-  // run backwards through the point array. Indexed by the axis the row runs along.
-  const int degenerateRing[2] = {!q.inside[V].odd ? rowsToCentre[V] - 1 : -1,
-                                 !q.inside[U].odd ? rowsToCentre[U] - 1 : -1};
+// Connectivity, ring by ring. The shape of the inside (both axes' point counts and parities) fixes everything from
+// ring 2 inwards: those triangles only use inside points, so relative to the first inside point they are the same
+// for every patch with that inside shape, whatever the outer edges and the fractions.
+struct QuadShape {
+  int n[2];             // inside points per axis
+  bool odd[2];          // inside parities
+  int numHalf[2];       // inside half points (ring 1 transitions)
+  int rings;            // rings including ring 1
+  int degenerateRing[2]; // per axis the row runs along: the ring whose row on it runs backwards (-1: none)
 
-  // The current outside row of each edge: factor half-size, parity, point count.
-  int outsideHalf[4], outsidePoints[4];
-  bool outsideOdd[4];
+  explicit QuadShape(const ProcessedQuad& q) {
+    for (int a = 0; a < 2; ++a) {
+      n[a] = q.inside[a].numPoints;
+      odd[a] = q.inside[a].odd;
+      numHalf[a] = q.inside[a].numHalfPoints;
+    }
+    const int rowsToCentre[2] = {(n[U] + 1) >> 1, (n[V] + 1) >> 1};
+    rings = rowsToCentre[U] < rowsToCentre[V] ? rowsToCentre[U] : rowsToCentre[V];
+    // With an even inside axis, the innermost ring of the other axis is a degenerate row of points; the rows along
+    // it run backwards through the point array.
+    degenerateRing[U] = !odd[V] ? rowsToCentre[V] - 1 : -1;
+    degenerateRing[V] = !odd[U] ? rowsToCentre[U] - 1 : -1;
+  }
+};
+
+struct RingCursor {
+  int insideBase, outsideBase;
+  int outsidePoints[4]; // points on the current outside row of each edge
+};
+
+// Stitches ring `ring` to the ring outside it (ring 1: to the outer edges, in ruler order).
+void stitchRing(const QuadShape& sh, const ProcessedQuad& q, MeshWriter& out, int ring, RingCursor& c) {
+  const int insidePoints[2] = {sh.n[U] - 2 * ring, sh.n[V] - 2 * ring};
+  const int ringInsideStart = c.insideBase, ringOutsideStart = c.outsideBase;
   for (int e = 0; e < 4; ++e) {
-    outsideHalf[e] = q.outer[e].numHalfPoints;
-    outsideOdd[e] = q.outer[e].odd;
-    outsidePoints[e] = q.outer[e].numPoints;
-  }
-  int insideBase = firstInsidePoint, outsideBase = 0;
-  for (int ring = 1; ring < rings; ++ring) {
-    const int insidePoints[2] = {n[U] - 2 * ring, n[V] - 2 * ring};
-    const int ringInsideStart = insideBase, ringOutsideStart = outsideBase;
-    for (int e = 0; e < 4; ++e) {
-      const int along = (e + 1) & 1;
-      const bool degenerate = ring == degenerateRing[along];
-      Row inside{insideBase, 1}, outside{outsideBase, 1};
-      if (e == 3) {
-        // The ring's last edge ends on the ring's first point.
-        outside.redirectFrom = outsidePoints[e] - 1;
-        outside.redirectTo = ringOutsideStart;
-        if (degenerate) {
-          inside.step = -1;
-        } else {
-          inside.redirectFrom = insidePoints[along] - 1;
-          inside.redirectTo = ringInsideStart;
-        }
-      } else if (e == 2 && degenerate) {
+    const int along = (e + 1) & 1;
+    const bool degenerate = ring == sh.degenerateRing[along];
+    Row inside{c.insideBase, 1}, outside{c.outsideBase, 1};
+    if (e == 3) {
+      // The ring's last edge ends on the ring's first point.
+      outside.redirectFrom = c.outsidePoints[e] - 1;
+      outside.redirectTo = ringOutsideStart;
+      if (degenerate) {
         inside.step = -1;
+      } else {
+        inside.redirectFrom = insidePoints[along] - 1;
+        inside.redirectTo = ringInsideStart;
       }
-      if (ring == 1)
-        stitchTransition(out, inside, q.inside[along].numHalfPoints, q.inside[along].odd, outside, outsideHalf[e],
-                         outsideOdd[e]);
-      else
-        stitchRegular(out, true, Diagonals::Mirrored, insidePoints[along], inside, outside);
-      outsideBase += outsidePoints[e] - 1;
-      insideBase += (e == 2 && degenerate) ? -(insidePoints[along] - 1) : insidePoints[along] - 1;
-      outsidePoints[e] = insidePoints[along];
+    } else if (e == 2 && degenerate) {
+      inside.step = -1;
     }
-    if (ring == 1) {
-      for (int e = 0; e < 4; ++e) {
-        outsideHalf[e] = q.inside[e & 1].numHalfPoints;
-        outsideOdd[e] = q.inside[e & 1].odd;
-      }
-    }
+    if (ring == 1)
+      stitchTransition(out, inside, sh.numHalf[along], sh.odd[along], outside, q.outer[e].numHalfPoints,
+                       q.outer[e].odd);
+    else
+      stitchRegular(out, true, Diagonals::Mirrored, insidePoints[along], inside, outside);
+    c.outsideBase += c.outsidePoints[e] - 1;
+    c.insideBase += (e == 2 && degenerate) ? -(insidePoints[along] - 1) : insidePoints[along] - 1;
+    c.outsidePoints[e] = insidePoints[along];
   }
+}
+
+// Rings 2.. and the middle strip of an odd shorter axis.
+void quadInterior(const QuadShape& sh, const ProcessedQuad& q, MeshWriter& out, RingCursor& c) {
+  for (int ring = 2; ring < sh.rings; ++ring) stitchRing(sh, q, out, ring, c);
+  const int* n = sh.n;
   // Odd shorter axis: a strip of quads through the middle, between the two long sides of the last ring.
-  if (n[U] > n[V] && q.inside[V].odd) {
-    const int quads = (((n[U] >> 1) - (n[V] >> 1)) << 1) + (q.inside[U].odd ? 1 : 2);
-    const int far = outsideBase + quads + 2;
-    Row inside{far + quads, -1, 0, outsideBase};
-    Row outside{outsideBase + 1, 1};
+  if (n[U] > n[V] && sh.odd[V]) {
+    const int quads = (((n[U] >> 1) - (n[V] >> 1)) << 1) + (sh.odd[U] ? 1 : 2);
+    const int far = c.outsideBase + quads + 2;
+    Row inside{far + quads, -1, 0, c.outsideBase};
+    Row outside{c.outsideBase + 1, 1};
     stitchRegular(out, false, Diagonals::InsideToOutside, quads + 1, inside, outside);
-  } else if (n[V] >= n[U] && q.inside[U].odd) {
-    const int quads = (((n[V] >> 1) - (n[U] >> 1)) << 1) + (q.inside[V].odd ? 1 : 2);
-    const int far = outsideBase + quads + 1;
+  } else if (n[V] >= n[U] && sh.odd[U]) {
+    const int quads = (((n[V] >> 1) - (n[U] >> 1)) << 1) + (sh.odd[V] ? 1 : 2);
+    const int far = c.outsideBase + quads + 1;
     Row inside{far + quads, -1};
-    Row outside{outsideBase, 1};
-    stitchRegular(out, false, q.inside[V].odd ? Diagonals::InsideToOutsideExceptMiddle : Diagonals::InsideToOutside,
+    Row outside{c.outsideBase, 1};
+    stitchRegular(out, false, sh.odd[V] ? Diagonals::InsideToOutsideExceptMiddle : Diagonals::InsideToOutside,
                   quads + 1, inside, outside);
   }
+}
+
+// Interior index templates (rings 2.. relative to the first inside point), per thread, keyed by the inside shape
+// and winding; direct-mapped. A template is written once and then copied with the base added: no per-triangle
+// work for repeated shapes (a workload with factors spread over [1,16] has a few dozen shapes).
+struct InteriorTemplate {
+  uint32_t key = 0; // 0: empty
+  std::vector<int32_t> indices;
+};
+constexpr int kInteriorSlots = 256;    // templates of up to kSmallInterior indices
+constexpr int kLargeInteriorSlots = 4; // larger ones (up to a factor-64 interior, ~96 KB): bounded memory
+constexpr size_t kSmallInterior = 4096;
+
+uint32_t shapeKey(const QuadShape& sh, bool ccw) {
+  return 1u | uint32_t(sh.n[U]) << 1 | uint32_t(sh.n[V]) << 9 | uint32_t(sh.odd[U]) << 17 |
+         uint32_t(sh.odd[V]) << 18 | uint32_t(ccw) << 19;
+}
+
+void quadTriangles(const ProcessedQuad& q, MeshWriter& out, int firstInsidePoint) {
+  const QuadShape sh(q);
+  RingCursor c{firstInsidePoint, 0, {}};
+  for (int e = 0; e < 4; ++e) c.outsidePoints[e] = q.outer[e].numPoints;
+  stitchRing(sh, q, out, 1, c);
+
+  thread_local InteriorTemplate cache[kInteriorSlots];
+  thread_local InteriorTemplate large[kLargeInteriorSlots];
+  const uint32_t key = shapeKey(sh, out.ccw);
+  // Interior size from the shape alone: about 6 indices per inside quad.
+  const bool isLarge = size_t(6) * size_t(sh.n[U]) * size_t(sh.n[V]) > kSmallInterior;
+  InteriorTemplate& slot = isLarge ? large[key % kLargeInteriorSlots] : cache[(key * 0x9e3779b1u) >> 24];
+  int32_t* dst = out.indices + out.numIndices;
+  if (slot.key == key) {
+    const int32_t* src = slot.indices.data();
+    const int count = int(slot.indices.size());
+    for (int k = 0; k < count; ++k) dst[k] = src[k] + firstInsidePoint;
+    out.numIndices += count;
+    return;
+  }
+  quadInterior(sh, q, out, c);
+  slot.key = key;
+  slot.indices.assign(dst, out.indices + out.numIndices);
+  for (int32_t& v : slot.indices) v -= firstInsidePoint;
 }
 
 } // namespace

@@ -201,6 +201,56 @@ void regular(MeshWriter& w, bool trapezoid, Diagonals diagonals, int numIn, cons
   if (trapezoid) tri<Ccw>(d - 3, out.at(quads + 1), out.at(quads + 2), in.at(quads));
 }
 
+// Transition templates: the triangles of one transition as corner codes (inside position k: k, outside position k:
+// kRowCodes + k), clockwise. They depend only on the two half counts and parities, so each thread keeps the recent
+// ones (direct-mapped) and a transition becomes three lookups per triangle.
+constexpr int kRowCodes = kMaxRow;
+constexpr int kMaxTransitionTriangles = 2 * 64 + 2;
+struct TransitionTemplate {
+  uint32_t key = 0; // 0: empty
+  int triangles = 0;
+  int insidePositions = 0, outsidePositions = 0; // positions used on each row
+  uint8_t corner[3 * kMaxTransitionTriangles];
+};
+constexpr int kTransitionSlots = 256;
+
+const TransitionTemplate& transitionTemplate(int nIn, bool insideOdd, int nOut, bool outsideOdd) {
+  thread_local TransitionTemplate cache[kTransitionSlots];
+  const uint32_t key = 1u | uint32_t(nIn) << 1 | uint32_t(nOut) << 7 | uint32_t(insideOdd) << 13 |
+                       uint32_t(outsideOdd) << 14;
+  TransitionTemplate& slot = cache[(key * 0x9e3779b1u) >> 24];
+  if (slot.key == key) return slot;
+  int32_t codes[3 * kMaxTransitionTriangles];
+  MeshWriter w;
+  w.indices = codes;
+  transition<false>(w, Row{0, 1}, nIn, insideOdd, Row{kRowCodes, 1}, nOut, outsideOdd);
+  slot.insidePositions = slot.outsidePositions = 0;
+  for (int k = 0; k < w.numIndices; ++k) {
+    slot.corner[k] = uint8_t(codes[k]);
+    int& used = codes[k] < kRowCodes ? slot.insidePositions : slot.outsidePositions;
+    const int position = codes[k] < kRowCodes ? codes[k] : codes[k] - kRowCodes;
+    if (position + 1 > used) used = position + 1;
+  }
+  slot.triangles = w.numIndices / 3;
+  slot.key = key;
+  return slot;
+}
+
+template <bool Ccw>
+void emitTransition(MeshWriter& w, const TransitionTemplate& t, const Row& in, const Row& out) {
+  // Corner code -> point index, redirects applied.
+  int32_t value[2 * kRowCodes];
+  for (int k = 0; k < t.insidePositions; ++k) value[k] = in.first + in.step * k;
+  for (int k = 0; k < t.outsidePositions; ++k) value[kRowCodes + k] = out.first + out.step * k;
+  if (in.redirectFrom >= 0 && in.redirectFrom < t.insidePositions) value[in.redirectFrom] = in.redirectTo;
+  if (out.redirectFrom >= 0 && out.redirectFrom < t.outsidePositions)
+    value[kRowCodes + out.redirectFrom] = out.redirectTo;
+  int32_t* d = w.indices + w.numIndices;
+  const uint8_t* c = t.corner;
+  for (int k = 0; k < t.triangles; ++k, c += 3, d += 3) tri<Ccw>(d, value[c[0]], value[c[1]], value[c[2]]);
+  w.numIndices = int(d - w.indices);
+}
+
 } // namespace
 
 void stitchTransition(MeshWriter& out, const Row& inside, int insideNumHalf, bool insideOdd, const Row& outside,
@@ -208,10 +258,11 @@ void stitchTransition(MeshWriter& out, const Row& inside, int insideNumHalf, boo
   // Odd factors have a middle segment, not a middle point: count the half without it.
   const int nIn = insideOdd ? insideNumHalf - 1 : insideNumHalf;
   const int nOut = outsideOdd ? outsideNumHalf - 1 : outsideNumHalf;
+  const TransitionTemplate& t = transitionTemplate(nIn, insideOdd, nOut, outsideOdd);
   if (out.ccw)
-    transition<true>(out, inside, nIn, insideOdd, outside, nOut, outsideOdd);
+    emitTransition<true>(out, t, inside, outside);
   else
-    transition<false>(out, inside, nIn, insideOdd, outside, nOut, outsideOdd);
+    emitTransition<false>(out, t, inside, outside);
 }
 
 void stitchRegular(MeshWriter& out, bool trapezoid, Diagonals diagonals, int numInsidePoints, const Row& inside,
