@@ -5,50 +5,6 @@
 #include "tessellator.h"
 
 namespace fftess {
-namespace {
-
-// Clears the highest set bit among bits 30..0.
-int withoutHighestBit(int v) {
-  const unsigned low = unsigned(v) & 0x7fffffffu;
-  return low ? int(unsigned(v) & ~(1u << (31 - __builtin_clz(low)))) : 0;
-}
-
-// Number of points on an axis of this factor and parity, both ends included.
-int pointsForFactor(fx::Fixed f, bool odd) {
-  const fx::Fixed half = (f + 1) / 2; // rounded half factor
-  if (odd) return int((fx::fixedCeil(fx::kHalf + half) * 2) >> fx::kFractionBits);
-  return int((fx::fixedCeil(half) * 2) >> fx::kFractionBits) + 1;
-}
-
-} // namespace
-
-AxisSpacing makeAxisSpacing(fx::Fixed f, bool odd) {
-  AxisSpacing s;
-  s.odd = odd;
-  s.numPoints = pointsForFactor(f, odd);
-  // Half the factor, rounded; odd parity (and a factor of 1 placed as even) shift it by one half so that the
-  // odd count of segments splits around a middle segment.
-  fx::Fixed half = (f + 1) / 2;
-  if (odd || half == fx::kHalf) half += fx::kHalf;
-  s.halfFactor = half;
-  s.floorHalf = fx::fixedFloor(half);
-  s.ceilHalf = fx::fixedCeil(half);
-  s.halfFraction = half - s.floorHalf;
-  s.numHalfPoints = int(s.ceilHalf >> fx::kFractionBits);
-  // Ruler-function split order: the point that is still "being born" on the floor placement.
-  const int floorInt = int(s.floorHalf >> fx::kFractionBits);
-  if (s.ceilHalf == s.floorHalf)
-    s.splitPoint = s.numHalfPoints + 1; // no fraction: never split
-  else if (odd)
-    s.splitPoint = (s.floorHalf == fx::kOne) ? 0 : (withoutHighestBit(floorInt - 1) << 1) + 1;
-  else
-    s.splitPoint = (withoutHighestBit(floorInt) << 1) + 1;
-  s.floorSegments = int((s.floorHalf * 2) >> fx::kFractionBits) - (odd ? 1 : 0);
-  s.ceilSegments = int((s.ceilHalf * 2) >> fx::kFractionBits) - (odd ? 1 : 0);
-  s.invFloorSegments = fx::kReciprocals.entry[s.floorSegments];
-  s.invCeilSegments = fx::kReciprocals.entry[s.ceilSegments];
-  return s;
-}
 
 fx::Fixed placePoint(const AxisSpacing& s, int index, EdgePointTrace* trace) {
   int p = index;
@@ -91,34 +47,32 @@ fx::Fixed placePoint(const AxisSpacing& s, int index, EdgePointTrace* trace) {
   return result;
 }
 
-// Same arithmetic as placePoint for all points at once, 4 lanes at a time (GCC vector extensions, SSE2):
-// p is the index on the half axis (mirrored for the second half), the location is blended from the floor and ceil
-// placements, the second half is 1 - location, and the even middle is exactly 0.5. Writes up to the
-// next multiple of 4.
+// Same arithmetic as placePoint for all points at once. The half axis is placed (blend of the floor and ceil
+// placements); the second half is 1 - its mirror point, and the even middle exactly 0.5. Inside axes raised above
+// their own point count (mirror index below 0) take placePoint's formula for those points.
 void fillAxisTable(const AxisSpacing& s, AxisTable& t) {
-  using v4i = int32_t __attribute__((vector_size(16)));
-  using v4u = uint32_t __attribute__((vector_size(16)));
-  using v4f = float __attribute__((vector_size(16)));
   const int n = s.numPoints, half = s.numHalfPoints, odd = s.odd ? 1 : 0;
   t.count = n;
   const uint32_t wFloor = fx::kOne - s.halfFraction, wCeil = s.halfFraction;
-  const v4i lane = {0, 1, 2, 3};
-  for (int k0 = 0; k0 < n; k0 += 4) {
-    const v4i k = k0 + lane;
-    const v4i mirrored = k >= half;                   // lanes: -1 or 0
-    const v4i p = mirrored ? 2 * half - k - odd : k;
-    const v4u onCeil = (v4u)p;
-    const v4u onFloor = onCeil + (v4u)(p > s.splitPoint); // -1 where the floor placement lags
-    const v4u blend = onFloor * s.invFloorSegments * wFloor + onCeil * s.invCeilSegments * wCeil;
-    const v4u onHalf = (blend + fx::kHalf) >> fx::kFractionBits;
-    v4u x = mirrored ? fx::kOne - onHalf : onHalf;
-    x = p == half ? v4u{} + fx::kHalf : x;
-    std::memcpy(t.fixed + k0, &x, sizeof x);
-    // fx::fixedToFloat: integer part plus fraction * 2^-16 (exact), one float add.
-    const v4f param = __builtin_convertvector((v4i)(x >> fx::kFractionBits), v4f) +
-                      __builtin_convertvector((v4i)(x & fx::kFractionMask), v4f) * (1.0f / float(fx::kOne));
-    std::memcpy(t.param + k0, &param, sizeof param);
+  const uint32_t fFloor = s.invFloorSegments * wFloor, fCeil = s.invCeilSegments * wCeil; // (mod 2^32, as placePoint)
+  auto onHalf = [&](int p) {
+    const uint32_t onCeil = uint32_t(p);
+    const uint32_t onFloor = p > s.splitPoint ? onCeil - 1 : onCeil;
+    return (onFloor * fFloor + onCeil * fCeil + fx::kHalf) >> fx::kFractionBits;
+  };
+  // fx::fixedToFloat as one conversion: integer part + fraction/65536 in one float add is x/65536 rounded to
+  // nearest even, and so is float(x) (rounded to nearest even) times the exact power of two 2^-16.
+  auto put = [&t](int k, fx::Fixed x) {
+    t.fixed[k] = x;
+    t.param[k] = float(x) * (1.0f / float(fx::kOne));
+  };
+  const int firstHalf = half < n ? half : n;
+  for (int k = 0; k < firstHalf; ++k) put(k, onHalf(k));
+  for (int k = firstHalf; k < n; ++k) {
+    const int p = 2 * half - k - odd;
+    put(k, fx::kOne - (p >= 0 && p < firstHalf ? t.fixed[p] : onHalf(p)));
   }
+  if (!odd && half < n) put(half, fx::kHalf);
 }
 
 } // namespace fftess

@@ -245,10 +245,16 @@ void emitTransition(MeshWriter& w, const TransitionTemplate& t, const Row& in, c
   if (in.redirectFrom >= 0 && in.redirectFrom < t.insidePositions) value[in.redirectFrom] = in.redirectTo;
   if (out.redirectFrom >= 0 && out.redirectFrom < t.outsidePositions)
     value[kRowCodes + out.redirectFrom] = out.redirectTo;
-  int32_t* d = w.indices + w.numIndices;
-  const uint8_t* c = t.corner;
-  for (int k = 0; k < t.triangles; ++k, c += 3, d += 3) tri<Ccw>(d, value[c[0]], value[c[1]], value[c[2]]);
-  w.numIndices = int(d - w.indices);
+  int32_t* __restrict d = w.indices + w.numIndices;
+  const uint8_t* __restrict c = t.corner;
+  const int triangles = t.triangles;
+  for (int k = 0; k < 3 * triangles; k += 3) {
+    const int32_t a = value[c[k]], b = value[c[k + 1]], e = value[c[k + 2]];
+    d[k] = a;
+    d[k + 1] = Ccw ? e : b;
+    d[k + 2] = Ccw ? b : e;
+  }
+  w.numIndices += 3 * triangles;
 }
 
 } // namespace
