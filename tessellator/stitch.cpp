@@ -202,28 +202,36 @@ void regular(MeshWriter& w, bool trapezoid, Diagonals diagonals, int numIn, cons
 }
 
 // Transition templates: the triangles of one transition as corner codes (inside position k: k, outside position k:
-// kRowCodes + k), clockwise. They depend only on the two half counts and parities, so each thread keeps the recent
-// ones (direct-mapped) and a transition becomes three lookups per triangle.
+// kRowCodes + k), in output order (the winding is part of the key). They depend only on the two half counts and
+// parities, so each thread keeps the recent ones (direct-mapped). Rows are affine (first + step * position) except
+// that a ring's last edge redirects the last position of its rows, so a transition is computed from the codes with
+// no lookups (8 at a time with AVX2) and the few corners on a last position are patched afterwards.
 constexpr int kRowCodes = kMaxRow;
 constexpr int kMaxTransitionTriangles = 2 * 64 + 2;
+constexpr int kMaxLastCorners = 16;
 struct TransitionTemplate {
   uint32_t key = 0; // 0: empty
-  int triangles = 0;
+  int indices = 0;
   int insidePositions = 0, outsidePositions = 0; // positions used on each row
-  uint8_t corner[3 * kMaxTransitionTriangles];
+  int lastInside[kMaxLastCorners], lastOutside[kMaxLastCorners]; // corners on each row's last position
+  int numLastInside = 0, numLastOutside = 0; // -1: more than kMaxLastCorners (redirects take Row::at)
+  uint8_t corner[3 * kMaxTransitionTriangles + 8];
 };
 constexpr int kTransitionSlots = 256;
 
-const TransitionTemplate& transitionTemplate(int nIn, bool insideOdd, int nOut, bool outsideOdd) {
+const TransitionTemplate& transitionTemplate(int nIn, bool insideOdd, int nOut, bool outsideOdd, bool ccw) {
   thread_local TransitionTemplate cache[kTransitionSlots];
   const uint32_t key = 1u | uint32_t(nIn) << 1 | uint32_t(nOut) << 7 | uint32_t(insideOdd) << 13 |
-                       uint32_t(outsideOdd) << 14;
+                       uint32_t(outsideOdd) << 14 | uint32_t(ccw) << 15;
   TransitionTemplate& slot = cache[(key * 0x9e3779b1u) >> 24];
   if (slot.key == key) return slot;
   int32_t codes[3 * kMaxTransitionTriangles];
   MeshWriter w;
   w.indices = codes;
-  transition<false>(w, Row{0, 1}, nIn, insideOdd, Row{kRowCodes, 1}, nOut, outsideOdd);
+  if (ccw)
+    transition<true>(w, Row{0, 1}, nIn, insideOdd, Row{kRowCodes, 1}, nOut, outsideOdd);
+  else
+    transition<false>(w, Row{0, 1}, nIn, insideOdd, Row{kRowCodes, 1}, nOut, outsideOdd);
   slot.insidePositions = slot.outsidePositions = 0;
   for (int k = 0; k < w.numIndices; ++k) {
     slot.corner[k] = uint8_t(codes[k]);
@@ -231,30 +239,79 @@ const TransitionTemplate& transitionTemplate(int nIn, bool insideOdd, int nOut, 
     const int position = codes[k] < kRowCodes ? codes[k] : codes[k] - kRowCodes;
     if (position + 1 > used) used = position + 1;
   }
-  slot.triangles = w.numIndices / 3;
+  slot.numLastInside = slot.numLastOutside = 0;
+  auto note = [](int* list, int& count, int k) {
+    if (count >= 0 && count < kMaxLastCorners)
+      list[count++] = k;
+    else
+      count = -1;
+  };
+  for (int k = 0; k < w.numIndices; ++k) {
+    if (codes[k] == slot.insidePositions - 1) note(slot.lastInside, slot.numLastInside, k);
+    if (codes[k] == kRowCodes + slot.outsidePositions - 1) note(slot.lastOutside, slot.numLastOutside, k);
+  }
+  slot.indices = w.numIndices;
   slot.key = key;
   return slot;
 }
 
-template <bool Ccw>
-void emitTransition(MeshWriter& w, const TransitionTemplate& t, const Row& in, const Row& out) {
-  // Corner code -> point index, redirects applied.
-  int32_t value[2 * kRowCodes];
-  for (int k = 0; k < t.insidePositions; ++k) value[k] = in.first + in.step * k;
-  for (int k = 0; k < t.outsidePositions; ++k) value[kRowCodes + k] = out.first + out.step * k;
-  if (in.redirectFrom >= 0 && in.redirectFrom < t.insidePositions) value[in.redirectFrom] = in.redirectTo;
-  if (out.redirectFrom >= 0 && out.redirectFrom < t.outsidePositions)
-    value[kRowCodes + out.redirectFrom] = out.redirectTo;
-  int32_t* __restrict d = w.indices + w.numIndices;
-  const uint8_t* __restrict c = t.corner;
-  const int triangles = t.triangles;
-  for (int k = 0; k < 3 * triangles; k += 3) {
-    const int32_t a = value[c[k]], b = value[c[k + 1]], e = value[c[k + 2]];
-    d[k] = a;
-    d[k + 1] = Ccw ? e : b;
-    d[k + 2] = Ccw ? b : e;
+// Corner codes -> point indices for affine rows: d[k] = code < kRowCodes ? inFirst + inStep * code
+//                                                                      : outFirst + outStep * (code - kRowCodes).
+void affineCorners(int32_t* d, const uint8_t* c, int count, int inFirst, int inStep, int outFirst, int outStep) {
+  const int outBase = outFirst - outStep * kRowCodes;
+  for (int k = 0; k < count; ++k) {
+    const int code = c[k];
+    d[k] = code < kRowCodes ? inFirst + inStep * code : outBase + outStep * code;
   }
-  w.numIndices += 3 * triangles;
+}
+
+__attribute__((target("avx2"))) void affineCornersAvx2(int32_t* d, const uint8_t* c, int count, int inFirst, int inStep,
+                                                       int outFirst, int outStep) {
+  using v8b = uint8_t __attribute__((vector_size(8)));
+  const int outBase = outFirst - outStep * kRowCodes;
+  int k = 0;
+  for (; k + 8 <= count; k += 8) {
+    v8b bytes;
+    std::memcpy(&bytes, c + k, 8);
+    const v8i code = __builtin_convertvector(bytes, v8i);
+    const v8i value = code < kRowCodes ? inFirst + inStep * code : outBase + outStep * code;
+    std::memcpy(d + k, &value, sizeof value);
+  }
+  for (; k < count; ++k) {
+    const int code = c[k];
+    d[k] = code < kRowCodes ? inFirst + inStep * code : outBase + outStep * code;
+  }
+}
+
+const bool kHasAvx2 = [] {
+  __builtin_cpu_init();
+  return __builtin_cpu_supports("avx2") != 0;
+}();
+
+void emitTransition(MeshWriter& w, const TransitionTemplate& t, const Row& in, const Row& out) {
+  int32_t* d = w.indices + w.numIndices;
+  if (kHasAvx2)
+    affineCornersAvx2(d, t.corner, t.indices, in.first, in.step, out.first, out.step);
+  else
+    affineCorners(d, t.corner, t.indices, in.first, in.step, out.first, out.step);
+  // Redirects (only ever of a row's last position; anything else takes the lookups of at()).
+  if (in.redirectFrom >= 0) {
+    if (in.redirectFrom == t.insidePositions - 1 && t.numLastInside >= 0) {
+      for (int k = 0; k < t.numLastInside; ++k) d[t.lastInside[k]] = in.redirectTo;
+    } else {
+      for (int k = 0; k < t.indices; ++k)
+        if (t.corner[k] < kRowCodes) d[k] = in.at(t.corner[k]);
+    }
+  }
+  if (out.redirectFrom >= 0) {
+    if (out.redirectFrom == t.outsidePositions - 1 && t.numLastOutside >= 0) {
+      for (int k = 0; k < t.numLastOutside; ++k) d[t.lastOutside[k]] = out.redirectTo;
+    } else {
+      for (int k = 0; k < t.indices; ++k)
+        if (t.corner[k] >= kRowCodes) d[k] = out.at(t.corner[k] - kRowCodes);
+    }
+  }
+  w.numIndices += t.indices;
 }
 
 } // namespace
@@ -264,11 +321,7 @@ void stitchTransition(MeshWriter& out, const Row& inside, int insideNumHalf, boo
   // Odd factors have a middle segment, not a middle point: count the half without it.
   const int nIn = insideOdd ? insideNumHalf - 1 : insideNumHalf;
   const int nOut = outsideOdd ? outsideNumHalf - 1 : outsideNumHalf;
-  const TransitionTemplate& t = transitionTemplate(nIn, insideOdd, nOut, outsideOdd);
-  if (out.ccw)
-    emitTransition<true>(out, t, inside, outside);
-  else
-    emitTransition<false>(out, t, inside, outside);
+  emitTransition(out, transitionTemplate(nIn, insideOdd, nOut, outsideOdd, out.ccw), inside, outside);
 }
 
 void stitchRegular(MeshWriter& out, bool trapezoid, Diagonals diagonals, int numInsidePoints, const Row& inside,
