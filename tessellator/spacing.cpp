@@ -2,6 +2,7 @@
 
 #include <cstring>
 
+#include "simd.h"
 #include "tessellator.h"
 
 namespace fftess {
@@ -107,15 +108,21 @@ __attribute__((target("avx2"))) void fillAvx2(const AxisSpacing& s, AxisTable& t
   }
 }
 
-const bool kHasAvx2 = [] {
+const bool kCpuHasAvx2 = [] {
   __builtin_cpu_init();
   return __builtin_cpu_supports("avx2") != 0;
 }();
+bool gAvx2 = kCpuHasAvx2;
 
 } // namespace
 
+namespace simd {
+bool useAvx2() { return gAvx2; }
+void forcePortable(bool portable) { gAvx2 = !portable && kCpuHasAvx2; }
+} // namespace simd
+
 void fillAxisTable(const AxisSpacing& s, AxisTable& t) {
-  if (kHasAvx2)
+  if (simd::useAvx2())
     fillAvx2(s, t);
   else
     fillPortable(s, t);

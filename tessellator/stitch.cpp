@@ -1,5 +1,7 @@
 #include "stitch.h"
 
+#include "simd.h"
+
 #include <cstring>
 
 namespace fftess {
@@ -283,14 +285,9 @@ __attribute__((target("avx2"))) void affineCornersAvx2(int32_t* d, const uint8_t
   }
 }
 
-const bool kHasAvx2 = [] {
-  __builtin_cpu_init();
-  return __builtin_cpu_supports("avx2") != 0;
-}();
-
 void emitTransition(MeshWriter& w, const TransitionTemplate& t, const Row& in, const Row& out) {
   int32_t* d = w.indices + w.numIndices;
-  if (kHasAvx2)
+  if (simd::useAvx2())
     affineCornersAvx2(d, t.corner, t.indices, in.first, in.step, out.first, out.step);
   else
     affineCorners(d, t.corner, t.indices, in.first, in.step, out.first, out.step);

@@ -9,6 +9,7 @@
 
 #include "factor_samples.h"
 #include "legacy/legacy.h"
+#include "tessellator/simd.h"
 #include "tessellator/tessellator.h"
 
 using namespace fftess;
@@ -80,4 +81,11 @@ TEST_CASE("table kernels equal the old path on every equal-factor quad and tri",
           if (!sameOutput(t, n, pts, idx) && ++mismatches <= 5) FAIL_CHECK("differs: " << describe(p, {}));
         }
   CHECK(mismatches == 0);
+}
+
+TEST_CASE("portable loops equal the old path too (the AVX2 kernels are chosen at run time)", "[tessellator][differential]") {
+  fftess::simd::forcePortable(true);
+  runDraws(5u, 50000, false);
+  runDraws(15u, 50000, true);
+  fftess::simd::forcePortable(false);
 }
