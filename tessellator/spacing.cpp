@@ -82,6 +82,7 @@ void fillPortable(const AxisSpacing& s, AxisTable& t) {
   if (!odd && half < n) put(half, fx::kHalf);
 }
 
+#if defined(__x86_64__)
 // 8 points per step; writes up to the next multiple of 8 (kMaxAxisPoints leaves room).
 __attribute__((target("avx2"))) void fillAvx2(const AxisSpacing& s, AxisTable& t) {
   using v8i = int32_t __attribute__((vector_size(32)));
@@ -112,6 +113,10 @@ const bool kCpuHasAvx2 = [] {
   __builtin_cpu_init();
   return __builtin_cpu_supports("avx2") != 0;
 }();
+#else
+const bool kCpuHasAvx2 = false;
+void fillAvx2(const AxisSpacing& s, AxisTable& t) { fillPortable(s, t); }
+#endif
 bool gAvx2 = kCpuHasAvx2;
 
 } // namespace

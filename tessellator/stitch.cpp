@@ -3,6 +3,9 @@
 #include "simd.h"
 
 #include <cstring>
+#if defined(__x86_64__)
+#include <immintrin.h>
+#endif
 
 namespace fftess {
 namespace {
@@ -267,29 +270,38 @@ void affineCorners(int32_t* d, const uint8_t* c, int count, int inFirst, int inS
   }
 }
 
+#if defined(__x86_64__)
+// Rows step by +-1 (a degenerate inside row runs backwards): step * x = (x ^ sign) - sign.
 __attribute__((target("avx2"))) void affineCornersAvx2(int32_t* d, const uint8_t* c, int count, int inFirst, int inStep,
                                                        int outFirst, int outStep) {
-  using v8b = uint8_t __attribute__((vector_size(8)));
   const int outBase = outFirst - outStep * kRowCodes;
   int k = 0;
-  for (; k + 8 <= count; k += 8) {
-    v8b bytes;
-    std::memcpy(&bytes, c + k, 8);
-    const v8i code = __builtin_convertvector(bytes, v8i);
-    const v8i value = code < kRowCodes ? inFirst + inStep * code : outBase + outStep * code;
-    std::memcpy(d + k, &value, sizeof value);
+  if ((inStep == 1 || inStep == -1) && (outStep == 1 || outStep == -1)) {
+    const __m256i limit = _mm256_set1_epi32(kRowCodes - 1);
+    const __m256i inSign = _mm256_set1_epi32(inStep < 0 ? -1 : 0), outSign = _mm256_set1_epi32(outStep < 0 ? -1 : 0);
+    const __m256i inBase = _mm256_set1_epi32(inFirst), outBase8 = _mm256_set1_epi32(outBase);
+    for (; k + 8 <= count; k += 8) {
+      const __m256i code = _mm256_cvtepu8_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(c + k)));
+      const __m256i onOutside = _mm256_cmpgt_epi32(code, limit);
+      const __m256i inValue = _mm256_add_epi32(inBase, _mm256_sub_epi32(_mm256_xor_si256(code, inSign), inSign));
+      const __m256i outValue = _mm256_add_epi32(outBase8, _mm256_sub_epi32(_mm256_xor_si256(code, outSign), outSign));
+      _mm256_storeu_si256(reinterpret_cast<__m256i*>(d + k), _mm256_blendv_epi8(inValue, outValue, onOutside));
+    }
   }
   for (; k < count; ++k) {
     const int code = c[k];
     d[k] = code < kRowCodes ? inFirst + inStep * code : outBase + outStep * code;
   }
 }
+#endif
 
 void emitTransition(MeshWriter& w, const TransitionTemplate& t, const Row& in, const Row& out) {
   int32_t* d = w.indices + w.numIndices;
+#if defined(__x86_64__)
   if (simd::useAvx2())
     affineCornersAvx2(d, t.corner, t.indices, in.first, in.step, out.first, out.step);
   else
+#endif
     affineCorners(d, t.corner, t.indices, in.first, in.step, out.first, out.step);
   // Redirects (only ever of a row's last position; anything else takes the lookups of at()).
   if (in.redirectFrom >= 0) {
