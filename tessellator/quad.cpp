@@ -1,8 +1,12 @@
 // Quad domain: outer ring clockwise from (u=0, v=1), inner rings spiralling in, then the middle row of an even
 // axis; connectivity ring by ring, then the middle strip of an odd axis. Order exactly as the D3D11 reference.
 #include "generate.h"
+#include "simd.h"
 
 #include <vector>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace fftess {
 namespace {
@@ -20,6 +24,29 @@ void minimumQuad(bool triangles, MeshWriter& out) {
   }
 }
 
+// Rows of points with one coordinate fixed: {c, t[k]} (or {t[k], c}) for k = from, from + 1, ... (forward) or
+// from, from - 1, ... (backward); count points. Four points per step with SSE2.
+template <bool FixedFirst, bool Forward>
+DomainPoint* row(DomainPoint* dst, float c, const float* t, int from, int count) {
+  int k = 0;
+#if defined(__SSE2__)
+  const __m128 fixed = _mm_set1_ps(c);
+  for (; k + 4 <= count; k += 4, dst += 4) {
+    __m128 v = Forward ? _mm_loadu_ps(t + from + k) : _mm_loadu_ps(t + from - k - 3);
+    if (!Forward) v = _mm_shuffle_ps(v, v, _MM_SHUFFLE(0, 1, 2, 3));
+    const __m128 lo = FixedFirst ? _mm_unpacklo_ps(fixed, v) : _mm_unpacklo_ps(v, fixed);
+    const __m128 hi = FixedFirst ? _mm_unpackhi_ps(fixed, v) : _mm_unpackhi_ps(v, fixed);
+    _mm_storeu_ps(reinterpret_cast<float*>(dst), lo);
+    _mm_storeu_ps(reinterpret_cast<float*>(dst) + 4, hi);
+  }
+#endif
+  for (; k < count; ++k, ++dst) {
+    const float x = t[Forward ? from + k : from - k];
+    *dst = FixedFirst ? DomainPoint{c, x} : DomainPoint{x, c};
+  }
+  return dst;
+}
+
 // D3D11.3 spec 11.7.6-11.7.8: points from 1D tables. Every point of the quad is (u table[i], v table[j]) of one
 // outer edge's table or of the two inside axes' tables, so placement runs once per axis, not once per point.
 void quadPoints(const ProcessedQuad& q, MeshWriter& out) {
@@ -31,10 +58,10 @@ void quadPoints(const ProcessedQuad& q, MeshWriter& out) {
     fillAxisTable(q.outer[e], t);
     const int last = t.count - 1;
     switch (e) {
-    case 0: for (int p = 0; p < last; ++p) *dst++ = {0.0f, t.param[last - p]}; break;
-    case 1: for (int p = 0; p < last; ++p) *dst++ = {t.param[p], 0.0f}; break;
-    case 2: for (int p = 0; p < last; ++p) *dst++ = {1.0f, t.param[p]}; break;
-    default: for (int p = 0; p < last; ++p) *dst++ = {t.param[last - p], 1.0f}; break;
+    case 0: dst = row<true, false>(dst, 0.0f, t.param, last, last); break;
+    case 1: dst = row<false, true>(dst, 0.0f, t.param, 0, last); break;
+    case 2: dst = row<true, true>(dst, 1.0f, t.param, 0, last); break;
+    default: dst = row<false, false>(dst, 1.0f, t.param, last, last); break;
     }
   }
   // Inner rings, same edge order, each edge at a fixed position on the perpendicular axis.
@@ -47,10 +74,10 @@ void quadPoints(const ProcessedQuad& q, MeshWriter& out) {
   const int rings = (nU < nV ? nU : nV) >> 1;
   for (int ring = 1; ring < rings; ++ring) {
     const int endU = nU - 1 - ring, endV = nV - 1 - ring;
-    for (int p = ring; p < endV; ++p) *dst++ = {U_[ring], V_[endV - (p - ring)]};
-    for (int p = ring; p < endU; ++p) *dst++ = {U_[p], V_[ring]};
-    for (int p = ring; p < endV; ++p) *dst++ = {U_[endU], V_[p]};
-    for (int p = ring; p < endU; ++p) *dst++ = {U_[endU - (p - ring)], V_[endV]};
+    dst = row<true, false>(dst, U_[ring], V_, endV, endV - ring);
+    dst = row<false, true>(dst, V_[ring], U_, ring, endU - ring);
+    dst = row<true, true>(dst, U_[endU], V_, ring, endV - ring);
+    dst = row<false, false>(dst, V_[endV], U_, endU, endU - ring);
   }
   // Even parity on the shorter axis leaves a degenerate innermost ring: one row of points through the middle.
   if (nU > nV && !q.inside[V].odd) {
@@ -160,6 +187,22 @@ uint32_t shapeKey(const QuadShape& sh, bool ccw) {
          uint32_t(sh.odd[V]) << 18 | uint32_t(ccw) << 19;
 }
 
+// dst[k] = src[k] + base (a template placed after the patch's outer and ring-1 points).
+void addBasePortable(int32_t* dst, const int32_t* src, int count, int32_t base) {
+  for (int k = 0; k < count; ++k) dst[k] = src[k] + base;
+}
+#if defined(__x86_64__)
+__attribute__((target("avx2"))) void addBaseAvx2(int32_t* dst, const int32_t* src, int count, int32_t base) {
+  for (int k = 0; k < count; ++k) dst[k] = src[k] + base;
+}
+#endif
+void addBase(int32_t* dst, const int32_t* src, int count, int32_t base) {
+#if defined(__x86_64__)
+  if (simd::useAvx2()) return addBaseAvx2(dst, src, count, base);
+#endif
+  addBasePortable(dst, src, count, base);
+}
+
 void quadTriangles(const ProcessedQuad& q, MeshWriter& out, int firstInsidePoint) {
   const QuadShape sh(q);
   RingCursor c{firstInsidePoint, 0, {}};
@@ -174,9 +217,8 @@ void quadTriangles(const ProcessedQuad& q, MeshWriter& out, int firstInsidePoint
   InteriorTemplate& slot = isLarge ? large[key % kLargeInteriorSlots] : cache[(key * 0x9e3779b1u) >> 24];
   int32_t* dst = out.indices + out.numIndices;
   if (slot.key == key) {
-    const int32_t* src = slot.indices.data();
     const int count = int(slot.indices.size());
-    for (int k = 0; k < count; ++k) dst[k] = src[k] + firstInsidePoint;
+    addBase(dst, slot.indices.data(), count, firstInsidePoint);
     out.numIndices += count;
     return;
   }
