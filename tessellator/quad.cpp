@@ -224,6 +224,8 @@ void quadTriangles(const ProcessedQuad& q, MeshWriter& out, int firstInsidePoint
   }
   quadInterior(sh, q, out, c);
   slot.key = key;
+  // Each slot allocates once, for the largest template it can hold (kSmallInterior, or a factor-64 interior).
+  if (slot.indices.capacity() == 0) slot.indices.reserve(isLarge ? size_t(kMaxIndices) : kSmallInterior);
   slot.indices.assign(dst, out.indices + out.numIndices);
   for (int32_t& v : slot.indices) v -= firstInsidePoint;
 }
