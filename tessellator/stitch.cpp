@@ -64,10 +64,10 @@ inline void tri(int32_t* d, int a, int b, int c) {
 }
 
 // One move of a transition: bit 1 = triangle (I(i), O(o), I(i+1)), bit 0 = triangle (O(o), O(o+1), I(i)).
-// I and O are the rows' point indices, looked up (no per-move redirect test).
+// I and O are the rows' point indices, looked up (no per-move redirect test). transition() runs once per template
+// (transitionTemplate below), on rows of corner codes.
 template <bool Ccw>
 inline void move(int32_t* d, uint32_t bit, const int32_t* I, const int32_t* O, int& i, int& o) {
-  // Selects by mask: the bits follow no pattern a branch predictor could learn.
   const int32_t m = -int32_t(bit);
   const int32_t ii = I[i], oo = O[o], i1 = I[i + 1], o1 = O[o + 1];
   tri<Ccw>(d, (ii & m) | (oo & ~m), (oo & m) | (o1 & ~m), (i1 & m) | (ii & ~m));
