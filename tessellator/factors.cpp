@@ -51,7 +51,66 @@ ProcessedEdge processOuterEdge(float factor, Partitioning p) {
   return e;
 }
 
+// An ordinary factor: a positive normal float below 2^15. Then no NaN, zero, denormal or infinity rule of the
+// clamps and of floatToFixed applies, and the D3D min/max are plain comparisons.
+inline bool isOrdinary(float x) { return fx::bitsOf(x) - fx::kMinNormal < 0x47000000u - fx::kMinNormal; }
+
+// floatToFixed for a value in [1, 2^15): the mantissa shifted into place, ties to even.
+inline fx::Fixed ordinaryToFixed(float x) {
+  const uint32_t b = fx::bitsOf(x);
+  const int drop = 134 - int(b >> 23); // 23 - 16 - (exponent - 127): mantissa bits below the 2^-16 place
+  uint32_t m = (b & fx::kMantissaMask) | 0x00800000u;
+  if (drop <= 0) return m << -drop;
+  const uint32_t keep = 1u << drop, rest = m & (keep - 1), half = keep >> 1;
+  if ((m & keep) || rest > half) m += half;
+  return m >> drop;
+}
+
+// D3D11.3 spec 11.7.4 for fractional partitionings when all six factors are ordinary: the same clamps and 16.16
+// values as the general path below, without its special-value tests.
+ProcessedQuad fractionalQuad(const float f[6], Partitioning p) {
+  ProcessedQuad q;
+  q.culled = false;
+  q.minimum = false;
+  const FactorRange range = hardwareRange(p);
+  const bool odd = p == Partitioning::FractionalOdd;
+  float lower = range.lower;
+  fx::Fixed edge[4];
+  bool frame = f[InsideU] > fx::kOddPictureFrameThreshold || f[InsideV] > fx::kOddPictureFrameThreshold;
+  bool allOne = true;
+  for (int i = 0; i < 4; ++i) {
+    const float x = f[i];
+    const float m = range.lower >= x ? range.lower : x;
+    const float c = range.upper < m ? range.upper : m;
+    frame = frame || c > fx::kOddPictureFrameThreshold;
+    edge[i] = ordinaryToFixed(c);
+    allOne = allOne && edge[i] == fx::kOne;
+  }
+  if (odd && frame) lower = fx::kOddPictureFrameMinimum;
+  fx::Fixed inside[2];
+  for (int a = 0; a < 2; ++a) {
+    const float x = f[InsideU + a];
+    const float m = lower >= x ? lower : x;
+    inside[a] = ordinaryToFixed(range.upper < m ? range.upper : m);
+    allOne = allOne && inside[a] == fx::kOne;
+  }
+  if (odd && allOne) {
+    q.minimum = true;
+    return q;
+  }
+  for (int i = 0; i < 4; ++i) q.outer[i] = makeAxisSpacing(edge[i], odd);
+  for (int a = 0; a < 2; ++a) {
+    q.inside[a] = makeAxisSpacing(inside[a], odd);
+    const int minimum = odd ? 4 : 3;
+    if (q.inside[a].numPoints < minimum) q.inside[a].numPoints = minimum;
+  }
+  return q;
+}
+
 ProcessedQuad processQuadFactors(const float f[6], Partitioning p) {
+  if (!isIntegerLike(p) && isOrdinary(f[0]) && isOrdinary(f[1]) && isOrdinary(f[2]) && isOrdinary(f[3]) &&
+      isOrdinary(f[4]) && isOrdinary(f[5]))
+    return fractionalQuad(f, p);
   ProcessedQuad q;
   ProcessedEdge edge[4];
   for (int i = 0; i < 4; ++i) {
