@@ -10,6 +10,7 @@ bool isEvenFactor(float x) { return (int(x) & 1) == 0; }
 
 float clampHardware(float x, FactorRange r) { return fx::d3dMin(r.upper, fx::d3dMax(r.lower, x)); }
 
+// D3D11.3 11.7.12: an edge factor <= 0 or NaN culls the patch.
 bool culledBy(float x) { return !(x > 0.0f); } // NaN, +-0, negatives, -Inf; a positive denormal is NOT culled
 
 // Inside axes of integer partitioning: a factor of 1 is placed as even.
@@ -28,16 +29,18 @@ AxisSpacing insideSpacing(float x, bool odd) {
 
 } // namespace
 
+// D3D11.3 11.7.10 / 11.7.11.2: edge factor ranges per partitioning.
 FactorRange hardwareRange(Partitioning p) {
   switch (p) {
   case Partitioning::FractionalEven: return {fx::kMinEvenFactor, fx::kMaxEvenFactor};
   case Partitioning::FractionalOdd: return {fx::kMinOddFactor, fx::kMaxOddFactor};
   case Partitioning::Integer:
-  case Partitioning::Pow2: break; // D3D11.3 11.7.4: hardware treats pow2 as integer
+  case Partitioning::Pow2: break; // D3D11.3 11.7.7.1, 11.7.11.2: hardware treats pow2 as integer
   }
   return {fx::kMinOddFactor, fx::kMaxEvenFactor};
 }
 
+// D3D11.3 11.7.11.2: cull, clamp, then (integer, pow2) round up to the next integer; 11.7.14: then 16.16.
 ProcessedEdge processOuterEdge(float factor, Partitioning p) {
   ProcessedEdge e;
   if (culledBy(factor)) {
@@ -66,8 +69,8 @@ inline fx::Fixed ordinaryToFixed(float x) {
   return m >> drop;
 }
 
-// D3D11.3 spec 11.7.4 for fractional partitionings when all six factors are ordinary: the same clamps and 16.16
-// values as the general path below, without its special-value tests.
+// D3D11.3 spec 11.7.11.2-11.7.11.3 and 11.7.14 for fractional partitionings when all six factors are ordinary:
+// the same clamps and 16.16 values as the general path below, without its special-value tests.
 ProcessedQuad fractionalQuad(const float f[6], Partitioning p) {
   ProcessedQuad q;
   q.culled = false;
@@ -119,6 +122,7 @@ ProcessedQuad processQuadFactors(const float f[6], Partitioning p) {
   }
   if (q.culled) return q;
   FactorRange range = hardwareRange(p);
+  // D3D11.3 11.7.11.3 (the inside clamp pseudocode).
   // fractional_odd: if any factor would still exceed 1 in 16.16, force the inside factors above 1 so that there
   // is a picture frame (reference behaviour; the test uses the processed outer and the raw inside factors).
   if (p == Partitioning::FractionalOdd) {
@@ -175,6 +179,8 @@ ProcessedTri processTriFactors(const float f[4], Partitioning p) {
   return t;
 }
 
+// D3D11.3 11.7.8 / 11.7.11.2: line detail follows the partitioning; line density is clamped to [1, 64] and
+// rounded up to an integer.
 ProcessedIsoline processIsolineFactors(float density, float detail, Partitioning p) {
   ProcessedIsoline l;
   if (culledBy(density) || culledBy(detail)) {

@@ -47,7 +47,7 @@ DomainPoint* row(DomainPoint* dst, float c, const float* t, int from, int count)
   return dst;
 }
 
-// D3D11.3 spec 11.7.6-11.7.8: points from 1D tables. Every point of the quad is (u table[i], v table[j]) of one
+// D3D11.3 spec 11.7.13-11.7.14: points from 1D tables. Every point of the quad is (u table[i], v table[j]) of one
 // outer edge's table or of the two inside axes' tables, so placement runs once per axis, not once per point.
 void quadPoints(const ProcessedQuad& q, MeshWriter& out) {
   DomainPoint* dst = out.points + out.numPoints;

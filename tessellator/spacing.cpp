@@ -8,6 +8,7 @@
 
 namespace fftess {
 
+// D3D11.3 11.7.13: points symmetric about the edge midpoint, (1 - U') == U exactly; 11.7.5: ruler-function split.
 fx::Fixed placePoint(const AxisSpacing& s, int index, EdgePointTrace* trace) {
   int p = index;
   bool mirrored = false;

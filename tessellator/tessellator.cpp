@@ -10,7 +10,8 @@ namespace {
 
 bool isTriangles(OutputPrimitive p) { return p == OutputPrimitive::TriangleCw || p == OutputPrimitive::TriangleCcw; }
 
-// Factors as the hardware stage receives them: options applied, then the HLSL stage if asked.
+// Factors as the hardware stage receives them: options applied, then the HLSL stage if asked (D3D11.3 11.7.2,
+// 11.7.7.1: inside reduction and pow2 rounding are the HLSL compiler's shader code, not the hardware's).
 void hardwareFactors(const Patch& patch, const Options& options, float out[6], HlslFactors* hlsl) {
   if (patch.stage.hlsl) {
     const HlslFactors h = processHlslFactors(patch.domain, patch.partitioning, patch.stage, patch.factors, options);
