@@ -41,9 +41,9 @@ void runDraws(uint32_t seed, int count, bool uniformFactors) {
     Patch p = draw.patch();
     if (uniformFactors) // the common case: plain factors 0..66 in steps of 1/8 and arbitrary fractions
       for (float& f : p.factors)
-        f = (uniform.rng() & 1) ? float(uniform.rng() % 529) / 8.0f : float(uniform.rng() % 66000000) / 1e6f;
+        f = (uniform.rng.next() & 1) ? float(uniform.rng.next() % 529) / 8.0f : float(uniform.rng.next() % 66000000) / 1e6f;
     Options o;
-    o.flushDenormals = (draw.rng() & 7) == 0;
+    o.flushDenormals = (draw.rng.next() & 7) == 0;
     const int n = t.tessellate(p, o);
     legacy::tessellate(p, o, pts, idx);
     if (!sameOutput(t, n, pts, idx) && ++mismatches <= 5) FAIL_CHECK("differs from the old path: " << describe(p, o));
