@@ -1,8 +1,8 @@
 // Placement of points along one tessellated axis (an outer edge, or an inside axis) in 16.16 fixed point.
 // Internal header of fftess_tessellator.
 //
-// D3D11.3 spec 11.7.6: "the tessellated points along an edge are placed symmetrically about the midpoint" and
-// fractional factors "grow new points from the middle". The reference realises this with two placements of half
+// D3D11.3 spec 11.7.13 (in our words): the points along an edge are placed symmetrically about its midpoint, and
+// fractional factors grow new points from the middle. The reference realises this with two placements of half
 // the edge (on floor and ceil of half the factor) blended by the fraction of half the factor, a fixed split order
 // (which point of the floor placement lags behind), mirroring for the second half and an exact 0.5 at the middle.
 #pragma once
