@@ -11,6 +11,7 @@
 #include <new>
 
 #include "check.h"
+#include "compare_cmd.h"
 
 int main(int argc, char** argv) {
   using namespace fftess::cli;
@@ -35,6 +36,8 @@ int main(int argc, char** argv) {
   CLI::App* check = addCheck(app, checkArgs);
   CLI::App* sweep = addSweep(app, sweepArgs);
   CLI::App* bench = addBench(app, benchArgs);
+  CompareArgs compareArgs;
+  CLI::App* compare = addCompare(app, compareArgs);
 
   std::string names;
   bool known = false;
@@ -65,6 +68,7 @@ int main(int argc, char** argv) {
     if (explain->parsed()) return runExplain(explainArgs);
     if (check->parsed()) return runCheck(checkArgs);
     if (sweep->parsed()) return runSweep(sweepArgs);
+    if (compare->parsed()) return runCompare(compareArgs);
     if (bench->parsed()) {
       benchArgs.passThrough = bench->remaining();
       return runBench(benchArgs, argv[0]);
