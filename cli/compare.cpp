@@ -20,6 +20,7 @@ namespace fftess::cli {
 namespace {
 
 using json = nlohmann::ordered_json;
+using nlohmann::ordered_json;
 
 float floatOfBits(uint32_t b) {
   float f;
@@ -70,7 +71,7 @@ json vertexJson(CapturedVertex v) {
               {"v_bits", "0x" + hex8(v.v)}};
 }
 
-void describePatch(std::string& o, json& list, int64_t index, int line, const std::string& batch,
+void describePatch(std::string& o, ordered_json& list, int64_t index, int line, const std::string& batch,
                    const PatchComparison& c, bool asJson) {
   if (asJson) {
     json j{{"patch", index}, {"line", line}, {"kind", toString(c.kind)},
@@ -88,7 +89,7 @@ void describePatch(std::string& o, json& list, int64_t index, int line, const st
     list.push_back(j);
     return;
   }
-  o += "patch " + std::to_string(index) + " (" + batch + ":" + std::to_string(line) + "): " + toString(c.kind) + ": " +
+  o += "patch " + std::to_string(index) + " (" + batch + (line > 0 ? ":" + std::to_string(line) : "") + "): " + toString(c.kind) + ": " +
        std::to_string(c.referencePrimitives) + " reference " + (c.verticesPerPrimitive == 1 ? "points" : "primitives") +
        ", " + std::to_string(c.capturePrimitives) + " in the capture";
   if (c.kind == DifferenceKind::PointsDiffer)
@@ -106,6 +107,60 @@ void describePatch(std::string& o, json& list, int64_t index, int line, const st
 
 } // namespace
 
+CompareReporter::CompareReporter(bool asJson, int show, bool strict, std::string batch)
+    : json_(asJson), strict_(strict), show_(show), batch_(std::move(batch)), listed_(ordered_json::array()) {}
+
+void CompareReporter::add(int64_t index, int line, const PatchComparison& c) {
+  sum_.add(c, c.referencePrimitives * c.verticesPerPrimitive);
+  if (c.kind != DifferenceKind::Same && shown_ < show_) {
+    ++shown_;
+    describePatch(text_, listed_, index, line, batch_, c, json_);
+  }
+}
+
+void CompareReporter::finish(const std::string& format, const std::string& header) {
+  if (!json_) text_ = header + text_;
+  const auto all = sum_.explainingAll();
+  if (json_) {
+    json j{{"patches", sum_.patches}, {"same", sum_.same}, {"differing", sum_.differing},
+           {"points_compared", sum_.pointsCompared}, {"strict_order", strict_},
+           {"format", format}};
+    if (!header.empty()) j["source"] = header.substr(0, header.size() - 1); // the one header line, without '\n'
+    json kinds = json::object();
+    for (int k = 1; k < 8; ++k) kinds[toString(DifferenceKind(k))] = sum_.byKind[k];
+    j["by_kind"] = kinds;
+    json bugs = json::object();
+    for (int b = 0; b < int(PortBug::Count); ++b) bugs[toString(PortBug(b))] = sum_.byBug[b];
+    j["bugs"] = bugs;
+    json ex = json::array();
+    for (PortBug b : all) ex.push_back(toString(b));
+    j["explained_by"] = ex;
+    j["listed"] = listed_;
+    writeStdout(j.dump(2) + "\n");
+  } else {
+    text_ += "summary: " + std::to_string(sum_.patches) + " patches, " + std::to_string(sum_.same) + " same, " +
+            std::to_string(sum_.differing) + " differ";
+    std::string kinds;
+    for (int k = 1; k < 8; ++k)
+      if (sum_.byKind[k]) kinds += std::string(kinds.empty() ? "" : ", ") + toString(DifferenceKind(k)) + " " + std::to_string(sum_.byKind[k]);
+    if (!kinds.empty()) text_ += " (" + kinds + ")";
+    text_ += "; " + std::to_string(sum_.pointsCompared) + " reference vertices compared" +
+            (strict_ ? " in strict order" : "") + "\n";
+    for (int b = 0; b < int(PortBug::Count); ++b)
+      if (sum_.byBug[b])
+        text_ += std::string("typical port bug ") + toString(PortBug(b)) + " reproduces " + std::to_string(sum_.byBug[b]) +
+                " of " + std::to_string(sum_.differing) + " differing patches (" + describe(PortBug(b)) + ")\n";
+    if (sum_.differing == 0)
+      text_ += "verdict: same: the capture is the D3D11 reference's output\n";
+    else if (!all.empty())
+      text_ += std::string("verdict: differs; every difference is reproduced by ") + toString(all.front()) + ": " +
+              describe(all.front()) + " (step: " + stepOf(all.front()) + ")\n";
+    else
+      text_ += "verdict: differs\n";
+    writeStdout(text_);
+  }
+}
+
 CLI::App* addCompare(CLI::App& app, CompareArgs& a) {
   CLI::App* sub = app.add_subcommand("compare", "Compare a port's tessellator output (CAPTURE) with the emulator");
   sub->add_option("patches", a.patches, "Batch file the port was fed (tessellator/batch.h format; - for stdin)")->required();
@@ -117,7 +172,7 @@ CLI::App* addCompare(CLI::App& app, CompareArgs& a) {
   sub->add_flag("--flush-denormals", a.flushDenormals, "Reference flushes denormal factors (as llvmpipe and GPUs do)");
   sub->add_option("--show", a.show, "Differing patches listed in full (default 20; all are counted)");
   sub->add_option("--details", a.details, "Differing points explained per patch (default 4)");
-  sub->footer("Example:\n  fftess compare docs/examples/compare.batch docs/examples/compare_bug.csv\n"
+  sub->footer("Example:\n  fftess compare docs/examples/compare_port.batch docs/examples/compare_port_bug.csv\n"
               "Exit status: 0 same, 1 differs, 2 bad usage or input (FILE:LINE), 3 internal error.");
   return sub;
 }
@@ -135,10 +190,7 @@ int runCompare(const CompareArgs& a) {
   opt.emulator.flushDenormals = a.flushDenormals;
   opt.maxPointDetails = a.details;
   Tessellator tess;
-  CompareSummary sum;
-  std::string text;
-  json listed = json::array();
-  int shown = 0;
+  CompareReporter reporter(a.json, a.show, a.strictOrder, a.patches);
   CapturedPatch got;
   bool haveGot = false;
   try {
@@ -153,58 +205,17 @@ int runCompare(const CompareArgs& a) {
       } catch (const CaptureError& e) {
         throw CaptureError(a.capture + ":" + std::to_string(got.line) + ": " + e.what());
       }
-      sum.add(c, c.referencePrimitives * c.verticesPerPrimitive);
-      if (c.kind != DifferenceKind::Same && shown < a.show) {
-        ++shown;
-        describePatch(text, listed, index, line, a.patches, c, a.json);
-      }
+      reporter.add(index, line, c);
       if (present) haveGot = capture.next(got);
     }
     if (haveGot)
       throw CaptureError(a.capture + ":" + std::to_string(got.line) + ": patch " + std::to_string(got.patch) +
-                         " is not in " + a.patches + " (it has " + std::to_string(sum.patches) + " patches)");
+                         " is not in " + a.patches + " (it has " + std::to_string(reporter.summary().patches) + " patches)");
   } catch (const CaptureError& e) {
     throw UsageError(e.what());
   }
-  const auto all = sum.explainingAll();
-  if (a.json) {
-    json j{{"patches", sum.patches}, {"same", sum.same}, {"differing", sum.differing},
-           {"points_compared", sum.pointsCompared}, {"strict_order", a.strictOrder},
-           {"format", capture.format() == CaptureFormat::Hex ? "hex" : "csv"}};
-    json kinds = json::object();
-    for (int k = 1; k < 8; ++k) kinds[toString(DifferenceKind(k))] = sum.byKind[k];
-    j["by_kind"] = kinds;
-    json bugs = json::object();
-    for (int b = 0; b < int(PortBug::Count); ++b) bugs[toString(PortBug(b))] = sum.byBug[b];
-    j["bugs"] = bugs;
-    json ex = json::array();
-    for (PortBug b : all) ex.push_back(toString(b));
-    j["explained_by"] = ex;
-    j["listed"] = listed;
-    writeStdout(j.dump(2) + "\n");
-  } else {
-    text += "summary: " + std::to_string(sum.patches) + " patches, " + std::to_string(sum.same) + " same, " +
-            std::to_string(sum.differing) + " differ";
-    std::string kinds;
-    for (int k = 1; k < 8; ++k)
-      if (sum.byKind[k]) kinds += std::string(kinds.empty() ? "" : ", ") + toString(DifferenceKind(k)) + " " + std::to_string(sum.byKind[k]);
-    if (!kinds.empty()) text += " (" + kinds + ")";
-    text += "; " + std::to_string(sum.pointsCompared) + " reference vertices compared" +
-            (a.strictOrder ? " in strict order" : "") + "\n";
-    for (int b = 0; b < int(PortBug::Count); ++b)
-      if (sum.byBug[b])
-        text += std::string("typical port bug ") + toString(PortBug(b)) + " reproduces " + std::to_string(sum.byBug[b]) +
-                " of " + std::to_string(sum.differing) + " differing patches (" + describe(PortBug(b)) + ")\n";
-    if (sum.differing == 0)
-      text += "verdict: same: the capture is the D3D11 reference's output\n";
-    else if (!all.empty())
-      text += std::string("verdict: differs; every difference is reproduced by ") + toString(all.front()) + ": " +
-              describe(all.front()) + " (step: " + stepOf(all.front()) + ")\n";
-    else
-      text += "verdict: differs\n";
-    writeStdout(text);
-  }
-  return sum.differing ? kExitFindings : kExitClean;
+  reporter.finish(capture.format() == CaptureFormat::Hex ? "hex" : "csv", "");
+  return reporter.summary().differing ? kExitFindings : kExitClean;
 }
 
 } // namespace fftess::cli
