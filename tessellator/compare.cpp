@@ -211,10 +211,15 @@ void recognise(const Patch& patch, const Options& options, const Verts& ref, con
   const PatchAxes axes = patchAxes(patch, options);
   for (PortBug b : {PortBug::FloatDivision, PortBug::NoMirroring, PortBug::NoSpecialMidpoint, PortBug::LerpNotRounded,
                     PortBug::FactorsNotSnapped}) {
-    model.clear();
-    for (CapturedVertex r : ref) model.push_back(applyBug(axes, b, r));
-    if (model == ref) continue; // the bug changes nothing in this patch
-    if (sameOrderInsensitive(model, got, arity) || nearSame(model, got, 0x1p-20f)) c.bugs.push_back(b);
+    for (bool corners : {true, false}) { // ports place the corners like any edge point, or write them as constants
+      model.clear();
+      for (CapturedVertex r : ref) model.push_back(applyBug(axes, b, r, corners));
+      if (model == ref) continue; // the bug changes nothing in this patch
+      if (sameOrderInsensitive(model, got, arity) || nearSame(model, got, 0x1p-20f)) {
+        c.bugs.push_back(b);
+        break;
+      }
+    }
   }
 }
 

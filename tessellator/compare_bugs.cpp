@@ -106,18 +106,32 @@ PatchAxes patchAxes(const Patch& patch, const Options& options) {
 
 // Which axis gives coordinate c (0 = u, 1 = v) of a reference vertex. Null when the coordinate is a corner's, a
 // tri interior's or otherwise not one edge point. 'mirrorV' is set for the tri Weq0 edge (v = 1 - u).
-const Axis* axisOf(const PatchAxes& a, CapturedVertex r, int c, bool& mirrorV) {
+const Axis* axisOf(const PatchAxes& a, CapturedVertex r, int c, bool& mirrorV, bool corners) {
   mirrorV = false;
   const float u = fx::floatOf(r.u), v = fx::floatOf(r.v);
   const bool uEdge = u == 0.0f || u == 1.0f, vEdge = v == 0.0f || v == 1.0f;
   switch (a.domain) {
   case Domain::Quad:
-    if (uEdge && vEdge) return nullptr;
+    // Corners: (0,1) is Ueq0's last point, (1,1) Veq1's last point (both placed by mirroring); (0,0), (1,0) are
+    // first points (0 under any placement).
+    if (uEdge && vEdge) {
+      if (corners && v == 1.0f) return c == (u == 0.0f ? 1 : 0) ? &a.outer[u == 0.0f ? 0 : 3] : nullptr;
+      return nullptr;
+    }
     if (uEdge) return c == 1 ? &a.outer[u == 0.0f ? 0 : 2] : nullptr;
     if (vEdge) return c == 0 ? &a.outer[v == 0.0f ? 1 : 3] : nullptr;
     return &a.inside[c];
   case Domain::Tri:
-    if (uEdge && vEdge) return nullptr;
+    // Corners: V (0,1) is Ueq0's last point, U (1,0) Weq0's last point (mirrored); W (0,0) a first point.
+    if (uEdge && vEdge) {
+      if (!corners) return nullptr;
+      if (u == 0.0f && v == 1.0f) return c == 1 ? &a.outer[0] : nullptr;
+      if (u == 1.0f && v == 0.0f) {
+        mirrorV = true;
+        return c == 0 ? &a.outer[2] : nullptr;
+      }
+      return nullptr;
+    }
     if (u == 0.0f) return c == 1 ? &a.outer[0] : nullptr;
     if (v == 0.0f) return c == 0 ? &a.outer[1] : nullptr;
     if (u + v == 1.0f) {
@@ -138,11 +152,11 @@ int pointOnAxis(const Axis& axis, uint32_t bits) {
   return -1;
 }
 
-CapturedVertex applyBug(const PatchAxes& a, PortBug b, CapturedVertex r) {
+CapturedVertex applyBug(const PatchAxes& a, PortBug b, CapturedVertex r, bool corners) {
   CapturedVertex out = r;
   for (int c = 0; c < 2; ++c) {
     bool mirrorV = false;
-    const Axis* axis = axisOf(a, r, c, mirrorV);
+    const Axis* axis = axisOf(a, r, c, mirrorV, corners);
     if (!axis) continue;
     const int k = pointOnAxis(*axis, c == 0 ? r.u : r.v);
     if (k < 0) continue;

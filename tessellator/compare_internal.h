@@ -21,11 +21,13 @@ struct PatchAxes {
 };
 
 PatchAxes patchAxes(const Patch& patch, const Options& options);
-// The axis that gives coordinate c (0 u, 1 v) of reference vertex r, or null (corners, tri interior points).
-const Axis* axisOf(const PatchAxes& a, CapturedVertex r, int c, bool& mirrorV);
+// The axis that gives coordinate c (0 u, 1 v) of reference vertex r, or null (tri interior points, and corners
+// unless 'corners': the corners an edge reaches by mirroring, as a port that places them like any point would).
+const Axis* axisOf(const PatchAxes& a, CapturedVertex r, int c, bool& mirrorV, bool corners = true);
 // The index of the point with these float bits on the axis, or -1.
 int pointOnAxis(const Axis& axis, uint32_t bits);
 // Reference vertex r as a port with edge bug b computes it.
-CapturedVertex applyBug(const PatchAxes& a, PortBug b, CapturedVertex r);
+// corners: also re-place the corners an edge reaches by mirroring (else they stay: a port that writes them as constants).
+CapturedVertex applyBug(const PatchAxes& a, PortBug b, CapturedVertex r, bool corners);
 
 } // namespace fftess
