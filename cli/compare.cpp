@@ -1,7 +1,7 @@
 // fftess compare PATCHES CAPTURE: another tessellator's output against the emulator, patch by patch, streamed
 // (tessellator/compare.h does the comparing; this file reads the files, prints and picks the exit status).
-#include "compare_cmd.h"
 #include "common.h"
+#include "compare_cmd.h"
 
 #include "tessellator/batch.h"
 #include "tessellator/capture.h"
@@ -40,9 +40,10 @@ public:
       if (isBatchSkippable(s)) continue;
       BatchError be;
       if (!parseBatchLine(s, p, be))
-        throw UsageError(source_ + ":" + std::to_string(lineNo_) + ": " +
-                         (be.token.empty() ? "" : "token " + std::to_string(be.column) + " " + quoteToken(be.token) + ": ") +
-                         be.message);
+        throw UsageError(
+            source_ + ":" + std::to_string(lineNo_) + ": " +
+            (be.token.empty() ? "" : "token " + std::to_string(be.column) + " " + quoteToken(be.token) + ": ") +
+            be.message);
       line = lineNo_;
       return true;
     }
@@ -67,39 +68,50 @@ std::string vertexText(CapturedVertex v) {
 }
 
 json vertexJson(CapturedVertex v) {
-  return json{{"u", floatOfBits(v.u)}, {"v", floatOfBits(v.v)}, {"u_bits", "0x" + hex8(v.u)},
-              {"v_bits", "0x" + hex8(v.v)}};
+  return json{
+      {"u", floatOfBits(v.u)}, {"v", floatOfBits(v.v)}, {"u_bits", "0x" + hex8(v.u)}, {"v_bits", "0x" + hex8(v.v)}};
 }
 
 void describePatch(std::string& o, ordered_json& list, int64_t index, int line, const std::string& batch,
                    const PatchComparison& c, bool asJson) {
   if (asJson) {
-    json j{{"patch", index}, {"line", line}, {"kind", toString(c.kind)},
-           {"reference_primitives", c.referencePrimitives}, {"capture_primitives", c.capturePrimitives},
-           {"vertices_per_primitive", c.verticesPerPrimitive}, {"missing_points", c.missingPoints},
-           {"extra_points", c.extraPoints}, {"flipped_triangles", c.flippedTriangles}};
+    json j{{"patch", index},
+           {"line", line},
+           {"kind", toString(c.kind)},
+           {"reference_primitives", c.referencePrimitives},
+           {"capture_primitives", c.capturePrimitives},
+           {"vertices_per_primitive", c.verticesPerPrimitive},
+           {"missing_points", c.missingPoints},
+           {"extra_points", c.extraPoints},
+           {"flipped_triangles", c.flippedTriangles}};
     json bugs = json::array();
     for (PortBug b : c.bugs) bugs.push_back(toString(b));
     j["bugs"] = bugs;
     json pts = json::array();
     for (const auto& d : c.points)
-      pts.push_back(json{{"got", vertexJson(d.got)}, {"nearest", vertexJson(d.nearest)}, {"du", d.du}, {"dv", d.dv},
-                         {"where", d.where}, {"step", d.step}, {"detail", d.detail}});
+      pts.push_back(json{{"got", vertexJson(d.got)},
+                         {"nearest", vertexJson(d.nearest)},
+                         {"du", d.du},
+                         {"dv", d.dv},
+                         {"where", d.where},
+                         {"step", d.step},
+                         {"detail", d.detail}});
     j["points"] = pts;
     list.push_back(j);
     return;
   }
-  o += "patch " + std::to_string(index) + " (" + batch + (line > 0 ? ":" + std::to_string(line) : "") + "): " + toString(c.kind) + ": " +
-       std::to_string(c.referencePrimitives) + " reference " + (c.verticesPerPrimitive == 1 ? "points" : "primitives") +
-       ", " + std::to_string(c.capturePrimitives) + " in the capture";
+  o += "patch " + std::to_string(index) + " (" + batch + (line > 0 ? ":" + std::to_string(line) : "") +
+       "): " + toString(c.kind) + ": " + std::to_string(c.referencePrimitives) + " reference " +
+       (c.verticesPerPrimitive == 1 ? "points" : "primitives") + ", " + std::to_string(c.capturePrimitives) +
+       " in the capture";
   if (c.kind == DifferenceKind::PointsDiffer)
     o += "; " + std::to_string(c.missingPoints) + " reference points missing, " + std::to_string(c.extraPoints) +
          " points the reference lacks";
   if (c.kind == DifferenceKind::WindingOnly) o += "; " + std::to_string(c.flippedTriangles) + " triangles flipped";
   o += "\n";
   for (const auto& d : c.points) {
-    o += "  " + vertexText(d.got) + ": nearest reference point " + vertexText(d.nearest) + ", du " + formatNumber(d.du) +
-         " dv " + formatNumber(d.dv) + " (16.16 units)\n";
+    o += "  " + vertexText(d.got) + ": nearest reference point " + vertexText(d.nearest) + ", du " +
+         formatNumber(d.du) + " dv " + formatNumber(d.dv) + " (16.16 units)\n";
     o += "    " + d.where + ": " + d.detail + "\n";
   }
   for (PortBug b : c.bugs) o += std::string("  reproduced by ") + toString(b) + ": " + describe(b) + "\n";
@@ -122,9 +134,9 @@ void CompareReporter::finish(const std::string& format, const std::string& heade
   if (!json_) text_ = header + text_;
   const auto all = sum_.explainingAll();
   if (json_) {
-    json j{{"patches", sum_.patches}, {"same", sum_.same}, {"differing", sum_.differing},
-           {"points_compared", sum_.pointsCompared}, {"strict_order", strict_},
-           {"format", format}};
+    json j{{"patches", sum_.patches},     {"same", sum_.same},
+           {"differing", sum_.differing}, {"points_compared", sum_.pointsCompared},
+           {"strict_order", strict_},     {"format", format}};
     if (!header.empty()) j["source"] = header.substr(0, header.size() - 1); // the one header line, without '\n'
     json kinds = json::object();
     for (int k = 1; k < 8; ++k) kinds[toString(DifferenceKind(k))] = sum_.byKind[k];
@@ -139,22 +151,25 @@ void CompareReporter::finish(const std::string& format, const std::string& heade
     writeStdout(j.dump(2) + "\n");
   } else {
     text_ += "summary: " + std::to_string(sum_.patches) + " patches, " + std::to_string(sum_.same) + " same, " +
-            std::to_string(sum_.differing) + " differ";
+             std::to_string(sum_.differing) + " differ";
     std::string kinds;
     for (int k = 1; k < 8; ++k)
-      if (sum_.byKind[k]) kinds += std::string(kinds.empty() ? "" : ", ") + toString(DifferenceKind(k)) + " " + std::to_string(sum_.byKind[k]);
+      if (sum_.byKind[k])
+        kinds +=
+            std::string(kinds.empty() ? "" : ", ") + toString(DifferenceKind(k)) + " " + std::to_string(sum_.byKind[k]);
     if (!kinds.empty()) text_ += " (" + kinds + ")";
     text_ += "; " + std::to_string(sum_.pointsCompared) + " reference vertices compared" +
-            (strict_ ? " in strict order" : "") + "\n";
+             (strict_ ? " in strict order" : "") + "\n";
     for (int b = 0; b < int(PortBug::Count); ++b)
       if (sum_.byBug[b])
-        text_ += std::string("typical port bug ") + toString(PortBug(b)) + " reproduces " + std::to_string(sum_.byBug[b]) +
-                " of " + std::to_string(sum_.differing) + " differing patches (" + describe(PortBug(b)) + ")\n";
+        text_ += std::string("typical port bug ") + toString(PortBug(b)) + " reproduces " +
+                 std::to_string(sum_.byBug[b]) + " of " + std::to_string(sum_.differing) + " differing patches (" +
+                 describe(PortBug(b)) + ")\n";
     if (sum_.differing == 0)
       text_ += "verdict: same: the capture is the D3D11 reference's output\n";
     else if (!all.empty())
       text_ += std::string("verdict: differs; every difference is reproduced by ") + toString(all.front()) + ": " +
-              describe(all.front()) + " (step: " + stepOf(all.front()) + ")\n";
+               describe(all.front()) + " (step: " + stepOf(all.front()) + ")\n";
     else
       text_ += "verdict: differs\n";
     writeStdout(text_);
@@ -163,8 +178,10 @@ void CompareReporter::finish(const std::string& format, const std::string& heade
 
 CLI::App* addCompare(CLI::App& app, CompareArgs& a) {
   CLI::App* sub = app.add_subcommand("compare", "Compare a port's tessellator output (CAPTURE) with the emulator");
-  sub->add_option("patches", a.patches, "Batch file the port was fed (tessellator/batch.h format; - for stdin)")->required();
-  sub->add_option("capture", a.capture, "The port's output: hex blocks or CSV patch,primitive,vertex,u,v[,w]")->required();
+  sub->add_option("patches", a.patches, "Batch file the port was fed (tessellator/batch.h format; - for stdin)")
+      ->required();
+  sub->add_option("capture", a.capture, "The port's output: hex blocks or CSV patch,primitive,vertex,u,v[,w]")
+      ->required();
   sub->add_option("--format", a.format, "Capture format: auto (default), hex, csv")
       ->check(CLI::IsMember({"auto", "hex", "csv"}));
   sub->add_flag("--strict-order", a.strictOrder, "Same primitives in the same order with the same first vertex");
@@ -182,7 +199,9 @@ int runCompare(const CompareArgs& a) {
   std::unique_ptr<std::ifstream> pf, cf;
   std::istream& pin = openInput(a.patches, pf, "PATCHES");
   std::istream& cin = openInput(a.capture, cf, "CAPTURE");
-  const CaptureFormat format = a.format == "hex" ? CaptureFormat::Hex : a.format == "csv" ? CaptureFormat::Csv : CaptureFormat::Auto;
+  const CaptureFormat format = a.format == "hex"   ? CaptureFormat::Hex
+                               : a.format == "csv" ? CaptureFormat::Csv
+                                                   : CaptureFormat::Auto;
   BatchReader batch(pin, a.patches);
   CaptureReader capture(cin, a.capture, format);
   CompareOptions opt;
@@ -210,7 +229,8 @@ int runCompare(const CompareArgs& a) {
     }
     if (haveGot)
       throw CaptureError(a.capture + ":" + std::to_string(got.line) + ": patch " + std::to_string(got.patch) +
-                         " is not in " + a.patches + " (it has " + std::to_string(reporter.summary().patches) + " patches)");
+                         " is not in " + a.patches + " (it has " + std::to_string(reporter.summary().patches) +
+                         " patches)");
   } catch (const CaptureError& e) {
     throw UsageError(e.what());
   }

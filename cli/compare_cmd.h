@@ -1,4 +1,5 @@
-// fftess compare (cli/compare.cpp) and driver-check (cli/driver_check.cpp): arguments, registration, the report. Exit 0 same, 1 differs, 2 bad input, 3 internal.
+// fftess compare (cli/compare.cpp) and driver-check (cli/driver_check.cpp): arguments, registration, the report. Exit 0
+// same, 1 differs, 2 bad input, 3 internal.
 #pragma once
 
 #include <CLI/CLI.hpp>

@@ -1,8 +1,8 @@
 // fftess driver-check: is the local OpenGL driver's tessellator D3D11-exact? Patches (a batch file, or seeded random
 // ones) go through the driver (verify/gpu: headless EGL, transform-feedback capture; llvmpipe by default) and the
 // captures through the same comparison as `fftess compare` (tessellator/compare.h).
-#include "compare_cmd.h"
 #include "common.h"
+#include "compare_cmd.h"
 
 #include "tessellator/batch.h"
 #include "tessellator/compare.h"
@@ -30,8 +30,9 @@ CLI::App* addDriverCheck(CLI::App& app, DriverCheckArgs& a) {
   sub->add_flag("--flush-denormals", a.flushDenormals, "Reference flushes denormal factors (as llvmpipe and GPUs do)");
   sub->add_flag("--json", a.json, "JSON report on stdout");
   sub->add_option("--show", a.show, "Differing patches listed in full (default 20)");
-  sub->footer("Example:\n  fftess driver-check --random 2000 --seed 7\n  fftess driver-check docs/examples/compare_port.batch\n"
-              "Exit status: 0 same, 1 differs, 2 bad usage or input, 3 no GL driver or internal error.");
+  sub->footer(
+      "Example:\n  fftess driver-check --random 2000 --seed 7\n  fftess driver-check docs/examples/compare_port.batch\n"
+      "Exit status: 0 same, 1 differs, 2 bad usage or input, 3 no GL driver or internal error.");
   return sub;
 }
 
@@ -96,11 +97,13 @@ int runDriverCheck(const DriverCheckArgs& a) {
       Item it;
       BatchError be;
       if (!parseBatchLine(s, it.patch, be))
-        throw UsageError(a.patches + ":" + std::to_string(lineNo) + ": " +
-                         (be.token.empty() ? "" : "token " + std::to_string(be.column) + " " + quoteToken(be.token) + ": ") +
-                         be.message);
+        throw UsageError(
+            a.patches + ":" + std::to_string(lineNo) + ": " +
+            (be.token.empty() ? "" : "token " + std::to_string(be.column) + " " + quoteToken(be.token) + ": ") +
+            be.message);
       if (it.patch.stage.hlsl) {
-        const HlslFactors h = processHlslFactors(it.patch.domain, it.patch.partitioning, it.patch.stage, it.patch.factors);
+        const HlslFactors h =
+            processHlslFactors(it.patch.domain, it.patch.partitioning, it.patch.stage, it.patch.factors);
         std::memcpy(it.patch.factors, h.rounded, sizeof h.rounded);
         it.patch.stage = Stage{};
       }

@@ -39,7 +39,10 @@ bool parseHex8(const std::string& s, uint32_t& out) {
   if (s.size() != 8) return false;
   uint32_t v = 0;
   for (char c : s) {
-    int d = (c >= '0' && c <= '9') ? c - '0' : (c >= 'a' && c <= 'f') ? c - 'a' + 10 : (c >= 'A' && c <= 'F') ? c - 'A' + 10 : -1;
+    int d = (c >= '0' && c <= '9')   ? c - '0'
+            : (c >= 'a' && c <= 'f') ? c - 'a' + 10
+            : (c >= 'A' && c <= 'F') ? c - 'A' + 10
+                                     : -1;
     if (d < 0) return false;
     v = (v << 4) | uint32_t(d);
   }
@@ -101,7 +104,9 @@ bool CaptureReader::nextHex(CapturedPatch& out) {
   if (w.size() != 6 || w[0] != "patch" || w[2] != "points" || w[4] != "indices" || !parseCount(w[1], n) ||
       !parseCount(w[3], points) || !parseCount(w[5], indices))
     fail(headerLine, "expected a block header 'patch N points P indices I'");
-  if (n <= lastPatch_) fail(headerLine, "patch " + std::to_string(n) + " comes after patch " + std::to_string(lastPatch_) + " (patches must increase)");
+  if (n <= lastPatch_)
+    fail(headerLine, "patch " + std::to_string(n) + " comes after patch " + std::to_string(lastPatch_) +
+                         " (patches must increase)");
   if (points > 65 * 65 || indices > 64 * 64 * 6 * 2) fail(headerLine, "more points or indices than any patch has");
   lastPatch_ = n;
   std::vector<CapturedVertex> pts(static_cast<size_t>(points));
@@ -126,7 +131,8 @@ bool CaptureReader::nextHex(CapturedPatch& out) {
       fail(lineNo_, "expected " + std::to_string(out.verticesPerPrimitive) + " indices on the line, as on the first");
     for (const auto& s : t) {
       int64_t i = 0;
-      if (!parseCount(s, i) || i >= points) fail(lineNo_, "index '" + s + "' is not a point of the patch (0.." + std::to_string(points - 1) + ")");
+      if (!parseCount(s, i) || i >= points)
+        fail(lineNo_, "index '" + s + "' is not a point of the patch (0.." + std::to_string(points - 1) + ")");
       out.vertices.push_back(pts[static_cast<size_t>(i)]);
     }
     read += int64_t(t.size());
@@ -159,8 +165,8 @@ bool CaptureReader::readCsvRow(Row& row) {
     for (size_t i = 3; i < f.size(); ++i) {
       std::string why;
       if (!parseFactor(f[i], uv[i - 3], &why))
-        fail(lineNo_, "field " + std::to_string(i + 1) + " (" + "uvw"[i - 3] + ") '" + f[i] + "': " +
-                          (why.empty() ? "not a float" : why));
+        fail(lineNo_, "field " + std::to_string(i + 1) + " (" + "uvw"[i - 3] + ") '" + f[i] +
+                          "': " + (why.empty() ? "not a float" : why));
     }
     sawRow_ = true;
     row = Row{patch, prim, int(vert), CapturedVertex{fx::bitsOf(uv[0]), fx::bitsOf(uv[1])}, lineNo_};

@@ -40,9 +40,9 @@ inline bool operator<(CapturedVertex a, CapturedVertex b) { return a.u != b.u ? 
 // One patch of a capture: its primitives, verticesPerPrimitive vertices each, in the capture's order.
 struct CapturedPatch {
   int64_t patch = -1;
-  int verticesPerPrimitive = 0;          // 1 points, 2 segments, 3 triangles; 0 when the patch has no primitives
-  std::vector<CapturedVertex> vertices;  // primitive after primitive
-  int line = 0;                          // line of the patch's first row / header in the capture
+  int verticesPerPrimitive = 0;         // 1 points, 2 segments, 3 triangles; 0 when the patch has no primitives
+  std::vector<CapturedVertex> vertices; // primitive after primitive
+  int line = 0;                         // line of the patch's first row / header in the capture
   int primitives() const { return verticesPerPrimitive ? int(vertices.size()) / verticesPerPrimitive : 0; }
 };
 
@@ -81,7 +81,7 @@ private:
   int lineNo_ = 0;
   bool havePending_ = false; // CSV: a row of the next patch already read
   Row pending_{};
-  std::string pushedBack_;   // Auto detection: the first meaningful line, read again by the parser
+  std::string pushedBack_; // Auto detection: the first meaningful line, read again by the parser
   bool havePushedBack_ = false;
   int64_t lastPatch_ = -1;
   bool sawRow_ = false; // CSV: a header line is allowed before the first row only

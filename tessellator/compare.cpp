@@ -130,8 +130,8 @@ void explainCoordinate(const Axis& axis, int k, float ref, float got, const char
       if (fx::bitsOf(model) == fx::bitsOf(ref)) continue;
       if (exact ? fx::bitsOf(model) == fx::bitsOf(got) : std::fabs(model - got) <= 0x1p-20f) {
         d.step = stepOf(b);
-        d.detail = sentence + "; " + (exact ? "exactly" : "within 2^-20 of") + " what " + describe(b) + " gives: " +
-                   stepOf(b);
+        d.detail =
+            sentence + "; " + (exact ? "exactly" : "within 2^-20 of") + " what " + describe(b) + " gives: " + stepOf(b);
         return;
       }
     }
@@ -189,10 +189,12 @@ void recognise(const Patch& patch, const Options& options, const Verts& ref, con
     outputOf(tess, arity, model);
     return sameOrderInsensitive(model, got, arity);
   };
-  const bool triangles = patch.primitive == OutputPrimitive::TriangleCw || patch.primitive == OutputPrimitive::TriangleCcw;
+  const bool triangles =
+      patch.primitive == OutputPrimitive::TriangleCw || patch.primitive == OutputPrimitive::TriangleCcw;
   if (triangles && arity == 3) {
     Patch p = patch;
-    p.primitive = patch.primitive == OutputPrimitive::TriangleCw ? OutputPrimitive::TriangleCcw : OutputPrimitive::TriangleCw;
+    p.primitive =
+        patch.primitive == OutputPrimitive::TriangleCw ? OutputPrimitive::TriangleCcw : OutputPrimitive::TriangleCw;
     if (rerun(p, options)) c.bugs.push_back(PortBug::WindingSwapped);
   }
   if (hasDenormal(patch) && !options.flushDenormals) {
@@ -305,8 +307,10 @@ PatchComparison comparePatch(const Patch& patch, const CapturedPatch* got, const
       c.kind = ur == uc ? DifferenceKind::Multiplicity : DifferenceKind::PrimitivesDiffer;
     }
   }
-  if (c.kind == DifferenceKind::PointsDiffer) pointDetails(patch, options.emulator, ref, cap, options.maxPointDetails, c);
-  if (options.recognise && c.kind != DifferenceKind::OrderDiffers) recognise(patch, options.emulator, ref, cap, arity, tess, c);
+  if (c.kind == DifferenceKind::PointsDiffer)
+    pointDetails(patch, options.emulator, ref, cap, options.maxPointDetails, c);
+  if (options.recognise && c.kind != DifferenceKind::OrderDiffers)
+    recognise(patch, options.emulator, ref, cap, arity, tess, c);
   return c;
 }
 

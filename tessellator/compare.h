@@ -36,13 +36,13 @@ namespace fftess {
 
 enum class DifferenceKind : uint8_t {
   Same,
-  CulledInCapture,    // the reference has output, the capture has none
-  CulledInReference,  // the reference culls the patch, the capture has output
-  PointsDiffer,       // the sets of distinct points differ
-  Multiplicity,       // the same distinct points (or primitives), each a different number of times
-  WindingOnly,        // the same triangles up to winding
-  PrimitivesDiffer,   // the same points, different triangles (or segments)
-  OrderDiffers,       // strictOrder only: the same multisets in another order or with another first vertex
+  CulledInCapture,   // the reference has output, the capture has none
+  CulledInReference, // the reference culls the patch, the capture has output
+  PointsDiffer,      // the sets of distinct points differ
+  Multiplicity,      // the same distinct points (or primitives), each a different number of times
+  WindingOnly,       // the same triangles up to winding
+  PrimitivesDiffer,  // the same points, different triangles (or segments)
+  OrderDiffers,      // strictOrder only: the same multisets in another order or with another first vertex
 };
 // culled_in_capture, culled_in_reference, points_differ, multiplicity, winding_only, primitives_differ,
 // order_differs, same. Any other value: "?".
@@ -50,15 +50,15 @@ const char* toString(DifferenceKind k);
 
 // Typical bugs of a tessellator port. The whole patch is re-computed under the bug and compared with the capture.
 enum class PortBug : uint8_t {
-  FloatDivision,      // i / n in float instead of i * round(65536 / n) in 16.16        (step: reciprocal rounding)
-  NoMirroring,        // second half placed like the first, not as 1 - its mirror point  (step: mirrored half)
-  NoSpecialMidpoint,  // the middle point computed instead of the exact 0.5             (step: special midpoint)
-  LerpNotRounded,     // the fractional blend kept in float, not rounded to 16.16        (step: lerp rounding)
-  FactorsNotSnapped,  // fractional factors used as floats, not rounded to 16.16 first  (step: rounding of fractional factors)
-  DenormalsFlushed,   // denormal factors flushed to zero before the cull test          (step: denormal handling)
-  Pow2AsFractionalEven, // pow2 partitioning not mapped to integer (as fractional_even)  (step: pow2 partitioning)
-  Pow2AsFractionalOdd,  // pow2 partitioning not mapped to integer (as fractional_odd)
-  WindingSwapped,     // GL/D3D winding swapped (GL cw = D3D triangle_ccw)             (step: winding)
+  FloatDivision,        // k / n in float instead of k * round(65536 / n) in 16.16 (step: reciprocal rounding)
+  NoMirroring,          // second half placed like the first, not as 1 - its mirror point (step: mirrored half)
+  NoSpecialMidpoint,    // the middle point computed instead of the exact 0.5 (step: special midpoint)
+  LerpNotRounded,       // the fractional blend kept in float, not rounded to 16.16 (step: lerp rounding)
+  FactorsNotSnapped,    // fractional factors used as floats, not rounded to 16.16 (step: rounding of fract. factors)
+  DenormalsFlushed,     // denormal factors flushed to zero before the cull test (step: denormal handling)
+  Pow2AsFractionalEven, // pow2 not mapped to integer, tessellated as fractional_even (step: pow2 partitioning)
+  Pow2AsFractionalOdd,  // pow2 partitioning not mapped to integer, tessellated as fractional_odd
+  WindingSwapped,       // GL/D3D winding swapped: GL cw is D3D triangle_ccw (step: winding)
   Count
 };
 // float_division, no_mirroring, no_special_midpoint, lerp_not_rounded, factors_not_snapped, denormals_flushed,
@@ -71,30 +71,30 @@ const char* stepOf(PortBug b);
 
 // One capture point that the reference does not have.
 struct PointDifference {
-  CapturedVertex got;          // the capture's point (float bits)
-  CapturedVertex nearest;      // the nearest reference point
-  double du = 0, dv = 0;       // got - nearest, in 16.16 units (1/65536)
-  std::string where;           // which axis and point the nearest reference coordinate is, e.g. "Ueq0 point 3 of 9"
-  std::string step;            // the step that explains the capture's value ("reciprocal rounding"), or "" if none
-  std::string detail;          // the two values and why, in a sentence
+  CapturedVertex got;     // the capture's point (float bits)
+  CapturedVertex nearest; // the nearest reference point
+  double du = 0, dv = 0;  // got - nearest, in 16.16 units (1/65536)
+  std::string where;      // which axis and point the nearest reference coordinate is, e.g. "Ueq0 point 3 of 9"
+  std::string step;       // the step that explains the capture's value ("reciprocal rounding"), or "" if none
+  std::string detail;     // the two values and why, in a sentence
 };
 
 struct CompareOptions {
   bool strictOrder = false;
-  Options emulator{};        // the reference's options (flushDenormals: compare with a llvmpipe-like reference)
-  int maxPointDetails = 8;   // PointDifference entries per patch (the counts cover all points)
-  bool recognise = true;     // re-run the patch under each PortBug
+  Options emulator{};      // the reference's options (flushDenormals: compare with a llvmpipe-like reference)
+  int maxPointDetails = 8; // PointDifference entries per patch (the counts cover all points)
+  bool recognise = true;   // re-run the patch under each PortBug
 };
 
 struct PatchComparison {
   DifferenceKind kind = DifferenceKind::Same;
   int referencePrimitives = 0, capturePrimitives = 0;
-  int verticesPerPrimitive = 0;   // of the comparison (1 when the capture is a point list)
-  int missingPoints = 0;          // distinct reference points the capture lacks
-  int extraPoints = 0;            // distinct capture points the reference lacks
-  int flippedTriangles = 0;       // WindingOnly: triangles whose winding differs
+  int verticesPerPrimitive = 0;        // of the comparison (1 when the capture is a point list)
+  int missingPoints = 0;               // distinct reference points the capture lacks
+  int extraPoints = 0;                 // distinct capture points the reference lacks
+  int flippedTriangles = 0;            // WindingOnly: triangles whose winding differs
   std::vector<PointDifference> points; // at most maxPointDetails
-  std::vector<PortBug> bugs;      // the port bugs that reproduce the capture exactly (or within 2^-20 per coordinate)
+  std::vector<PortBug> bugs; // the port bugs that reproduce the capture exactly (or within 2^-20 per coordinate)
 };
 
 // Compares one patch. got: null when the capture lacks the patch (treated as no output: culled in the capture).
@@ -118,8 +118,8 @@ float buggyEdgeParam(PortBug b, const EdgeTrace& trace, int k, float rawFactor);
 // Running totals over a whole comparison.
 struct CompareSummary {
   int64_t patches = 0, same = 0, differing = 0;
-  int64_t byKind[8] = {};                           // indexed by DifferenceKind
-  int64_t byBug[int(PortBug::Count)] = {};          // differing patches each bug reproduces
+  int64_t byKind[8] = {};                  // indexed by DifferenceKind
+  int64_t byBug[int(PortBug::Count)] = {}; // differing patches each bug reproduces
   int64_t pointsCompared = 0;
   void add(const PatchComparison& c, int points);
   // The bugs that reproduce every differing patch (empty when none does, or nothing differs).

@@ -15,7 +15,8 @@ float toFloat(uint32_t fixed) { return fx::fixedToFloat(fixed); }
 uint32_t placeUnmirrored(const EdgeTrace& t, int h) {
   const uint32_t onCeil = uint32_t(h);
   const uint32_t onFloor = t.halfFraction != 0 && h > t.splitPoint ? onCeil - 1 : onCeil;
-  const uint32_t blend = onFloor * t.reciprocalFloor * (fx::kOne - t.halfFraction) + onCeil * t.reciprocalCeil * t.halfFraction;
+  const uint32_t blend =
+      onFloor * t.reciprocalFloor * (fx::kOne - t.halfFraction) + onCeil * t.reciprocalCeil * t.halfFraction;
   return (blend + fx::kHalf) >> fx::kFractionBits;
 }
 
@@ -50,10 +51,8 @@ float buggyEdgeParam(PortBug b, const EdgeTrace& t, int k, float rawFactor) {
     const float loc = fr == 0.0f ? lc : lf * (1.0f - fr) + lc * fr;
     return p.mirrored ? 1.0f - loc : loc;
   }
-  case PortBug::NoMirroring:
-    return p.mirrored && !p.midpoint ? toFloat(placeUnmirrored(t, p.index)) : p.param;
-  case PortBug::NoSpecialMidpoint:
-    return p.midpoint ? toFloat(placeUnmirrored(t, p.halfIndex)) : p.param;
+  case PortBug::NoMirroring: return p.mirrored && !p.midpoint ? toFloat(placeUnmirrored(t, p.index)) : p.param;
+  case PortBug::NoSpecialMidpoint: return p.midpoint ? toFloat(placeUnmirrored(t, p.halfIndex)) : p.param;
   case PortBug::LerpNotRounded: {
     if (p.midpoint) return 0.5f;
     const double loc = double(p.lerp) / 4294967296.0;
@@ -64,15 +63,15 @@ float buggyEdgeParam(PortBug b, const EdgeTrace& t, int k, float rawFactor) {
     // Half the factor from the float, not from its 16.16 rounding (same half-point shift as the reference).
     double half = double(rawFactor) * 32768.0;
     if (t.halfFactor != (t.fixedFactor + 1) / 2) half += 32768.0;
-    if (std::floor(half / 65536.0) * 65536.0 != double(t.floorHalf)) return p.param; // another point count: not per point
+    if (std::floor(half / 65536.0) * 65536.0 != double(t.floorHalf))
+      return p.param; // another point count: not per point
     const double fr = (half - double(t.floorHalf)) / 65536.0;
     const double blend = double(uint32_t(p.indexOnFloor) * t.reciprocalFloor) * (1.0 - fr) +
                          double(uint32_t(p.indexOnCeil) * t.reciprocalCeil) * fr;
     const uint32_t loc = uint32_t(std::floor(blend + 0.5));
     return toFloat(p.mirrored ? fx::kOne - loc : loc);
   }
-  default:
-    return p.param;
+  default: return p.param;
   }
 }
 
@@ -139,8 +138,7 @@ const Axis* axisOf(const PatchAxes& a, CapturedVertex r, int c, bool& mirrorV, b
       return c == 0 ? &a.outer[2] : nullptr;
     }
     return nullptr;
-  case Domain::Isoline:
-    return &a.inside[c];
+  case Domain::Isoline: return &a.inside[c];
   }
   return nullptr;
 }

@@ -27,7 +27,8 @@ const Axis* axisOf(const PatchAxes& a, CapturedVertex r, int c, bool& mirrorV, b
 // The index of the point with these float bits on the axis, or -1.
 int pointOnAxis(const Axis& axis, uint32_t bits);
 // Reference vertex r as a port with edge bug b computes it.
-// corners: also re-place the corners an edge reaches by mirroring (else they stay: a port that writes them as constants).
+// corners: also re-place the corners an edge reaches by mirroring (else they stay: a port that writes them as
+// constants).
 CapturedVertex applyBug(const PatchAxes& a, PortBug b, CapturedVertex r, bool corners);
 
 } // namespace fftess

@@ -70,7 +70,8 @@ TEST_CASE("capture: bad input names file and line") {
   CHECK(errorOf("0,0,0,0,0\nx,0,0,0,0\n") == "cap.csv:2: field 1 (patch) 'x' is not a non-negative integer");
   CHECK(errorOf("patch 0 points 1 indices 1\n00000000\n").rfind("cap.csv:2: expected a point", 0) == 0);
   CHECK(errorOf("patch 0 points 1 indices 1\n00000000 00000000\n1\n").rfind("cap.csv:3: index '1'", 0) == 0);
-  CHECK(errorOf("patch 0 points 1 indices 2\n00000000 00000000\n0\n") == "cap.csv:3: file ends inside patch 0's indices");
+  CHECK(errorOf("patch 0 points 1 indices 2\n00000000 00000000\n0\n") ==
+        "cap.csv:3: file ends inside patch 0's indices");
   CHECK(errorOf("patch 0 points 1 indices 1\n00000000 00000000\n0\npatch 0 points 0 indices 0\n")
             .rfind("cap.csv:4: patch 0 comes after patch 0", 0) == 0);
 }

@@ -123,7 +123,8 @@ TEST_CASE("compare: flipped winding is winding_only; all flipped is named windin
 TEST_CASE("compare: rotated triangles match by default and differ with strict order") {
   const Patch p = patchOf("quad integer triangle_cw hw 3 3 3 3 3 3");
   CapturedPatch c = referenceCapture(p, 0, {});
-  for (size_t i = 0; i < c.vertices.size(); i += 3) std::rotate(c.vertices.begin() + long(i), c.vertices.begin() + long(i) + 1, c.vertices.begin() + long(i) + 3);
+  for (size_t i = 0; i < c.vertices.size(); i += 3)
+    std::rotate(c.vertices.begin() + long(i), c.vertices.begin() + long(i) + 1, c.vertices.begin() + long(i) + 3);
   CHECK(run(p, &c).kind == DifferenceKind::Same);
   CHECK(run(p, &c, true).kind == DifferenceKind::OrderDiffers);
   // Reordered primitives (same first vertices): also only strict order sees it.
@@ -212,7 +213,8 @@ TEST_CASE("compare: no mirroring of the second half is named") {
 TEST_CASE("compare: the middle point computed instead of the exact 0.5 is named") {
   const Patch p = patchOf("quad integer triangle_ccw hw 6 6 6 6 6 6");
   // 3 * round(65536 / 6) = 32769, not 32768.
-  const CapturedPatch c = mapCoordinates(referenceCapture(p, 0, {}), [](float x) { return x == 0.5f ? 32769.0f / 65536.0f : x; });
+  const CapturedPatch c =
+      mapCoordinates(referenceCapture(p, 0, {}), [](float x) { return x == 0.5f ? 32769.0f / 65536.0f : x; });
   const PatchComparison r = run(p, &c);
   REQUIRE(r.kind == DifferenceKind::PointsDiffer);
   CHECK(named(r, PortBug::NoSpecialMidpoint));
@@ -245,7 +247,8 @@ TEST_CASE("compare: fractional factors not snapped to 16.16 and an unrounded ler
     for (; f < 64.0f; f += 0.01f) {
       const EdgeTrace tr = traceEdge(f, Partitioning::FractionalEven);
       bool moves = false;
-      for (int k = 0; k < tr.count; ++k) moves = moves || bits(buggyEdgeParam(b, tr, k, tr.clamped)) != bits(tr.points[k].param);
+      for (int k = 0; k < tr.count; ++k)
+        moves = moves || bits(buggyEdgeParam(b, tr, k, tr.clamped)) != bits(tr.points[k].param);
       if (moves) break;
     }
     char line[96];

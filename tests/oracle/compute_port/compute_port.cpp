@@ -28,7 +28,7 @@ namespace {
 #include "quad_points_comp.h" // kQuadPointsSource, generated from quad_points.comp by CMake
 
 using namespace fftess;
-constexpr size_t kSlot = 4225; // points per patch slot (a quad at factor 64)
+constexpr size_t kSlot = 4225;  // points per patch slot (a quad at factor 64)
 constexpr size_t kChunk = 1024; // patches per dispatch
 
 int fail(const std::string& why, int status = 2) {
@@ -79,15 +79,24 @@ int main(int argc, char** argv) {
       return argv[++i];
     };
     try {
-      if (a == "--bug") bugName = value("--bug");
-      else if (a == "--hardware") hardware = true;
-      else if (a == "--compare") compare = true;
-      else if (a == "--csv") csvPath = value("--csv");
-      else if (a == "--random") random = std::stol(value("--random"));
-      else if (a == "--seed") seed = std::stoull(value("--seed"));
-      else if (a == "--batch-out") batchOut = value("--batch-out");
-      else if (!a.empty() && a[0] != '-' && batchPath.empty()) batchPath = a;
-      else return fail("unknown argument '" + a + "' (see the comment at the top of compute_port.cpp)");
+      if (a == "--bug")
+        bugName = value("--bug");
+      else if (a == "--hardware")
+        hardware = true;
+      else if (a == "--compare")
+        compare = true;
+      else if (a == "--csv")
+        csvPath = value("--csv");
+      else if (a == "--random")
+        random = std::stol(value("--random"));
+      else if (a == "--seed")
+        seed = std::stoull(value("--seed"));
+      else if (a == "--batch-out")
+        batchOut = value("--batch-out");
+      else if (!a.empty() && a[0] != '-' && batchPath.empty())
+        batchPath = a;
+      else
+        return fail("unknown argument '" + a + "' (see the comment at the top of compute_port.cpp)");
     } catch (const std::exception& e) {
       return fail(e.what());
     }
@@ -108,7 +117,8 @@ int main(int argc, char** argv) {
     for (const auto& l : lines) {
       const auto& p = l.patch;
       if (p.domain != oracle::Domain::Quad || p.partitioning == oracle::Partitioning::FractionalOdd)
-        return fail(batchPath + ":" + std::to_string(l.lineNumber) + ": the port does quad integer, pow2 and "
+        return fail(batchPath + ":" + std::to_string(l.lineNumber) +
+                    ": the port does quad integer, pow2 and "
                     "fractional_even only");
       patches.push_back(p);
     }
