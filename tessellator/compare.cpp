@@ -209,10 +209,28 @@ void recognise(const Patch& patch, const Options& options, const Verts& ref, con
     p.partitioning = Partitioning::FractionalOdd;
     if (rerun(p, options)) c.bugs.push_back(PortBug::Pow2AsFractionalOdd);
   }
+  // Unsnapped fractional factors change point counts where a factor lies between two 16.16 values: a port comparing
+  // the float (f > 2) places points the 16.16 value (== 2) does not. Modelled as the factors moved to the next 16.16
+  // value up (the blend fraction then differs by less than a unit); per-point differences: the edge model below.
+  bool offGrid = false;
+  Patch up = patch;
+  if (!patch.stage.hlsl && (patch.partitioning == Partitioning::FractionalEven ||
+                            patch.partitioning == Partitioning::FractionalOdd)) {
+    for (float& f : up.factors) {
+      const double scaled = double(f) * 65536.0;
+      if (f > 0.0f && f < 64.0f && scaled != std::floor(scaled)) {
+        f = float(std::ceil(scaled) / 65536.0);
+        offGrid = true;
+      }
+    }
+  }
+  bool unsnapped = offGrid && rerun(up, options);
+  if (unsnapped) c.bugs.push_back(PortBug::FactorsNotSnapped);
   if (ref.empty() || ref.size() != got.size()) return;
   const PatchAxes axes = patchAxes(patch, options);
   for (PortBug b : {PortBug::FloatDivision, PortBug::NoMirroring, PortBug::NoSpecialMidpoint, PortBug::LerpNotRounded,
                     PortBug::FactorsNotSnapped}) {
+    if (b == PortBug::FactorsNotSnapped && unsnapped) continue;
     for (bool corners : {true, false}) { // ports place the corners like any edge point, or write them as constants
       model.clear();
       for (CapturedVertex r : ref) model.push_back(applyBug(axes, b, r, corners));

@@ -293,3 +293,17 @@ TEST_CASE("compare: summary counts and the bug that explains every differing pat
   REQUIRE(s.explainingAll().size() == 1);
   CHECK(s.explainingAll()[0] == PortBug::WindingSwapped);
 }
+
+TEST_CASE("compare: an unsnapped fractional factor just above an even integer adds points, named factors_not_snapped") {
+  // 2 + 2^-22 rounds to 2.0 in 16.16: the reference places 3 points on Ueq0 (facts.md). A port comparing the float
+  // sees a factor above 2 and grows two more points at the ends of the middle (here: duplicates of 0 and 0.5 after
+  // rounding), as the reference does for 2 + 2^-16, the next 16.16 value.
+  const Patch p = patchOf("quad fractional_even point hw 0x40000002 4 4 4 4 4");
+  Patch next = p;
+  next.factors[0] = 2.0f + 1.0f / 65536.0f;
+  const CapturedPatch c = referenceCapture(next, 0, {}, true);
+  const PatchComparison r = run(p, &c);
+  CHECK(r.capturePrimitives == r.referencePrimitives + 2);
+  CHECK(named(r, PortBug::FactorsNotSnapped));
+  CHECK(r.bugs.size() == 1);
+}
