@@ -73,3 +73,13 @@ TEST_CASE("compare: bad input exits 2 naming FILE:LINE, and prints no report", "
   CHECK(r.status == 2);
   CHECK(r.err.find(bad + ":1: patch 0: the capture has 3 vertices per primitive") != std::string::npos);
 }
+
+TEST_CASE("compare: every golden .out file is the reference's output for its .in, in strict order", "[cli]") {
+  for (const char* set : {"quad-hw", "tri-hw", "isoline-hw", "quad-hlsl", "tri-hlsl", "isoline-hlsl"}) {
+    INFO(set);
+    const auto r = run({"compare", "--strict-order", clitest::golden(std::string(set) + ".in"),
+                        clitest::golden(std::string(set) + ".out")});
+    CHECK(r.status == 0);
+    CHECK(r.out.find("verdict: same") != std::string::npos);
+  }
+}
