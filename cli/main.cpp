@@ -1,4 +1,5 @@
-// fftess: the command-line tool. Subcommands: tessellate, explain, check, sweep, bench (docs/cli.md).
+// fftess: the command-line tool. Subcommands: tessellate, explain, check, sweep, compare, driver-check, bench
+// (docs/cli.md).
 // Exit statuses: 0 clean, 1 cracks found, 2 bad usage or input, 3 internal error. Errors go to stderr.
 #include "commands.h"
 #include "common.h"
@@ -11,6 +12,7 @@
 #include <new>
 
 #include "check.h"
+#include "compare_cmd.h"
 
 int main(int argc, char** argv) {
   using namespace fftess::cli;
@@ -35,6 +37,10 @@ int main(int argc, char** argv) {
   CLI::App* check = addCheck(app, checkArgs);
   CLI::App* sweep = addSweep(app, sweepArgs);
   CLI::App* bench = addBench(app, benchArgs);
+  CompareArgs compareArgs;
+  CLI::App* compare = addCompare(app, compareArgs);
+  DriverCheckArgs driverArgs;
+  CLI::App* driver = addDriverCheck(app, driverArgs);
 
   std::string names;
   bool known = false;
@@ -65,6 +71,8 @@ int main(int argc, char** argv) {
     if (explain->parsed()) return runExplain(explainArgs);
     if (check->parsed()) return runCheck(checkArgs);
     if (sweep->parsed()) return runSweep(sweepArgs);
+    if (compare->parsed()) return runCompare(compareArgs);
+    if (driver->parsed()) return runDriverCheck(driverArgs);
     if (bench->parsed()) {
       benchArgs.passThrough = bench->remaining();
       return runBench(benchArgs, argv[0]);

@@ -4,9 +4,10 @@
 # libEGL.so.1 from glvnd stays dynamic), builds fftess_tessellator from the tree, finds EGL and GL/glcorearb.h, and
 # gives:
 #   FFTESS_ROOT                the repository root
-#   FFTESS_ORACLE              tests/oracle
-#   FFTESS_GL_CONTEXT_SOURCES  the headless EGL context (tests/oracle/gl_context.cpp), compiled into each tool
-#   fftess_standalone_gl_tool(TARGET)  includes (repository root, tests/oracle, glcorearb) and OpenGL::EGL for TARGET
+#   FFTESS_ORACLE              tests/oracle (gl_oracle.cpp)
+#   FFTESS_GL_DIR              verify/gpu, the GL module (fftess_gl in the main build): capture, context, batch parser
+#   FFTESS_GL_CONTEXT_SOURCES  the headless EGL context (verify/gpu/gl_context.cpp), compiled into each tool
+#   fftess_standalone_gl_tool(TARGET)  includes (repository root, verify/gpu, glcorearb) and OpenGL::EGL for TARGET
 set(CMAKE_CXX_STANDARD 17)
 set(CMAKE_CXX_STANDARD_REQUIRED ON)
 set(CMAKE_CXX_EXTENSIONS OFF)
@@ -15,6 +16,7 @@ if(NOT CMAKE_BUILD_TYPE)
 endif()
 get_filename_component(FFTESS_ROOT ${CMAKE_CURRENT_LIST_DIR}/../.. ABSOLUTE)
 set(FFTESS_ORACLE ${FFTESS_ROOT}/tests/oracle)
+set(FFTESS_GL_DIR ${FFTESS_ROOT}/verify/gpu)
 # The main build's floating-point flags: exactly as written, no contraction into FMA.
 add_compile_options(-Wall -Wextra -ffp-contract=off -fno-fast-math)
 add_link_options(-static-libstdc++ -static-libgcc)
@@ -24,9 +26,9 @@ target_include_directories(fftess_tessellator PUBLIC ${FFTESS_ROOT})
 
 find_package(OpenGL REQUIRED COMPONENTS EGL)
 find_path(FFTESS_GLCOREARB_DIR GL/glcorearb.h REQUIRED)
-set(FFTESS_GL_CONTEXT_SOURCES ${FFTESS_ORACLE}/gl_context.cpp)
+set(FFTESS_GL_CONTEXT_SOURCES ${FFTESS_GL_DIR}/gl_context.cpp)
 
 function(fftess_standalone_gl_tool target)
-  target_include_directories(${target} PRIVATE ${FFTESS_ROOT} ${FFTESS_ORACLE} ${FFTESS_GLCOREARB_DIR})
+  target_include_directories(${target} PRIVATE ${FFTESS_ROOT} ${FFTESS_GL_DIR} ${FFTESS_GLCOREARB_DIR})
   target_link_libraries(${target} PRIVATE OpenGL::EGL)
 endfunction()

@@ -20,7 +20,7 @@
 // 1 = usage; 3 = no suitable GL 4.5 context; 4 = shader compile/link or GL error.
 #include "lod/lod.h"
 #include "tessellator/tessellator.h"
-#include "tests/oracle/gl_context.h" // headless EGL context, GL loader, renderer check (shared with tests/oracle)
+#include "verify/gpu/gl_context.h" // headless EGL context, GL loader, renderer check (the GL module, fftess_gl)
 
 #include <glm/gtc/matrix_transform.hpp>
 

@@ -52,7 +52,9 @@ public:
   GlOracle& operator=(const GlOracle&) = delete;
 
   // Creates the context. Returns null and sets 'error' (what failed, with the EGL/GL error) when impossible.
-  static std::unique_ptr<GlOracle> create(std::string& error);
+  // hardwareFirst: EGL devices that are not Mesa's software device first (a GPU), then the software ones (the
+  // default order is llvmpipe first: the oracle).
+  static std::unique_ptr<GlOracle> create(std::string& error, bool hardwareFirst = false);
 
   // GL_RENDERER / GL_VERSION of the context (e.g. "llvmpipe (LLVM 15.0.6, 256 bits)").
   const std::string& renderer() const { return renderer_; }

@@ -271,11 +271,12 @@ GlOracle::~GlOracle() {
   // m.context releases the EGL context and display.
 }
 
-std::unique_ptr<GlOracle> GlOracle::create(std::string& error) {
+std::unique_ptr<GlOracle> GlOracle::create(std::string& error, bool hardwareFirst) {
   std::unique_ptr<GlOracle> o(new GlOracle);
   Impl& m = *o->impl_;
   gltest::ContextOptions options;
-  options.order = gltest::DeviceOrder::SoftwareFirst; // llvmpipe's software EGL device first
+  options.order = hardwareFirst ? gltest::DeviceOrder::HardwareFirst  // a GPU's EGL device, then the software ones
+                                : gltest::DeviceOrder::SoftwareFirst; // llvmpipe's software EGL device first
   if (!m.context.create(options, error)) {
     if (m.context.renderer().empty() && error.rfind("cannot create", 0) == 0)
       error += "; install libegl-mesa0 and libgl1-mesa-dri";

@@ -1,0 +1,241 @@
+// fftess compare PATCHES CAPTURE: another tessellator's output against the emulator, patch by patch, streamed
+// (tessellator/compare.h does the comparing; this file reads the files, prints and picks the exit status).
+#include "common.h"
+#include "compare_cmd.h"
+
+#include "tessellator/batch.h"
+#include "tessellator/capture.h"
+#include "tessellator/compare.h"
+#include "tessellator/names.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <iostream>
+#include <memory>
+
+namespace fftess::cli {
+namespace {
+
+using json = nlohmann::ordered_json;
+using nlohmann::ordered_json;
+
+float floatOfBits(uint32_t b) {
+  float f;
+  std::memcpy(&f, &b, sizeof f);
+  return f;
+}
+
+// Reads the batch file one patch at a time (blank lines and '#' comments skipped, as `tessellate` does).
+class BatchReader {
+public:
+  BatchReader(std::istream& in, std::string source) : in_(in), source_(std::move(source)) {}
+  bool next(Patch& p, int& line) {
+    std::string s;
+    while (std::getline(in_, s)) {
+      ++lineNo_;
+      if (auto hash = s.find('#'); hash != std::string::npos) s.erase(hash);
+      if (isBatchSkippable(s)) continue;
+      BatchError be;
+      if (!parseBatchLine(s, p, be))
+        throw UsageError(
+            source_ + ":" + std::to_string(lineNo_) + ": " +
+            (be.token.empty() ? "" : "token " + std::to_string(be.column) + " " + quoteToken(be.token) + ": ") +
+            be.message);
+      line = lineNo_;
+      return true;
+    }
+    return false;
+  }
+
+private:
+  std::istream& in_;
+  std::string source_;
+  int lineNo_ = 0;
+};
+
+std::istream& openInput(const std::string& path, std::unique_ptr<std::ifstream>& file, const char* what) {
+  if (path == "-") return std::cin;
+  file = std::make_unique<std::ifstream>(path, std::ios::binary);
+  if (!*file) throw UsageError(std::string(what) + " '" + path + "': cannot open");
+  return *file;
+}
+
+std::string vertexText(CapturedVertex v) {
+  return "(" + formatFloat(floatOfBits(v.u)) + ", " + formatFloat(floatOfBits(v.v)) + ")";
+}
+
+json vertexJson(CapturedVertex v) {
+  return json{
+      {"u", floatOfBits(v.u)}, {"v", floatOfBits(v.v)}, {"u_bits", "0x" + hex8(v.u)}, {"v_bits", "0x" + hex8(v.v)}};
+}
+
+void describePatch(std::string& o, ordered_json& list, int64_t index, int line, const std::string& batch,
+                   const PatchComparison& c, bool asJson) {
+  if (asJson) {
+    json j{{"patch", index},
+           {"line", line},
+           {"kind", toString(c.kind)},
+           {"reference_primitives", c.referencePrimitives},
+           {"capture_primitives", c.capturePrimitives},
+           {"vertices_per_primitive", c.verticesPerPrimitive},
+           {"missing_points", c.missingPoints},
+           {"extra_points", c.extraPoints},
+           {"flipped_triangles", c.flippedTriangles}};
+    json bugs = json::array();
+    for (PortBug b : c.bugs) bugs.push_back(toString(b));
+    j["bugs"] = bugs;
+    json pts = json::array();
+    for (const auto& d : c.points)
+      pts.push_back(json{{"got", vertexJson(d.got)},
+                         {"nearest", vertexJson(d.nearest)},
+                         {"du", d.du},
+                         {"dv", d.dv},
+                         {"where", d.where},
+                         {"step", d.step},
+                         {"detail", d.detail}});
+    j["points"] = pts;
+    list.push_back(j);
+    return;
+  }
+  o += "patch " + std::to_string(index) + " (" + batch + (line > 0 ? ":" + std::to_string(line) : "") +
+       "): " + toString(c.kind) + ": " + std::to_string(c.referencePrimitives) + " reference " +
+       (c.verticesPerPrimitive == 1 ? "points" : "primitives") + ", " + std::to_string(c.capturePrimitives) +
+       " in the capture";
+  if (c.kind == DifferenceKind::PointsDiffer)
+    o += "; " + std::to_string(c.missingPoints) + " reference points missing, " + std::to_string(c.extraPoints) +
+         " points the reference lacks";
+  if (c.kind == DifferenceKind::WindingOnly) o += "; " + std::to_string(c.flippedTriangles) + " triangles flipped";
+  o += "\n";
+  for (const auto& d : c.points) {
+    o += "  " + vertexText(d.got) + ": nearest reference point " + vertexText(d.nearest) + ", du " +
+         formatNumber(d.du) + " dv " + formatNumber(d.dv) + " (16.16 units)\n";
+    o += "    " + d.where + ": " + d.detail + "\n";
+  }
+  for (PortBug b : c.bugs) o += std::string("  reproduced by ") + toString(b) + ": " + describe(b) + "\n";
+}
+
+} // namespace
+
+CompareReporter::CompareReporter(bool asJson, int show, bool strict, std::string batch)
+    : json_(asJson), strict_(strict), show_(show), batch_(std::move(batch)), listed_(ordered_json::array()) {}
+
+void CompareReporter::add(int64_t index, int line, const PatchComparison& c) {
+  sum_.add(c, c.referencePrimitives * c.verticesPerPrimitive);
+  if (c.kind != DifferenceKind::Same && shown_ < show_) {
+    ++shown_;
+    describePatch(text_, listed_, index, line, batch_, c, json_);
+  }
+}
+
+void CompareReporter::finish(const std::string& format, const std::string& header) {
+  if (!json_) text_ = header + text_;
+  const auto all = sum_.explainingAll();
+  if (json_) {
+    json j{{"patches", sum_.patches},     {"same", sum_.same},
+           {"differing", sum_.differing}, {"points_compared", sum_.pointsCompared},
+           {"strict_order", strict_},     {"format", format}};
+    if (!header.empty()) j["source"] = header.substr(0, header.size() - 1); // the one header line, without '\n'
+    json kinds = json::object();
+    for (int k = 1; k < 8; ++k) kinds[toString(DifferenceKind(k))] = sum_.byKind[k];
+    j["by_kind"] = kinds;
+    json bugs = json::object();
+    for (int b = 0; b < int(PortBug::Count); ++b) bugs[toString(PortBug(b))] = sum_.byBug[b];
+    j["bugs"] = bugs;
+    json ex = json::array();
+    for (PortBug b : all) ex.push_back(toString(b));
+    j["explained_by"] = ex;
+    j["listed"] = listed_;
+    writeStdout(j.dump(2) + "\n");
+  } else {
+    text_ += "summary: " + std::to_string(sum_.patches) + " patches, " + std::to_string(sum_.same) + " same, " +
+             std::to_string(sum_.differing) + " differ";
+    std::string kinds;
+    for (int k = 1; k < 8; ++k)
+      if (sum_.byKind[k])
+        kinds +=
+            std::string(kinds.empty() ? "" : ", ") + toString(DifferenceKind(k)) + " " + std::to_string(sum_.byKind[k]);
+    if (!kinds.empty()) text_ += " (" + kinds + ")";
+    text_ += "; " + std::to_string(sum_.pointsCompared) + " reference vertices compared" +
+             (strict_ ? " in strict order" : "") + "\n";
+    for (int b = 0; b < int(PortBug::Count); ++b)
+      if (sum_.byBug[b])
+        text_ += std::string("typical port bug ") + toString(PortBug(b)) + " reproduces " +
+                 std::to_string(sum_.byBug[b]) + " of " + std::to_string(sum_.differing) + " differing patches (" +
+                 describe(PortBug(b)) + ")\n";
+    if (sum_.differing == 0)
+      text_ += "verdict: same: the capture is the D3D11 reference's output\n";
+    else if (!all.empty())
+      text_ += std::string("verdict: differs; every difference is reproduced by ") + toString(all.front()) + ": " +
+               describe(all.front()) + " (step: " + stepOf(all.front()) + ")\n";
+    else
+      text_ += "verdict: differs\n";
+    writeStdout(text_);
+  }
+}
+
+CLI::App* addCompare(CLI::App& app, CompareArgs& a) {
+  CLI::App* sub = app.add_subcommand("compare", "Compare a port's tessellator output (CAPTURE) with the emulator");
+  sub->add_option("patches", a.patches, "Batch file the port was fed (tessellator/batch.h format; - for stdin)")
+      ->required();
+  sub->add_option("capture", a.capture, "The port's output: hex blocks or CSV patch,primitive,vertex,u,v[,w]")
+      ->required();
+  sub->add_option("--format", a.format, "Capture format: auto (default), hex, csv")
+      ->check(CLI::IsMember({"auto", "hex", "csv"}));
+  sub->add_flag("--strict-order", a.strictOrder, "Same primitives in the same order with the same first vertex");
+  sub->add_flag("--json", a.json, "JSON report on stdout");
+  sub->add_flag("--flush-denormals", a.flushDenormals, "Reference flushes denormal factors (as llvmpipe and GPUs do)");
+  sub->add_option("--show", a.show, "Differing patches listed in full (default 20; all are counted)");
+  sub->add_option("--details", a.details, "Differing points explained per patch (default 4)");
+  sub->footer("Example:\n  fftess compare docs/examples/compare_port.batch docs/examples/compare_port_bug.csv\n"
+              "Exit status: 0 same, 1 differs, 2 bad usage or input (FILE:LINE), 3 internal error.");
+  return sub;
+}
+
+int runCompare(const CompareArgs& a) {
+  if (a.patches == "-" && a.capture == "-") throw UsageError("PATCHES and CAPTURE cannot both be stdin");
+  std::unique_ptr<std::ifstream> pf, cf;
+  std::istream& pin = openInput(a.patches, pf, "PATCHES");
+  std::istream& cin = openInput(a.capture, cf, "CAPTURE");
+  const CaptureFormat format = a.format == "hex"   ? CaptureFormat::Hex
+                               : a.format == "csv" ? CaptureFormat::Csv
+                                                   : CaptureFormat::Auto;
+  BatchReader batch(pin, a.patches);
+  CaptureReader capture(cin, a.capture, format);
+  CompareOptions opt;
+  opt.strictOrder = a.strictOrder;
+  opt.emulator.flushDenormals = a.flushDenormals;
+  opt.maxPointDetails = a.details;
+  Tessellator tess;
+  CompareReporter reporter(a.json, a.show, a.strictOrder, a.patches);
+  CapturedPatch got;
+  bool haveGot = false;
+  try {
+    haveGot = capture.next(got);
+    Patch p;
+    int line = 0;
+    for (int64_t index = 0; batch.next(p, line); ++index) {
+      const bool present = haveGot && got.patch == index;
+      PatchComparison c;
+      try {
+        c = comparePatch(p, present ? &got : nullptr, opt, tess);
+      } catch (const CaptureError& e) {
+        throw CaptureError(a.capture + ":" + std::to_string(got.line) + ": " + e.what());
+      }
+      reporter.add(index, line, c);
+      if (present) haveGot = capture.next(got);
+    }
+    if (haveGot)
+      throw CaptureError(a.capture + ":" + std::to_string(got.line) + ": patch " + std::to_string(got.patch) +
+                         " is not in " + a.patches + " (it has " + std::to_string(reporter.summary().patches) +
+                         " patches)");
+  } catch (const CaptureError& e) {
+    throw UsageError(e.what());
+  }
+  reporter.finish(capture.format() == CaptureFormat::Hex ? "hex" : "csv", "");
+  return reporter.summary().differing ? kExitFindings : kExitClean;
+}
+
+} // namespace fftess::cli

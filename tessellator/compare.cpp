@@ -1,0 +1,376 @@
+#include "compare.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+
+#include "batch.h"
+#include "compare_internal.h"
+#include "fixed.h"
+#include "names.h"
+
+namespace fftess {
+namespace {
+
+using Verts = std::vector<CapturedVertex>;
+using Prim = std::array<uint64_t, 3>;
+
+uint64_t key(CapturedVertex v) { return (uint64_t(v.u) << 32) | v.v; }
+float fu(CapturedVertex v) { return fx::floatOf(v.u); }
+float fv(CapturedVertex v) { return fx::floatOf(v.v); }
+
+// Primitives as sortable keys. rotate: triangles rotated to their smallest vertex (winding kept); sortAll: vertices
+// of each primitive sorted (winding ignored; segments are always unordered).
+std::vector<Prim> primitives(const Verts& v, int arity, bool sortAll) {
+  std::vector<Prim> out;
+  if (arity <= 0) return out;
+  out.reserve(v.size() / size_t(arity));
+  for (size_t i = 0; i + size_t(arity) <= v.size(); i += size_t(arity)) {
+    Prim p{0, 0, 0};
+    for (int k = 0; k < arity; ++k) p[size_t(k)] = key(v[i + size_t(k)]);
+    if (arity == 2 || sortAll) {
+      std::sort(p.begin(), p.begin() + arity);
+    } else if (arity == 3) {
+      const size_t m = size_t(std::min_element(p.begin(), p.end()) - p.begin());
+      std::rotate(p.begin(), p.begin() + long(m), p.end());
+    }
+    out.push_back(p);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+std::vector<uint64_t> distinctPoints(const Verts& v) {
+  std::vector<uint64_t> k;
+  k.reserve(v.size());
+  for (auto x : v) k.push_back(key(x));
+  std::sort(k.begin(), k.end());
+  k.erase(std::unique(k.begin(), k.end()), k.end());
+  return k;
+}
+
+// Size of the multiset difference a \ b (both sorted).
+template <class T> int differenceSize(const std::vector<T>& a, const std::vector<T>& b) {
+  std::vector<T> d;
+  std::set_difference(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(d));
+  return int(d.size());
+}
+
+bool sameOrderInsensitive(const Verts& a, const Verts& b, int arity) {
+  return a.size() == b.size() && primitives(a, arity, false) == primitives(b, arity, false);
+}
+
+// Every vertex of 'got' pairs with its own vertex of 'model' within tol in u and v (multisets of vertices).
+bool nearSame(const Verts& model, const Verts& got, float tol) {
+  if (model.size() != got.size()) return false;
+  Verts m = model;
+  std::sort(m.begin(), m.end(), [](CapturedVertex a, CapturedVertex b) { return fu(a) < fu(b); });
+  std::vector<char> used(m.size(), 0);
+  for (CapturedVertex g : got) {
+    const float u = fu(g), v = fv(g);
+    auto it = std::lower_bound(m.begin(), m.end(), u - tol, [](CapturedVertex a, float x) { return fu(a) < x; });
+    bool found = false;
+    for (; it != m.end() && fu(*it) <= u + tol; ++it) {
+      const size_t i = size_t(it - m.begin());
+      if (!used[i] && std::fabs(fv(*it) - v) <= tol) {
+        used[i] = 1;
+        found = true;
+        break;
+      }
+    }
+    if (!found) return false;
+  }
+  return true;
+}
+
+void outputOf(const Tessellator& t, int arity, Verts& out) {
+  out.clear();
+  const auto& pts = t.points();
+  auto vert = [&](size_t i) { return CapturedVertex{fx::bitsOf(pts[i].u), fx::bitsOf(pts[i].v)}; };
+  if (arity == 1) { // the point array (a point list of any topology)
+    for (size_t i = 0; i < pts.size(); ++i) out.push_back(vert(i));
+    return;
+  }
+  for (int32_t i : t.indices()) out.push_back(vert(size_t(i)));
+}
+
+bool hasDenormal(const Patch& p) {
+  for (float f : p.factors) {
+    const uint32_t b = fx::bitsOf(f) & ~fx::kSignBit;
+    if (b != 0 && b < fx::kMinNormal) return true;
+  }
+  return false;
+}
+
+std::string num(double v) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.9g", v);
+  return buf;
+}
+
+// The step that explains capture coordinate 'got' where the reference has 'ref' on this axis, and the sentence.
+void explainCoordinate(const Axis& axis, int k, float ref, float got, const char* coord, PointDifference& d) {
+  d.where = std::string(axis.name) + " point " + std::to_string(k) + " of " + std::to_string(axis.trace.count);
+  const EdgePointTrace& p = axis.trace.points[k];
+  std::string sentence = std::string(coord) + " = " + num(got) + " where the reference has " + num(ref) + " (16.16 " +
+                         std::to_string(p.fixed) + "/65536";
+  if (p.midpoint)
+    sentence += ", the special-cased middle";
+  else
+    sentence += std::string(p.mirrored ? ", mirrored: 1 - " : ", ") + "index " + std::to_string(p.indexOnCeil) +
+                " x reciprocal " + std::to_string(axis.trace.reciprocalCeil) + "/65536 of 1/" +
+                std::to_string(axis.trace.ceilSegments);
+  sentence += ")";
+  static const PortBug kEdgeBugs[] = {PortBug::FloatDivision, PortBug::NoMirroring, PortBug::NoSpecialMidpoint,
+                                      PortBug::LerpNotRounded, PortBug::FactorsNotSnapped};
+  for (bool exact : {true, false}) {
+    for (PortBug b : kEdgeBugs) {
+      const float model = buggyEdgeParam(b, axis.trace, k, axis.raw);
+      if (fx::bitsOf(model) == fx::bitsOf(ref)) continue;
+      if (exact ? fx::bitsOf(model) == fx::bitsOf(got) : std::fabs(model - got) <= 0x1p-20f) {
+        d.step = stepOf(b);
+        d.detail =
+            sentence + "; " + (exact ? "exactly" : "within 2^-20 of") + " what " + describe(b) + " gives: " + stepOf(b);
+        return;
+      }
+    }
+  }
+  d.detail = sentence + "; no typical port bug gives this value";
+}
+
+void pointDetails(const Patch& patch, const Options& options, const Verts& ref, const Verts& got, int maxDetails,
+                  PatchComparison& c) {
+  const auto dr = distinctPoints(ref), dg = distinctPoints(got);
+  std::vector<uint64_t> extra, missing;
+  std::set_difference(dg.begin(), dg.end(), dr.begin(), dr.end(), std::back_inserter(extra));
+  std::set_difference(dr.begin(), dr.end(), dg.begin(), dg.end(), std::back_inserter(missing));
+  c.extraPoints = int(extra.size());
+  c.missingPoints = int(missing.size());
+  if (dr.empty() || maxDetails <= 0) return;
+  const PatchAxes axes = patchAxes(patch, options);
+  for (size_t i = 0; i < extra.size() && int(i) < maxDetails; ++i) {
+    PointDifference d;
+    d.got = CapturedVertex{uint32_t(extra[i] >> 32), uint32_t(extra[i])};
+    double best = 1e300;
+    for (uint64_t r : dr) {
+      const CapturedVertex rv{uint32_t(r >> 32), uint32_t(r)};
+      const double du = double(fu(d.got)) - double(fu(rv)), dv = double(fv(d.got)) - double(fv(rv));
+      if (du * du + dv * dv < best) {
+        best = du * du + dv * dv;
+        d.nearest = rv;
+      }
+    }
+    d.du = (double(fu(d.got)) - double(fu(d.nearest))) * 65536.0;
+    d.dv = (double(fv(d.got)) - double(fv(d.nearest))) * 65536.0;
+    for (int coord = 0; coord < 2 && d.detail.empty(); ++coord) {
+      const uint32_t gb = coord == 0 ? d.got.u : d.got.v, rb = coord == 0 ? d.nearest.u : d.nearest.v;
+      if (gb == rb) continue;
+      bool mirrorV = false;
+      const Axis* axis = axisOf(axes, d.nearest, coord, mirrorV);
+      const int k = axis ? pointOnAxis(*axis, rb) : -1;
+      if (k < 0) {
+        d.where = "a point not on one edge";
+        d.detail = std::string(coord ? "v" : "u") + " differs; the reference point is not placed by one edge";
+        continue;
+      }
+      explainCoordinate(*axis, k, fx::floatOf(rb), fx::floatOf(gb), coord ? "v" : "u", d);
+    }
+    c.points.push_back(d);
+  }
+}
+
+// Re-runs the patch under each typical port bug and keeps those that reproduce the capture.
+void recognise(const Patch& patch, const Options& options, const Verts& ref, const Verts& got, int arity,
+               Tessellator& tess, PatchComparison& c) {
+  Verts model;
+  auto rerun = [&](const Patch& p, const Options& o) {
+    tess.tessellate(p, o);
+    outputOf(tess, arity, model);
+    return sameOrderInsensitive(model, got, arity);
+  };
+  const bool triangles =
+      patch.primitive == OutputPrimitive::TriangleCw || patch.primitive == OutputPrimitive::TriangleCcw;
+  if (triangles && arity == 3) {
+    Patch p = patch;
+    p.primitive =
+        patch.primitive == OutputPrimitive::TriangleCw ? OutputPrimitive::TriangleCcw : OutputPrimitive::TriangleCw;
+    if (rerun(p, options)) c.bugs.push_back(PortBug::WindingSwapped);
+  }
+  if (hasDenormal(patch) && !options.flushDenormals) {
+    Options o = options;
+    o.flushDenormals = true;
+    if (rerun(patch, o)) c.bugs.push_back(PortBug::DenormalsFlushed);
+  }
+  if (patch.partitioning == Partitioning::Pow2) {
+    Patch p = patch;
+    p.partitioning = Partitioning::FractionalEven;
+    if (rerun(p, options)) c.bugs.push_back(PortBug::Pow2AsFractionalEven);
+    p.partitioning = Partitioning::FractionalOdd;
+    if (rerun(p, options)) c.bugs.push_back(PortBug::Pow2AsFractionalOdd);
+  }
+  // Unsnapped fractional factors change point counts where a factor lies between two 16.16 values: a port comparing
+  // the float (f > 2) places points the 16.16 value (== 2) does not. Modelled as the factors moved to the next 16.16
+  // value up (the blend fraction then differs by less than a unit); per-point differences: the edge model below.
+  bool offGrid = false;
+  Patch up = patch;
+  if (!patch.stage.hlsl && (patch.partitioning == Partitioning::FractionalEven ||
+                            patch.partitioning == Partitioning::FractionalOdd)) {
+    for (float& f : up.factors) {
+      const double scaled = double(f) * 65536.0;
+      if (f > 0.0f && f < 64.0f && scaled != std::floor(scaled)) {
+        f = float(std::ceil(scaled) / 65536.0);
+        offGrid = true;
+      }
+    }
+  }
+  bool unsnapped = offGrid && rerun(up, options);
+  if (unsnapped) c.bugs.push_back(PortBug::FactorsNotSnapped);
+  if (ref.empty() || ref.size() != got.size()) return;
+  const PatchAxes axes = patchAxes(patch, options);
+  for (PortBug b : {PortBug::FloatDivision, PortBug::NoMirroring, PortBug::NoSpecialMidpoint, PortBug::LerpNotRounded,
+                    PortBug::FactorsNotSnapped}) {
+    if (b == PortBug::FactorsNotSnapped && unsnapped) continue;
+    for (bool corners : {true, false}) { // ports place the corners like any edge point, or write them as constants
+      model.clear();
+      for (CapturedVertex r : ref) model.push_back(applyBug(axes, b, r, corners));
+      if (model == ref) continue; // the bug changes nothing in this patch
+      if (sameOrderInsensitive(model, got, arity) || nearSame(model, got, 0x1p-20f)) {
+        c.bugs.push_back(b);
+        break;
+      }
+    }
+  }
+}
+
+} // namespace
+
+const char* toString(DifferenceKind k) {
+  switch (k) {
+  case DifferenceKind::Same: return "same";
+  case DifferenceKind::CulledInCapture: return "culled_in_capture";
+  case DifferenceKind::CulledInReference: return "culled_in_reference";
+  case DifferenceKind::PointsDiffer: return "points_differ";
+  case DifferenceKind::Multiplicity: return "multiplicity";
+  case DifferenceKind::WindingOnly: return "winding_only";
+  case DifferenceKind::PrimitivesDiffer: return "primitives_differ";
+  case DifferenceKind::OrderDiffers: return "order_differs";
+  }
+  return "?";
+}
+
+namespace {
+struct BugText {
+  const char* name;
+  const char* sentence;
+  const char* step;
+};
+constexpr BugText kBugs[] = {
+    {"float_division", "float division instead of the 16.16 reciprocal table", "reciprocal rounding"},
+    {"no_mirroring", "no mirroring of the second half of the edge", "mirrored half"},
+    {"no_special_midpoint", "the middle point computed instead of the exact 0.5", "special midpoint"},
+    {"lerp_not_rounded", "the fractional blend not rounded back to 16.16", "lerp rounding"},
+    {"factors_not_snapped", "float factors not snapped to 16.16", "rounding of fractional factors"},
+    {"denormals_flushed", "denormal factors flushed to zero (the patch is culled)", "denormal handling"},
+    {"pow2_as_fractional_even", "pow2 not mapped to integer (tessellated as fractional_even)", "pow2 partitioning"},
+    {"pow2_as_fractional_odd", "pow2 not mapped to integer (tessellated as fractional_odd)", "pow2 partitioning"},
+    {"winding_swapped", "GL/D3D winding swapped (GL cw is D3D triangle_ccw)", "winding"},
+};
+} // namespace
+
+const char* toString(PortBug b) { return size_t(b) < std::size(kBugs) ? kBugs[size_t(b)].name : "?"; }
+const char* describe(PortBug b) { return size_t(b) < std::size(kBugs) ? kBugs[size_t(b)].sentence : "?"; }
+const char* stepOf(PortBug b) { return size_t(b) < std::size(kBugs) ? kBugs[size_t(b)].step : "?"; }
+
+PatchComparison comparePatch(const Patch& patch, const CapturedPatch* got, const CompareOptions& options,
+                             Tessellator& tess) {
+  PatchComparison c;
+  tess.tessellate(patch, options.emulator);
+  const int topology = indicesPerLine(patch);
+  const int capArity = got ? got->verticesPerPrimitive : 0;
+  const int arity = capArity == 1 ? 1 : topology;
+  if (capArity != 0 && capArity != arity)
+    throw CaptureError("patch " + std::to_string(got->patch) + ": the capture has " + std::to_string(capArity) +
+                       " vertices per primitive, topology " + toString(patch.primitive) + " has " +
+                       std::to_string(topology));
+  Verts ref;
+  outputOf(tess, arity, ref);
+  static const Verts kNone;
+  const Verts& cap = got ? got->vertices : kNone;
+  c.verticesPerPrimitive = arity;
+  c.referencePrimitives = int(ref.size()) / arity;
+  c.capturePrimitives = int(cap.size()) / arity;
+
+  if (ref.empty() || cap.empty()) {
+    if (ref.empty() && cap.empty()) return c;
+    c.kind = ref.empty() ? DifferenceKind::CulledInReference : DifferenceKind::CulledInCapture;
+  } else if (options.strictOrder && ref == cap) {
+    return c;
+  } else {
+    const auto pr = primitives(ref, arity, false), pc = primitives(cap, arity, false);
+    if (pr == pc) {
+      c.kind = options.strictOrder ? DifferenceKind::OrderDiffers : DifferenceKind::Same;
+      if (c.kind == DifferenceKind::Same) return c;
+    } else if (distinctPoints(ref) != distinctPoints(cap)) {
+      c.kind = DifferenceKind::PointsDiffer;
+    } else if (arity == 1) {
+      c.kind = DifferenceKind::Multiplicity;
+    } else if (primitives(ref, arity, true) == primitives(cap, arity, true)) {
+      c.kind = DifferenceKind::WindingOnly;
+      c.flippedTriangles = differenceSize(pc, pr);
+    } else {
+      auto ur = pr, uc = pc;
+      ur.erase(std::unique(ur.begin(), ur.end()), ur.end());
+      uc.erase(std::unique(uc.begin(), uc.end()), uc.end());
+      c.kind = ur == uc ? DifferenceKind::Multiplicity : DifferenceKind::PrimitivesDiffer;
+    }
+  }
+  if (c.kind == DifferenceKind::PointsDiffer)
+    pointDetails(patch, options.emulator, ref, cap, options.maxPointDetails, c);
+  if (options.recognise && c.kind != DifferenceKind::OrderDiffers)
+    recognise(patch, options.emulator, ref, cap, arity, tess, c);
+  return c;
+}
+
+CapturedPatch referenceCapture(const Patch& patch, int64_t index, const Options& options, bool pointList) {
+  Tessellator t;
+  t.tessellate(patch, options);
+  CapturedPatch c;
+  c.patch = index;
+  const int arity = pointList ? 1 : indicesPerLine(patch);
+  outputOf(t, arity, c.vertices);
+  c.verticesPerPrimitive = c.vertices.empty() ? 0 : arity;
+  return c;
+}
+
+void appendCsv(std::string& out, const CapturedPatch& c) {
+  char buf[96];
+  const int n = c.verticesPerPrimitive;
+  for (size_t i = 0; n > 0 && i < c.vertices.size(); ++i) {
+    std::snprintf(buf, sizeof buf, "%lld,%zu,%zu,0x%08x,0x%08x\n", static_cast<long long>(c.patch), i / size_t(n),
+                  i % size_t(n), c.vertices[i].u, c.vertices[i].v);
+    out += buf;
+  }
+}
+
+void CompareSummary::add(const PatchComparison& c, int points) {
+  ++patches;
+  pointsCompared += points;
+  ++byKind[size_t(c.kind)];
+  if (c.kind == DifferenceKind::Same) {
+    ++same;
+    return;
+  }
+  ++differing;
+  for (PortBug b : c.bugs) ++byBug[size_t(b)];
+}
+
+std::vector<PortBug> CompareSummary::explainingAll() const {
+  std::vector<PortBug> out;
+  if (differing == 0) return out;
+  for (int b = 0; b < int(PortBug::Count); ++b)
+    if (byBug[b] == differing) out.push_back(PortBug(b));
+  return out;
+}
+
+} // namespace fftess

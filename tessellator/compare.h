@@ -1,0 +1,129 @@
+// fftess compare: is another tessellator's output (a GPU driver, a compute-shader port, a translation layer) the
+// D3D11 reference's, bit for bit? And if not, which step of the 16.16 arithmetic did it get wrong?
+//
+// Usage (meshoptimizer style: plain structs in, plain structs out, no allocation you have to manage):
+//
+//   fftess::Tessellator ref;                              // or let comparePatch make its own
+//   fftess::CapturedPatch got = ...;                      // from CaptureReader (capture.h) or built by hand
+//   fftess::PatchComparison c = fftess::comparePatch(patch, &got, {}, ref);
+//   if (c.kind != fftess::DifferenceKind::Same) puts(fftess::toString(c.kind));
+//
+// What "the same" means (docs/compare.md):
+//   * default, order-insensitive: the multisets of points (point lists), of segments (unordered vertex pairs) or of
+//     triangles (each rotated so its smallest vertex comes first: the winding is kept, the first vertex is not) are
+//     equal, every coordinate compared as IEEE bits;
+//   * strictOrder: the same primitives in the same order with the same first vertex (what llvmpipe gives).
+// A capture that is a point list (one vertex per primitive) is compared with the reference's point array whatever
+// the patch's topology.
+//
+// A differing patch gets one DifferenceKind; capture points that the reference does not have get their nearest
+// reference point, the difference in 16.16 units and the step of the edge's fixed-point computation that explains
+// them (the words of `fftess explain`); and the patch is re-computed under each typical port bug (PortBug) to name
+// the ones that reproduce the capture. Findings only: nothing here decides an exit status.
+//
+// Standard library only.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "tessellator/capture.h"
+#include "tessellator/tessellator.h"
+#include "tessellator/trace.h"
+
+namespace fftess {
+
+enum class DifferenceKind : uint8_t {
+  Same,
+  CulledInCapture,   // the reference has output, the capture has none
+  CulledInReference, // the reference culls the patch, the capture has output
+  PointsDiffer,      // the sets of distinct points differ
+  Multiplicity,      // the same distinct points (or primitives), each a different number of times
+  WindingOnly,       // the same triangles up to winding
+  PrimitivesDiffer,  // the same points, different triangles (or segments)
+  OrderDiffers,      // strictOrder only: the same multisets in another order or with another first vertex
+};
+// culled_in_capture, culled_in_reference, points_differ, multiplicity, winding_only, primitives_differ,
+// order_differs, same. Any other value: "?".
+const char* toString(DifferenceKind k);
+
+// Typical bugs of a tessellator port. The whole patch is re-computed under the bug and compared with the capture.
+enum class PortBug : uint8_t {
+  FloatDivision,        // k / n in float instead of k * round(65536 / n) in 16.16 (step: reciprocal rounding)
+  NoMirroring,          // second half placed like the first, not as 1 - its mirror point (step: mirrored half)
+  NoSpecialMidpoint,    // the middle point computed instead of the exact 0.5 (step: special midpoint)
+  LerpNotRounded,       // the fractional blend kept in float, not rounded to 16.16 (step: lerp rounding)
+  FactorsNotSnapped,    // fractional factors used as floats, not rounded to 16.16 (step: rounding of fract. factors)
+  DenormalsFlushed,     // denormal factors flushed to zero before the cull test (step: denormal handling)
+  Pow2AsFractionalEven, // pow2 not mapped to integer, tessellated as fractional_even (step: pow2 partitioning)
+  Pow2AsFractionalOdd,  // pow2 partitioning not mapped to integer, tessellated as fractional_odd
+  WindingSwapped,       // GL/D3D winding swapped: GL cw is D3D triangle_ccw (step: winding)
+  Count
+};
+// float_division, no_mirroring, no_special_midpoint, lerp_not_rounded, factors_not_snapped, denormals_flushed,
+// pow2_as_fractional_even, pow2_as_fractional_odd, winding_swapped. Any other value: "?".
+const char* toString(PortBug b);
+// The bug in a sentence ("float division instead of the 16.16 reciprocal table").
+const char* describe(PortBug b);
+// The step of the edge's fixed-point computation the bug gets wrong, in `explain`'s words ("reciprocal rounding").
+const char* stepOf(PortBug b);
+
+// One capture point that the reference does not have.
+struct PointDifference {
+  CapturedVertex got;     // the capture's point (float bits)
+  CapturedVertex nearest; // the nearest reference point
+  double du = 0, dv = 0;  // got - nearest, in 16.16 units (1/65536)
+  std::string where;      // which axis and point the nearest reference coordinate is, e.g. "Ueq0 point 3 of 9"
+  std::string step;       // the step that explains the capture's value ("reciprocal rounding"), or "" if none
+  std::string detail;     // the two values and why, in a sentence
+};
+
+struct CompareOptions {
+  bool strictOrder = false;
+  Options emulator{};      // the reference's options (flushDenormals: compare with a llvmpipe-like reference)
+  int maxPointDetails = 8; // PointDifference entries per patch (the counts cover all points)
+  bool recognise = true;   // re-run the patch under each PortBug
+};
+
+struct PatchComparison {
+  DifferenceKind kind = DifferenceKind::Same;
+  int referencePrimitives = 0, capturePrimitives = 0;
+  int verticesPerPrimitive = 0;        // of the comparison (1 when the capture is a point list)
+  int missingPoints = 0;               // distinct reference points the capture lacks
+  int extraPoints = 0;                 // distinct capture points the reference lacks
+  int flippedTriangles = 0;            // WindingOnly: triangles whose winding differs
+  std::vector<PointDifference> points; // at most maxPointDetails
+  std::vector<PortBug> bugs; // the port bugs that reproduce the capture exactly (or within 2^-20 per coordinate)
+};
+
+// Compares one patch. got: null when the capture lacks the patch (treated as no output: culled in the capture).
+// Throws CaptureError when the capture's primitive size does not fit the patch's topology (message without
+// file:line: the caller adds it). tess: scratch tessellator (reused, so no allocation per patch).
+PatchComparison comparePatch(const Patch& patch, const CapturedPatch* got, const CompareOptions& options,
+                             Tessellator& tess);
+
+// The emulator's output for a patch as a capture (what a bit-exact port would write), to build test captures.
+// pointList: one vertex per point instead of the topology's primitives.
+CapturedPatch referenceCapture(const Patch& patch, int64_t index, const Options& options, bool pointList = false);
+
+// Writes a capture as CSV rows (patch,primitive,vertex,u,v with 0x bits), appended to out.
+void appendCsv(std::string& out, const CapturedPatch& c);
+
+// The value a port with bug b computes for point k of an edge whose reference placement is 'trace' (traceEdge);
+// rawFactor is the factor before 16.16 rounding (FactorsNotSnapped). Bugs that are not about one edge's points
+// return the reference value.
+float buggyEdgeParam(PortBug b, const EdgeTrace& trace, int k, float rawFactor);
+
+// Running totals over a whole comparison.
+struct CompareSummary {
+  int64_t patches = 0, same = 0, differing = 0;
+  int64_t byKind[8] = {};                  // indexed by DifferenceKind
+  int64_t byBug[int(PortBug::Count)] = {}; // differing patches each bug reproduces
+  int64_t pointsCompared = 0;
+  void add(const PatchComparison& c, int points);
+  // The bugs that reproduce every differing patch (empty when none does, or nothing differs).
+  std::vector<PortBug> explainingAll() const;
+};
+
+} // namespace fftess

@@ -1,0 +1,34 @@
+// Internal header of the comparison (compare.cpp, compare_bugs.cpp): the axes of a patch as traced edges.
+#pragma once
+
+#include "compare.h"
+#include "trace.h"
+
+namespace fftess {
+
+// One axis of a patch (an outer edge, a quad inside axis, an isoline's detail or density) as a traced edge.
+struct Axis {
+  bool valid = false;
+  const char* name = "";
+  float raw = 0; // the factor before 16.16 rounding (after the clamp)
+  EdgeTrace trace;
+};
+
+struct PatchAxes {
+  Domain domain = Domain::Quad;
+  Axis outer[4];  // quad Ueq0 Veq0 Ueq1 Veq1; tri Ueq0 Veq0 Weq0
+  Axis inside[2]; // quad insideU insideV; isoline detail (u) and density (v)
+};
+
+PatchAxes patchAxes(const Patch& patch, const Options& options);
+// The axis that gives coordinate c (0 u, 1 v) of reference vertex r, or null (tri interior points, and corners
+// unless 'corners': the corners an edge reaches by mirroring, as a port that places them like any point would).
+const Axis* axisOf(const PatchAxes& a, CapturedVertex r, int c, bool& mirrorV, bool corners = true);
+// The index of the point with these float bits on the axis, or -1.
+int pointOnAxis(const Axis& axis, uint32_t bits);
+// Reference vertex r as a port with edge bug b computes it.
+// corners: also re-place the corners an edge reaches by mirroring (else they stay: a port that writes them as
+// constants).
+CapturedVertex applyBug(const PatchAxes& a, PortBug b, CapturedVertex r, bool corners);
+
+} // namespace fftess
