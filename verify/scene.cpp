@@ -7,6 +7,7 @@
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <sys/stat.h>
 
 #include <toml++/toml.h>
 
@@ -514,6 +515,12 @@ SceneResult parseScene(const std::string& text, const std::string& sourceName,
 }
 
 SceneResult loadScene(const std::string& path, const std::vector<std::string>& overrides) {
+  struct stat st;
+  if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) {
+    SceneResult r;
+    r.error = path + ": is a directory, not a scene file";
+    return r;
+  }
   std::ifstream f(path, std::ios::binary);
   if (!f) {
     SceneResult r;
