@@ -239,7 +239,8 @@ CLI::App* addTessellate(CLI::App& app, TessellateArgs& a) {
       "  fftess tessellate --format hex patches.txt > patches.out\n"
       "  fftess tessellate --format svg -e 'tri integer triangle_cw hw 4 4 4 4 0 0' -o tri.svg");
   sub->add_option("input", a.input, "Batch file ('-' or omitted: standard input)");
-  sub->add_option("-e,--patch", a.patches, "A batch line given on the command line (repeatable; replaces INPUT)");
+  sub->add_option("-e,--patch", a.patches, "A batch line given on the command line (repeatable; replaces INPUT)")
+      ->allow_extra_args(false); // one line per -e: "-e LINE FILE" is LINE and INPUT, which exclude each other
   sub->add_option("-f,--format", a.format, "Output format")
       ->check(CLI::IsMember({"hex", "table", "obj", "svg", "hashes"}))
       ->capture_default_str();
