@@ -35,3 +35,11 @@ TEST_CASE("hostile geometry: camera generators stop when cancelled", "[verify][h
   cancel = false;
   CHECK(randomCameras(r.terrain, 5000, 1, &cancel).size() == 5000);
 }
+
+TEST_CASE("hostile input: loader errors stay on one line whatever bytes the key has", "[verify][hostile]") {
+  // Found by the scene fuzzer: an override whose key holds a newline was echoed raw.
+  const SceneResult r = parseScene("# nothing\n", "fuzz.toml", {"the edge midpoint,\n# so=1"});
+  REQUIRE_FALSE(r.ok);
+  CHECK(r.error.find('\n') == std::string::npos);
+  CHECK(r.error.find("\\x0a") != std::string::npos);
+}
