@@ -1,8 +1,11 @@
 // What accuracy costs in time, tessellator side: full tessellation vs points only vs the edge query vs the trace,
-// hw vs HLSL stage, uniform vs terrain-like factors. Run: fftess bench [--benchmark_filter=REGEX].
+// hw vs HLSL stage, uniform vs terrain-like factors, and issue 11's cases (a) and (b) (bench/cases.h).
+// Run: fftess bench --micro [--benchmark_filter=REGEX].
 #include "tessellator/names.h"
 #include "tessellator/tessellator.h"
 #include "tessellator/trace.h"
+
+#include "bench/cases.h"
 
 #include <benchmark/benchmark.h>
 
@@ -104,6 +107,31 @@ void BM_TraceEdge(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(traceEdge(44.0f, Partitioning::Integer));
 }
 BENCHMARK(BM_TraceEdge);
+
+// Issue 11's two cases, the whole patch set per iteration through one Tessellator (outputs written into its
+// buffers). Compare with Microsoft's reference side by side as docs/tessellator.md describes.
+void runCase(benchmark::State& state, const std::vector<Patch>& patches) {
+  Tessellator t;
+  int64_t points = 0;
+  for (auto _ : state) {
+    for (const Patch& p : patches) {
+      points += t.tessellate(p);
+      benchmark::DoNotOptimize(t.indices().data());
+    }
+    benchmark::ClobberMemory();
+  }
+  const double n = static_cast<double>(state.iterations()) * static_cast<double>(patches.size());
+  state.counters["patches/s"] = benchmark::Counter(n, benchmark::Counter::kIsRate);
+  state.counters["points/s"] = benchmark::Counter(static_cast<double>(points), benchmark::Counter::kIsRate);
+}
+
+// (a) 2,000 quad integer triangle_cw hw patches, all six factors 64.
+void BM_case_a_quad_integer_64(benchmark::State& state) { runCase(state, bench::caseA()); }
+BENCHMARK(BM_case_a_quad_integer_64)->Unit(benchmark::kMillisecond);
+
+// (b) 20,000 quad fractional_even triangle_cw hw patches, factors uniform in [1,16] (splitmix64, bench/cases.h).
+void BM_case_b_quad_fractional_even_1_16(benchmark::State& state) { runCase(state, bench::caseB()); }
+BENCHMARK(BM_case_b_quad_fractional_even_1_16)->Unit(benchmark::kMillisecond);
 
 } // namespace
 

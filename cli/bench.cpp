@@ -16,8 +16,10 @@ CLI::App* addBench(CLI::App& app, BenchArgs& a) {
       "bench", "Run the benchmarks (Google Benchmark): what accuracy costs in time. Extra arguments go to the "
                "benchmark program (--benchmark_filter=REGEX, --benchmark_format=json, ...)");
   sub->footer("Examples:\n"
-              "  fftess bench\n"
-              "  fftess bench --benchmark_filter=Edge --benchmark_min_time=0.2");
+              "  fftess bench --micro\n"
+              "  fftess bench --micro --benchmark_filter=case_   (issue 11's cases (a) and (b))\n"
+              "  fftess bench --micro --benchmark_filter=Edge --benchmark_min_time=0.2\n"
+              "--micro: the Google Benchmark program itself (fftess_bench); the arguments after it go to it.");
   sub->allow_extras();
   (void)a;
   return sub;
@@ -39,7 +41,9 @@ int runBench(const BenchArgs& a, const char* argv0) {
     throw UsageError("bench: " + prog + " not found: build it (cmake -DFFTESS_BENCHMARKS=ON; target fftess_bench)");
   std::vector<char*> args;
   args.push_back(const_cast<char*>(prog.c_str()));
-  for (const std::string& s : a.passThrough) args.push_back(const_cast<char*>(s.c_str()));
+  // --micro selects the Google Benchmark program (today also the default); it is not passed on.
+  for (const std::string& s : a.passThrough)
+    if (s != "--micro") args.push_back(const_cast<char*>(s.c_str()));
   args.push_back(nullptr);
   std::fflush(stdout);
   ::execv(prog.c_str(), args.data());

@@ -16,6 +16,7 @@ struct TessellateArgs {
   std::string output = "-";
   bool flushDenormals = false;
   bool keepGoing = false;
+  int threads = 1; // --threads N (0: one per hardware thread)
 };
 CLI::App* addTessellate(CLI::App& app, TessellateArgs& a);
 int runTessellate(const TessellateArgs& a);

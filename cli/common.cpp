@@ -60,6 +60,7 @@ AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
 
 AtomicFile::~AtomicFile() {
   if (fd_ >= 0) ::close(fd_);
+  if (directFd_ >= 0) ::close(directFd_);
   if (!tmp_.empty() && !published_) ::unlink(tmp_.c_str());
 }
 
@@ -93,19 +94,27 @@ void AtomicFile::publish() {
     writeStdout(buffer_);
     flushStdout();
   } else if (direct_) {
-    const int fd = ::open(target_.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
-    if (fd < 0) throw std::runtime_error("writing " + quoteToken(path_) + " failed: " + std::strerror(errno));
-    try {
-      writeAll(fd, buffer_, path_);
-    } catch (...) {
-      ::close(fd);
-      throw;
-    }
+    stream(buffer_);
+    if (directFd_ < 0) stream(std::string()); // opens it: an empty report still reaches a FIFO's reader as EOF
+    const int fd = directFd_;
+    directFd_ = -1;
     if (::close(fd) != 0) throw std::runtime_error("writing " + quoteToken(path_) + " failed: " + std::strerror(errno));
   } else if (std::rename(tmp_.c_str(), target_.c_str()) != 0) {
     throw std::runtime_error("writing " + quoteToken(path_) + " failed: " + std::strerror(errno));
   }
   published_ = true;
+}
+
+void AtomicFile::stream(const std::string& s) {
+  if (path_ == "-") {
+    writeStdout(s);
+  } else if (direct_) {
+    if (directFd_ < 0) directFd_ = ::open(target_.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
+    if (directFd_ < 0) throw std::runtime_error("writing " + quoteToken(path_) + " failed: " + std::strerror(errno));
+    writeAll(directFd_, s, path_);
+  } else {
+    writeAll(fd_, s, path_);
+  }
 }
 
 void AtomicFile::unpublish() {

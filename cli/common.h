@@ -42,13 +42,16 @@ public:
   void publish(); // rename (or the straight write); std::runtime_error on failure
   void unpublish(); // after publish(): removes a file that did not exist before (all-or-nothing of several reports)
   void commit() { write(), publish(); }
+  // Streaming instead of buffer(): s goes out now (stdout, the temporary file, or straight to a FIFO/device);
+  // commit() then completes the file. std::runtime_error naming the path on failure.
+  void stream(const std::string& s);
   const std::string& path() const { return path_; }
 
 private:
   std::string path_;   // as given (messages)
   std::string target_; // the file finally written (symlinks followed)
   std::string tmp_;    // temporary file next to target_, "" when written straight or to stdout
-  int fd_ = -1;
+  int fd_ = -1, directFd_ = -1;
   bool direct_ = false, existed_ = false, written_ = false, published_ = false;
   std::string buffer_;
 };

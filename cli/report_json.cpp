@@ -97,14 +97,19 @@ json sceneJson(const SceneArgs& a, const vf::Scene& s) {
           {"kernel", a.kernel}};
 }
 
-json checkJson(const SceneArgs& a, const vf::Terrain& terrain, const vf::Camera& cam, const vf::Report& r,
-               const vf::MeshReport* mesh) {
-  const vf::Scene& scene = terrain.scene();
+// The fields every check and sweep report starts with.
+static json reportHeader(const char* kind, const SceneArgs& a, const vf::Scene& scene) {
   json j;
   j["version"] = kReportVersion;
-  j["kind"] = "check";
+  j["kind"] = kind;
   j["fftess_version"] = FFTESS_VERSION;
   j["scene"] = sceneJson(a, scene);
+  return j;
+}
+
+json checkJson(const SceneArgs& a, const vf::Terrain& terrain, const vf::Camera& cam, const vf::Report& r,
+               const vf::MeshReport* mesh) {
+  json j = reportHeader("check", a, terrain.scene());
   j["camera"] = cameraJson(cam);
   j["stats"] = statsJson(r.stats);
   j["verdict"] = r.stats.cracks > 0 ? "cracks" : "clean";
@@ -126,12 +131,7 @@ json checkJson(const SceneArgs& a, const vf::Terrain& terrain, const vf::Camera&
 json sweepJson(const SceneArgs& a, const vf::Terrain& terrain, const std::string& camerasSource,
                const std::vector<vf::Camera>& cams, size_t requested, const vf::SweepResult& res,
                const std::vector<CauseRow>& causes) {
-  const vf::Scene& scene = terrain.scene();
-  json j;
-  j["version"] = kReportVersion;
-  j["kind"] = "sweep";
-  j["fftess_version"] = FFTESS_VERSION;
-  j["scene"] = sceneJson(a, scene);
+  json j = reportHeader("sweep", a, terrain.scene());
   j["cameras_source"] = camerasSource;
   j["cameras_total"] = requested;
   j["cameras_done"] = res.camerasDone;

@@ -4,6 +4,7 @@
 
 #include "tessellator/batch.h"
 #include "tessellator/names.h"
+#include "tessellator/parallel.h"
 #include "tessellator/tessellator.h"
 
 #include <cerrno>
@@ -14,6 +15,9 @@
 #include <fstream>
 #include <iostream>
 #include <sstream>
+#include <thread>
+#include <sys/stat.h>
+#include <unistd.h>
 
 namespace fftess::cli {
 namespace {
@@ -246,101 +250,249 @@ CLI::App* addTessellate(CLI::App& app, TessellateArgs& a) {
       ->capture_default_str();
   sub->add_option("-o,--output", a.output, "Write to FILE (atomically: temp file + rename) instead of stdout");
   sub->add_flag("--flush-denormals", a.flushDenormals, "Flush denormal factors to zero first (as llvmpipe does)");
+  sub->add_option("--threads", a.threads,
+                  "Tessellate and format hex/hashes output on N threads (0: one per hardware thread); the output is "
+                  "the same bytes for any N")
+      ->capture_default_str();
   sub->add_flag("--keep-going", a.keepGoing,
                 "Print the well-formed patches even if some lines are malformed (exit status is still 2)");
   return sub;
 }
 
-int runTessellate(const TessellateArgs& a) {
-  // Read and parse everything first: with a malformed line nothing at all is printed (unless --keep-going).
-  std::vector<std::string> lines;
-  std::string source;
-  if (!a.patches.empty()) {
-    if (a.input != "-") throw UsageError("tessellate: give either INPUT or --patch lines, not both");
-    lines = a.patches;
-    source = "--patch";
-  } else if (a.input == "-") {
-    source = "<stdin>";
-    for (std::string l; std::getline(std::cin, l);) lines.push_back(l);
-    if (std::cin.bad()) throw UsageError("tessellate: cannot read standard input");
-  } else {
-    source = a.input;
-    std::ifstream f(a.input, std::ios::binary);
-    if (!f) throw UsageError("tessellate: cannot open input '" + a.input + "': " + std::strerror(errno));
-    for (std::string l; std::getline(f, l);) lines.push_back(l);
-    if (f.bad()) throw UsageError("tessellate: cannot read input '" + a.input + "'");
+namespace {
+
+// Input lines, read twice: once to check every line (with a malformed line nothing is printed unless --keep-going),
+// once to tessellate in chunks. Files are reread; standard input is spooled to a temporary file on the first pass;
+// -e lines are kept in memory. So peak memory does not grow with the number of patches.
+class LineSource {
+public:
+  explicit LineSource(const TessellateArgs& a) {
+    if (!a.patches.empty()) {
+      if (a.input != "-") throw UsageError("tessellate: give either INPUT or --patch lines, not both");
+      memory_ = &a.patches;
+      name_ = "--patch";
+    } else if (a.input == "-") {
+      file_ = stdin;
+      name_ = "<stdin>";
+      spool_ = std::tmpfile();
+      if (!spool_) throw std::runtime_error(std::string("tessellate: no temporary file for standard input: ") +
+                                            std::strerror(errno));
+    } else {
+      name_ = a.input;
+      file_ = std::fopen(a.input.c_str(), "rb");
+      if (!file_) throw UsageError("tessellate: cannot open input '" + a.input + "': " + std::strerror(errno));
+      owned_ = true;
+    }
+  }
+  ~LineSource() {
+    std::free(buf_);
+    if (owned_ && file_) std::fclose(file_);
+    if (spool_) std::fclose(spool_);
+  }
+  LineSource(const LineSource&) = delete;
+  LineSource& operator=(const LineSource&) = delete;
+  const std::string& name() const { return name_; }
+
+  // Next line without its '\n' (as std::getline). False at the end.
+  bool next(std::string& line) {
+    if (memory_) {
+      if (pos_ >= memory_->size()) return false;
+      line = (*memory_)[pos_++];
+      return true;
+    }
+    FILE* f = secondPass_ && spool_ ? spool_ : file_;
+    const ssize_t n = ::getline(&buf_, &cap_, f);
+    if (n < 0) {
+      if (std::ferror(f))
+        throw UsageError(f == stdin ? std::string("tessellate: cannot read standard input")
+                                    : "tessellate: cannot read input '" + name_ + "'");
+      return false;
+    }
+    line.assign(buf_, size_t(n) - (n > 0 && buf_[n - 1] == '\n' ? 1 : 0));
+    if (!secondPass_ && spool_ && std::fwrite(buf_, 1, size_t(n), spool_) != size_t(n))
+      throw std::runtime_error(std::string("tessellate: spooling standard input failed: ") + std::strerror(errno));
+    return true;
+  }
+  void rewind() {
+    secondPass_ = true;
+    pos_ = 0;
+    if (spool_) std::rewind(spool_);
+    else if (file_) std::rewind(file_);
   }
 
-  std::vector<BatchPatch> patches;
-  std::vector<std::string> errors;
+private:
+  const std::vector<std::string>* memory_ = nullptr;
+  size_t pos_ = 0;
+  FILE* file_ = nullptr;
+  FILE* spool_ = nullptr;
+  bool owned_ = false;
+  bool secondPass_ = false;
+  char* buf_ = nullptr;
+  size_t cap_ = 0;
+  std::string name_;
+};
+
+// Output written as it is produced: stdout, or FILE as AtomicFile writes it (a temporary file renamed over a regular
+// FILE on commit(), a symlink followed, a FIFO or device written straight and never replaced; the path is checked
+// before any work, and nothing is left behind on failure).
+class StreamOutput {
+public:
+  explicit StreamOutput(const std::string& path) : file_(path) {}
+  void write(std::string& s) {
+    file_.stream(s);
+    s.clear();
+  }
+  void commit() {
+    file_.commit();
+    if (file_.path() == "-") flushStdout();
+  }
+
+private:
+  AtomicFile file_;
+};
+
+// A chunk is cut at this many patches or this much planned output (points + indices), whichever comes first.
+constexpr size_t kChunkPatches = 4096;
+constexpr int64_t kChunkElements = int64_t(1) << 23;
+
+void appendHashLine(std::string& out, const BatchPatch& bp, const std::string& block) {
+  char h[24];
+  std::snprintf(h, sizeof h, " %016llx\n", static_cast<unsigned long long>(fnv1a64(block)));
+  out += bp.text;
+  out += h;
+}
+
+} // namespace
+
+int runTessellate(const TessellateArgs& a) {
+  if (a.threads < 0) throw UsageError("tessellate: --threads must be >= 0 (0: one per hardware thread)");
+  LineSource source(a);
+
+  // Pass 1: check every line.
+  std::vector<std::string> errors; // the first 20
+  size_t errorCount = 0;
+  int patchCount = 0;
+  {
+    std::string line;
+    for (int lineNo = 1; source.next(line); ++lineNo) {
+      BatchPatch bp;
+      std::string err;
+      bool isPatch = false;
+      if (!parseLine(line, lineNo, source.name(), bp, err, isPatch)) {
+        if (errors.size() < 20) errors.push_back(err);
+        ++errorCount;
+        continue;
+      }
+      if (isPatch) ++patchCount;
+    }
+  }
+  for (const std::string& e : errors) std::fprintf(stderr, "fftess: error: %s\n", e.c_str());
+  if (errorCount > 20) std::fprintf(stderr, "fftess: error: ... and %zu more malformed lines\n", errorCount - 20);
+  if (errorCount > 0 && !a.keepGoing) return kExitUsage;
+
+  Options opt;
+  opt.flushDenormals = a.flushDenormals;
+  Tessellator tess;
+  StreamOutput output(a.output);
+  std::string block;
+  if (a.format == "svg") {
+    block = svgHeader(patchCount);
+    output.write(block);
+  }
+  // --threads applies to the bulk formats; table, obj and svg are for a few patches and run on this thread.
+  const bool parallel = a.threads != 1 && (a.format == "hex" || a.format == "hashes");
+  size_t vertexBase = 0;
+  int cell = 0;
+  std::vector<BatchPatch> chunk;
+  std::vector<Patch> chunkPatches;
+  std::vector<BatchSlot> slots;
+  std::vector<DomainPoint> points;
+  std::vector<int32_t> indices;
+  std::vector<std::string> parts;
+  int64_t chunkElements = 0;
+
+  auto flush = [&] {
+    if (chunk.empty()) return;
+    if (parallel) {
+      slots.resize(chunk.size());
+      const BatchTotals totals = planBatch(chunkPatches.data(), chunkPatches.size(), slots.data(), opt);
+      if (points.size() < size_t(totals.points)) points.resize(size_t(totals.points));
+      if (indices.size() < size_t(totals.indices)) indices.resize(size_t(totals.indices));
+      tessellateBatch(chunkPatches.data(), chunkPatches.size(), slots.data(), points.data(), indices.data(),
+                      a.threads, opt);
+      const int threads = a.threads > 0 ? a.threads : int(std::thread::hardware_concurrency());
+      parts.resize(size_t(threads > 0 ? threads : 1));
+      forEachBatchRange(chunk.size(), slots.data(), a.threads, [&](int t, size_t begin, size_t end) {
+        std::string& out = parts[size_t(t)];
+        std::string b;
+        for (size_t i = begin; i < end; ++i) {
+          const BatchSlot& s = slots[i];
+          if (a.format == "hex") {
+            appendHexBlock(out, chunk[i].index, chunk[i].patch, points.data() + s.firstPoint, s.points,
+                           indices.data() + s.firstIndex, s.indices);
+          } else {
+            b.clear();
+            appendHexBlock(b, chunk[i].index, chunk[i].patch, points.data() + s.firstPoint, s.points,
+                           indices.data() + s.firstIndex, s.indices);
+            appendHashLine(out, chunk[i], b);
+          }
+        }
+      });
+      for (std::string& part : parts) output.write(part);
+    } else {
+      for (const BatchPatch& bp : chunk) {
+        tess.tessellate(bp.patch, opt);
+        if (a.format == "hex") {
+          appendHexBlock(block, bp.index, bp.patch, tess);
+        } else if (a.format == "hashes") {
+          std::string b;
+          appendHexBlock(b, bp.index, bp.patch, tess);
+          appendHashLine(block, bp, b);
+        } else if (a.format == "table") {
+          formatTable(block, bp, tess);
+        } else if (a.format == "obj") {
+          formatObj(block, bp, tess, vertexBase);
+        } else {
+          formatSvgPatch(block, bp, tess, cell++);
+        }
+        output.write(block);
+      }
+    }
+    chunk.clear();
+    chunkPatches.clear();
+    chunkElements = 0;
+  };
+
+  // Pass 2: tessellate and print, chunk by chunk (malformed lines were reported; they still count as patches).
+  source.rewind();
+  std::string line;
   int patchIndex = 0;
-  for (size_t i = 0; i < lines.size(); ++i) {
+  for (int lineNo = 1; source.next(line); ++lineNo) {
     BatchPatch bp;
     std::string err;
     bool isPatch = false;
-    const int lineNo = static_cast<int>(i) + 1;
-    if (!parseLine(lines[i], lineNo, source, bp, err, isPatch)) {
-      errors.push_back(err);
+    if (!parseLine(line, lineNo, source.name(), bp, err, isPatch)) {
       ++patchIndex;
       continue;
     }
     if (!isPatch) continue;
     bp.index = patchIndex++;
-    patches.push_back(std::move(bp));
-  }
-  for (size_t i = 0; i < errors.size() && i < 20; ++i) std::fprintf(stderr, "fftess: error: %s\n", errors[i].c_str());
-  if (errors.size() > 20) std::fprintf(stderr, "fftess: error: ... and %zu more malformed lines\n", errors.size() - 20);
-  if (!errors.empty() && !a.keepGoing) return kExitUsage;
-
-  Options opt;
-  opt.flushDenormals = a.flushDenormals;
-  Tessellator tess;
-  const bool toStdout = a.output == "-";
-  AtomicFile file(a.output);
-  std::string block;
-  auto emit = [&](std::string& s) {
-    if (toStdout) {
-      writeStdout(s);
-    } else {
-      file.buffer() += s;
+    if (parallel) {
+      const OutputCounts c = outputCounts(bp.patch, opt);
+      if (!chunk.empty() && chunkElements + c.points + c.indices > kChunkElements) flush();
+      chunkElements += c.points + c.indices;
+      chunkPatches.push_back(bp.patch);
     }
-    s.clear();
-  };
-  if (a.format == "svg") {
-    block = svgHeader(static_cast<int>(patches.size()));
-    emit(block);
+    chunk.push_back(std::move(bp));
+    if (chunk.size() >= kChunkPatches) flush();
   }
-  size_t vertexBase = 0;
-  int cell = 0;
-  for (const BatchPatch& bp : patches) {
-    tess.tessellate(bp.patch, opt);
-    if (a.format == "hex") {
-      appendHexBlock(block, bp.index, bp.patch, tess);
-    } else if (a.format == "hashes") {
-      std::string b;
-      appendHexBlock(b, bp.index, bp.patch, tess);
-      char h[24];
-      std::snprintf(h, sizeof h, " %016llx\n", static_cast<unsigned long long>(fnv1a64(b)));
-      block = bp.text + h;
-    } else if (a.format == "table") {
-      formatTable(block, bp, tess);
-    } else if (a.format == "obj") {
-      formatObj(block, bp, tess, vertexBase);
-    } else {
-      formatSvgPatch(block, bp, tess, cell++);
-    }
-    emit(block);
-  }
+  flush();
   if (a.format == "svg") {
     block = "</svg>\n";
-    emit(block);
+    output.write(block);
   }
-  if (toStdout) {
-    if (std::fflush(stdout) != 0) throw std::runtime_error(std::string("writing to stdout failed: ") + std::strerror(errno));
-  } else {
-    file.commit();
-  }
-  return errors.empty() ? kExitClean : kExitUsage;
+  output.commit();
+  return errorCount == 0 ? kExitClean : kExitUsage;
 }
 
 } // namespace fftess::cli

@@ -11,10 +11,7 @@ PatchLod screenSphere(const Patch& patch, const Camera& camera, const ScreenSphe
   return detail::fromGlsl(r, Scheme::ScreenSphere);
 }
 
-} // namespace fftess::lod
-
-namespace fftess::lod {
-
+// The deliberately broken negative control (every edge's sphere at the patch centre): screen_sphere.glsl too.
 PatchLod patchCenter(const Patch& patch, const Camera& camera, const ScreenSphereParams& params) {
   const glm::vec3* c = patch.corners;
   glsl::LodResult r = glsl::patchCenterLod(c[0], c[1], c[2], c[3], patch.useHeightBounds, patch.minHeight,

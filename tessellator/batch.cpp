@@ -137,20 +137,24 @@ int indicesPerLine(const Patch& patch) {
 }
 
 void appendHexBlock(std::string& out, int n, const Patch& patch, const Tessellator& result) {
-  const auto& pts = result.points();
-  const auto& idx = result.indices();
-  out += "patch " + std::to_string(n) + " points " + std::to_string(pts.size()) + " indices " +
-         std::to_string(idx.size()) + "\n";
-  for (const DomainPoint& p : pts) {
-    appendHex8(out, fx::bitsOf(p.u));
+  appendHexBlock(out, n, patch, result.points().data(), int(result.points().size()), result.indices().data(),
+                 int(result.indices().size()));
+}
+
+void appendHexBlock(std::string& out, int n, const Patch& patch, const DomainPoint* points, int numPoints,
+                    const int32_t* indices, int numIndices) {
+  out += "patch " + std::to_string(n) + " points " + std::to_string(numPoints) + " indices " +
+         std::to_string(numIndices) + "\n";
+  for (int k = 0; k < numPoints; ++k) {
+    appendHex8(out, fx::bitsOf(points[k].u));
     out += ' ';
-    appendHex8(out, fx::bitsOf(p.v));
+    appendHex8(out, fx::bitsOf(points[k].v));
     out += '\n';
   }
-  const size_t per = size_t(indicesPerLine(patch));
-  for (size_t i = 0; i < idx.size(); ++i) {
-    out += std::to_string(idx[i]);
-    out += ((i + 1) % per == 0 || i + 1 == idx.size()) ? '\n' : ' ';
+  const int per = indicesPerLine(patch);
+  for (int i = 0; i < numIndices; ++i) {
+    out += std::to_string(indices[i]);
+    out += ((i + 1) % per == 0 || i + 1 == numIndices) ? '\n' : ' ';
   }
 }
 

@@ -43,6 +43,10 @@ const char* factorName(Domain domain, int i);
 
 // Appends the output block of one tessellated patch (index n) to out, exactly as the golden .out files.
 void appendHexBlock(std::string& out, int n, const Patch& patch, const Tessellator& result);
+// The same from one patch's part of packed batch arrays (tessellator/parallel.h): numPoints points, numIndices
+// indices.
+void appendHexBlock(std::string& out, int n, const Patch& patch, const DomainPoint* points, int numPoints,
+                    const int32_t* indices, int numIndices);
 
 // Number of indices per output line for this patch's topology (3, 2 or 1).
 int indicesPerLine(const Patch& patch);

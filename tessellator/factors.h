@@ -10,7 +10,7 @@ namespace fftess {
 struct FactorRange {
   float lower, upper;
 };
-// D3D11.3 spec 11.7.4: integer and pow2 [1,64], fractional_even [2,64], fractional_odd [1,63].
+// D3D11.3 spec 11.7.10 / 11.7.11.2: integer and pow2 [1,64], fractional_even [2,64], fractional_odd [1,63].
 FactorRange hardwareRange(Partitioning p);
 inline bool isIntegerLike(Partitioning p) { return p == Partitioning::Integer || p == Partitioning::Pow2; }
 

@@ -54,7 +54,7 @@ inline float d3dMin(float a, float b) {
   return fa < fb ? a : b;
 }
 
-// ---- Tessellation factor ranges (D3D11.3 spec 11.7.3 / 11.7.4). ----
+// ---- Tessellation factor ranges (D3D11.3 spec 11.7.10 / 11.7.11.2). ----
 constexpr float kMinOddFactor = 1.0f;
 constexpr float kMaxOddFactor = 63.0f;
 constexpr float kMinEvenFactor = 2.0f;

@@ -12,4 +12,8 @@ void generateQuad(const ProcessedQuad& q, bool triangles, MeshWriter& out);
 void generateTri(const ProcessedTri& t, bool triangles, MeshWriter& out);
 void generateIsoline(const ProcessedIsoline& l, bool points, MeshWriter& out);
 
+// Tessellator::tessellate into caller buffers of at least outputCounts(patch, options) elements (parallel.cpp).
+// Returns the number of points.
+int tessellateInto(const Patch& patch, const Options& options, DomainPoint* points, int32_t* indices);
+
 } // namespace fftess

@@ -4,6 +4,7 @@
 
 namespace fftess {
 
+// D3D11.3 11.6 / 11.7.8: lines of constant v from v = 0, uniformly spaced, never at v = 1.
 void generateIsoline(const ProcessedIsoline& l, bool points, MeshWriter& out) {
   if (l.culled) return;
   const int perLine = l.detail.numPoints;

@@ -2,7 +2,6 @@
 #include "tessellator.h"
 
 #include <cstring>
-#include <memory>
 
 #include "generate.h"
 
@@ -11,7 +10,8 @@ namespace {
 
 bool isTriangles(OutputPrimitive p) { return p == OutputPrimitive::TriangleCw || p == OutputPrimitive::TriangleCcw; }
 
-// Factors as the hardware stage receives them: options applied, then the HLSL stage if asked.
+// Factors as the hardware stage receives them: options applied, then the HLSL stage if asked (D3D11.3 11.7.2,
+// 11.7.7.1: inside reduction and pow2 rounding are the HLSL compiler's shader code, not the hardware's).
 void hardwareFactors(const Patch& patch, const Options& options, float out[6], HlslFactors* hlsl) {
   if (patch.stage.hlsl) {
     const HlslFactors h = processHlslFactors(patch.domain, patch.partitioning, patch.stage, patch.factors, options);
@@ -35,14 +35,77 @@ void trivialIndices(OutputPrimitive prim, MeshWriter& out) {
   }
 }
 
-struct Scratch {
-  std::unique_ptr<DomainPoint[]> points{new DomainPoint[kMaxPoints]};
-  std::unique_ptr<int32_t[]> indices{new int32_t[kMaxIndices]};
-};
+int finishCounts(const OutputCounts& c, int triangleCount, OutputPrimitive primitive) {
+  if (isTriangles(primitive)) return 3 * triangleCount;
+  if (primitive == OutputPrimitive::Point) return c.points;
+  return c.points > 0 ? 2 * (c.points - 1) : 0;
+}
 
-Scratch& scratch() {
-  thread_local Scratch s;
-  return s;
+// Closed-form output sizes of processed factors (independent of the generation code).
+OutputCounts quadCounts(const ProcessedQuad& q, OutputPrimitive primitive) {
+  OutputCounts c;
+  if (q.culled) return c;
+  int triangleCount = 0;
+  if (q.minimum) {
+    c.points = 4;
+    triangleCount = 2;
+  } else {
+    const int n[2] = {q.inside[0].numPoints, q.inside[1].numPoints};
+    c.points = (n[0] - 2) * (n[1] - 2) - 4;
+    int rowPoints[4];
+    for (int e = 0; e < 4; ++e) {
+      c.points += q.outer[e].numPoints;
+      rowPoints[e] = q.outer[e].numPoints;
+    }
+    const int rings = ((n[0] + 1) >> 1) < ((n[1] + 1) >> 1) ? (n[0] + 1) >> 1 : (n[1] + 1) >> 1;
+    for (int ring = 1; ring < rings; ++ring)
+      for (int e = 0; e < 4; ++e) {
+        const int inside = n[(e + 1) & 1] - 2 * ring;
+        triangleCount += inside + rowPoints[e] - 2;
+        rowPoints[e] = inside;
+      }
+    if (n[0] > n[1] && q.inside[1].odd)
+      triangleCount += 2 * ((((n[0] >> 1) - (n[1] >> 1)) << 1) + (q.inside[0].odd ? 1 : 2));
+    else if (n[1] >= n[0] && q.inside[0].odd)
+      triangleCount += 2 * ((((n[1] >> 1) - (n[0] >> 1)) << 1) + (q.inside[1].odd ? 1 : 2));
+  }
+  c.indices = finishCounts(c, triangleCount, primitive);
+  return c;
+}
+
+OutputCounts triCounts(const ProcessedTri& t, OutputPrimitive primitive) {
+  OutputCounts c;
+  if (t.culled) return c;
+  int triangleCount = 0;
+  if (t.minimum) {
+    c.points = 3;
+    triangleCount = 1;
+  } else {
+    const int n = t.inside.numPoints;
+    const int r = (n >> 1) - 1;
+    c.points = -3 + (t.inside.odd ? 3 * (r * (r + 1) - r) : 3 * r * (r + 1) + 1);
+    int rowPoints[3];
+    for (int e = 0; e < 3; ++e) {
+      c.points += t.outer[e].numPoints;
+      rowPoints[e] = t.outer[e].numPoints;
+    }
+    for (int ring = 1; ring < (n + 1) >> 1; ++ring)
+      for (int e = 0; e < 3; ++e) {
+        triangleCount += n - 2 * ring + rowPoints[e] - 2;
+        rowPoints[e] = n - 2 * ring;
+      }
+    if (t.inside.odd) triangleCount += 1;
+  }
+  c.indices = finishCounts(c, triangleCount, primitive);
+  return c;
+}
+
+OutputCounts isolineCounts(const ProcessedIsoline& l, OutputPrimitive primitive) {
+  OutputCounts c;
+  if (l.culled) return c;
+  c.points = l.numLines * l.detail.numPoints;
+  c.indices = primitive == OutputPrimitive::Point ? c.points : l.numLines * (l.detail.numPoints - 1) * 2;
+  return c;
 }
 
 } // namespace
@@ -52,32 +115,60 @@ Tessellator::Tessellator() {
   indices_.reserve(kMaxIndices);
 }
 
-int Tessellator::tessellate(const Patch& patch, const Options& options) {
+namespace {
+
+// Factors through both stages, sizes from the closed-form counts, then generation into the buffers that
+// prepare(counts, writer) points the writer at.
+template <class Prepare>
+int tessellateWith(const Patch& patch, const Options& options, HlslFactors* hlsl, Prepare&& prepare) {
   float f[6];
-  hardwareFactors(patch, options, f, &hlsl_);
-  Scratch& s = scratch();
-  MeshWriter out;
-  out.points = s.points.get();
-  out.indices = s.indices.get();
-  out.ccw = patch.primitive == OutputPrimitive::TriangleCcw;
+  hardwareFactors(patch, options, f, hlsl);
   const bool triangles = isTriangles(patch.primitive);
+  MeshWriter out;
+  out.ccw = patch.primitive == OutputPrimitive::TriangleCcw;
   switch (patch.domain) {
-  case Domain::Quad:
-    generateQuad(processQuadFactors(f, patch.partitioning), triangles, out);
+  case Domain::Quad: {
+    const ProcessedQuad q = processQuadFactors(f, patch.partitioning);
+    prepare(quadCounts(q, patch.primitive), out);
+    generateQuad(q, triangles, out);
     if (!triangles) trivialIndices(patch.primitive, out);
-    break;
-  case Domain::Tri:
-    generateTri(processTriFactors(f, patch.partitioning), triangles, out);
-    if (!triangles) trivialIndices(patch.primitive, out);
-    break;
-  case Domain::Isoline:
-    generateIsoline(processIsolineFactors(f[IsolineDensity], f[IsolineDetail], patch.partitioning),
-                    patch.primitive == OutputPrimitive::Point, out);
     break;
   }
-  points_.assign(out.points, out.points + out.numPoints);
-  indices_.assign(out.indices, out.indices + out.numIndices);
+  case Domain::Tri: {
+    const ProcessedTri t = processTriFactors(f, patch.partitioning);
+    prepare(triCounts(t, patch.primitive), out);
+    generateTri(t, triangles, out);
+    if (!triangles) trivialIndices(patch.primitive, out);
+    break;
+  }
+  case Domain::Isoline: {
+    const ProcessedIsoline l = processIsolineFactors(f[IsolineDensity], f[IsolineDetail], patch.partitioning);
+    prepare(isolineCounts(l, patch.primitive), out);
+    generateIsoline(l, patch.primitive == OutputPrimitive::Point, out);
+    break;
+  }
+  }
   return out.numPoints;
+}
+
+} // namespace
+
+// The output is written once, straight into points_ / indices_: their sizes come first from the closed-form
+// counts (resize within the reserved capacity never allocates, and only zero-fills what grows).
+int Tessellator::tessellate(const Patch& patch, const Options& options) {
+  return tessellateWith(patch, options, &hlsl_, [this](const OutputCounts& c, MeshWriter& out) {
+    points_.resize(size_t(c.points));
+    indices_.resize(size_t(c.indices));
+    out.points = points_.data();
+    out.indices = indices_.data();
+  });
+}
+
+int tessellateInto(const Patch& patch, const Options& options, DomainPoint* points, int32_t* indices) {
+  return tessellateWith(patch, options, nullptr, [&](const OutputCounts&, MeshWriter& out) {
+    out.points = points;
+    out.indices = indices;
+  });
 }
 
 // ---------------------------------------------------------------------------------------------------------------
@@ -106,77 +197,14 @@ EdgePoints edgePoints(float factor, Partitioning partitioning, const Stage& stag
 OutputCounts outputCounts(const Patch& patch, const Options& options) {
   float f[6];
   hardwareFactors(patch, options, f, nullptr);
-  OutputCounts c;
-  const bool triangles = isTriangles(patch.primitive);
-  int triangleCount = 0;
   switch (patch.domain) {
-  case Domain::Quad: {
-    const ProcessedQuad q = processQuadFactors(f, patch.partitioning);
-    if (q.culled) return c;
-    if (q.minimum) {
-      c.points = 4;
-      triangleCount = 2;
-      break;
-    }
-    const int n[2] = {q.inside[0].numPoints, q.inside[1].numPoints};
-    c.points = (n[0] - 2) * (n[1] - 2) - 4;
-    int rowPoints[4];
-    for (int e = 0; e < 4; ++e) {
-      c.points += q.outer[e].numPoints;
-      rowPoints[e] = q.outer[e].numPoints;
-    }
-    const int rings = ((n[0] + 1) >> 1) < ((n[1] + 1) >> 1) ? (n[0] + 1) >> 1 : (n[1] + 1) >> 1;
-    for (int ring = 1; ring < rings; ++ring)
-      for (int e = 0; e < 4; ++e) {
-        const int inside = n[(e + 1) & 1] - 2 * ring;
-        triangleCount += inside + rowPoints[e] - 2;
-        rowPoints[e] = inside;
-      }
-    if (n[0] > n[1] && q.inside[1].odd)
-      triangleCount += 2 * ((((n[0] >> 1) - (n[1] >> 1)) << 1) + (q.inside[0].odd ? 1 : 2));
-    else if (n[1] >= n[0] && q.inside[0].odd)
-      triangleCount += 2 * ((((n[1] >> 1) - (n[0] >> 1)) << 1) + (q.inside[1].odd ? 1 : 2));
-    break;
+  case Domain::Quad: return quadCounts(processQuadFactors(f, patch.partitioning), patch.primitive);
+  case Domain::Tri: return triCounts(processTriFactors(f, patch.partitioning), patch.primitive);
+  case Domain::Isoline:
+    return isolineCounts(processIsolineFactors(f[IsolineDensity], f[IsolineDetail], patch.partitioning),
+                         patch.primitive);
   }
-  case Domain::Tri: {
-    const ProcessedTri t = processTriFactors(f, patch.partitioning);
-    if (t.culled) return c;
-    if (t.minimum) {
-      c.points = 3;
-      triangleCount = 1;
-      break;
-    }
-    const int n = t.inside.numPoints;
-    const int r = (n >> 1) - 1;
-    c.points = -3 + (t.inside.odd ? 3 * (r * (r + 1) - r) : 3 * r * (r + 1) + 1);
-    int rowPoints[3];
-    for (int e = 0; e < 3; ++e) {
-      c.points += t.outer[e].numPoints;
-      rowPoints[e] = t.outer[e].numPoints;
-    }
-    for (int ring = 1; ring < (n + 1) >> 1; ++ring)
-      for (int e = 0; e < 3; ++e) {
-        triangleCount += n - 2 * ring + rowPoints[e] - 2;
-        rowPoints[e] = n - 2 * ring;
-      }
-    if (t.inside.odd) triangleCount += 1;
-    break;
-  }
-  case Domain::Isoline: {
-    const ProcessedIsoline l = processIsolineFactors(f[IsolineDensity], f[IsolineDetail], patch.partitioning);
-    if (l.culled) return c;
-    c.points = l.numLines * l.detail.numPoints;
-    c.indices = patch.primitive == OutputPrimitive::Point ? c.points : l.numLines * (l.detail.numPoints - 1) * 2;
-    return c;
-  }
-  }
-  if (triangles)
-    c.indices = 3 * triangleCount;
-  else if (patch.primitive == OutputPrimitive::Point)
-    c.indices = c.points;
-  else
-    c.indices = c.points > 0 ? 2 * (c.points - 1) : 0;
-  return c;
+  return {};
 }
 
 } // namespace fftess

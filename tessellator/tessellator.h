@@ -16,7 +16,9 @@
 // denormals, negatives and values above 64. See docs/tessellator.md for the list of surprising inputs.
 //
 // Buffers: Tessellator owns reusable output buffers sized for the largest patch once, at construction; tessellating
-// a patch never allocates. Edge queries return fixed-size values (no allocation at all).
+// a patch allocates nothing, except that each thread keeps index templates of recent patch shapes, each slot
+// allocated once on first use (at most ~4.5 MB per thread). Edge queries and traces return fixed-size values (no
+// allocation at all). Many patches on several threads into caller-owned arrays: tessellator/parallel.h.
 //
 // Beside the contract, in their own headers: tessellator/names.h (the batch-format names of the enums, parsing and
 // printing), tessellator/trace.h (every 16.16 step of one outer edge, for `fftess explain`),

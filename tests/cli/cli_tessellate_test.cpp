@@ -162,3 +162,24 @@ TEST_CASE("tessellate: NaN, infinities and denormals given as bits", "[cli][tess
   REQUIRE(r.status == 0);
   CHECK(r.out.find("Ueq0=inf") != std::string::npos);
 }
+
+TEST_CASE("tessellate --threads N prints the same bytes as one thread", "[cli][tessellate][golden]") {
+  for (const char* stem : {"quad-hw", "tri-hlsl", "isoline-hw"}) {
+    INFO(stem);
+    const std::string expected = clitest::readFile(clitest::golden(std::string(stem) + ".out"));
+    for (const char* threads : {"2", "3", "0"}) {
+      INFO("--threads " << threads);
+      const auto r = run({"tessellate", "--format", "hex", "--threads", threads, clitest::golden(std::string(stem) + ".in")});
+      REQUIRE(r.status == 0);
+      CHECK(r.out == expected);
+    }
+  }
+  const std::string batch = "quad integer triangle_cw hw 4 4 4 4 4 4\nbad line\ntri pow2 point hw 3 3 3 3 0 0\n";
+  const auto one = run({"tessellate", "--format", "hashes", "--keep-going"}, batch);
+  const auto two = run({"tessellate", "--format", "hashes", "--keep-going", "--threads", "2"}, batch);
+  CHECK(one.status == 2);
+  CHECK(two.status == 2);
+  CHECK(one.out == two.out);
+  CHECK(countLinesStartingWith(two.out, "quad ") == 1);
+  CHECK(run({"tessellate", "--threads", "-1", "-e", "quad integer point hw 1 1 1 1 1 1"}).status == 2);
+}
