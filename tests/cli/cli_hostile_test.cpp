@@ -13,6 +13,7 @@
 #include <cstring>
 #include <fcntl.h>
 #include <string>
+#include <sys/mount.h>
 #include <sys/stat.h>
 #include <sys/sysmacros.h>
 #include <unistd.h>
@@ -216,4 +217,28 @@ TEST_CASE("hostile: outputs to symlinks, FIFOs and devices are followed or writt
     CHECK(isCharDevice(full));
   }
   CHECK(noTempFiles(d));
+}
+
+TEST_CASE("hostile: a disk that fills up while reports are written: exit 3, the path named, nothing left behind",
+          "[cli][hostile]") {
+  // A 4 KiB tmpfs of our own; skipped where this process may not mount one.
+  const std::string d = scratch("diskfull");
+  if (::mount("tmpfs", d.c_str(), "tmpfs", 0, "size=4k") != 0) {
+    WARN("skipped: cannot mount a small tmpfs here (" << std::strerror(errno) << ")");
+    return;
+  }
+  const std::string js = d + "/r.json", svg = d + "/r.svg", out = d + "/t.txt";
+  // Many findings: the JSON is far larger than the disk.
+  auto r = run({"check", kScene, "-q", "--set", "lod.adjacency_clamp=integer", "--json", js, "--svg", svg});
+  CHECK(r.status == 3);
+  CHECK(r.err.find(js) != std::string::npos);
+  CHECK(clitest::listDir(d).empty()); // no partial JSON, no SVG either (all or nothing), no temporary file
+  r = run({"sweep", kScene, "--orbit", "4", "-q", "--set", "lod.adjacency_clamp=integer", "--json", js});
+  CHECK(r.status == 3);
+  CHECK(clitest::listDir(d).empty());
+  r = run({"tessellate", "-e", "quad integer triangle_cw hw 64 64 64 64 64 64", "--format", "hex", "-o", out});
+  CHECK(r.status == 3);
+  CHECK(r.err.find(out) != std::string::npos);
+  CHECK(clitest::listDir(d).empty());
+  ::umount(d.c_str());
 }
