@@ -1,6 +1,8 @@
 #include "common.h"
 
+#include <atomic>
 #include <cerrno>
+#include <csignal>
 #include <cstdlib>
 #include <cmath>
 #include <cstdio>
@@ -20,6 +22,37 @@ std::string dirOf(const std::string& p) {
 }
 
 bool under(const std::string& p, const char* dir) { return p.compare(0, std::strlen(dir), dir) == 0; }
+
+// Temporary files alive now, for the signal handler (async-signal-safe: fixed buffers, atomics, unlink).
+constexpr int kMaxTemps = 16;
+char gTemps[kMaxTemps][4096];
+std::atomic<bool> gTempUsed[kMaxTemps];
+
+extern "C" void onFatalSignal(int sig) {
+  for (int i = 0; i < kMaxTemps; ++i)
+    if (gTempUsed[i].load()) ::unlink(gTemps[i]);
+  std::signal(sig, SIG_DFL);
+  std::raise(sig);
+}
+
+int registerTemp(const std::string& path) { // from the main thread only
+  if (path.size() >= sizeof gTemps[0]) return -1;
+  for (int i = 0; i < kMaxTemps; ++i) {
+    if (gTempUsed[i].load()) continue;
+    std::memcpy(gTemps[i], path.c_str(), path.size() + 1);
+    gTempUsed[i].store(true);
+    for (int sig : {SIGINT, SIGTERM, SIGHUP}) { // only where nobody else handles the signal
+      struct sigaction old;
+      if (::sigaction(sig, nullptr, &old) == 0 && old.sa_handler == SIG_DFL) std::signal(sig, onFatalSignal);
+    }
+    return i;
+  }
+  return -1;
+}
+
+void unregisterTemp(int slot) {
+  if (slot >= 0) gTempUsed[slot].store(false);
+}
 
 [[noreturn]] void cannotWrite(const std::string& path, const std::string& why) {
   throw UsageError("cannot write " + quoteToken(path) + ": " + why);
@@ -56,12 +89,16 @@ AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
   fd_ = ::mkstemp(name.data());
   if (fd_ < 0) cannotWrite(path_, std::strerror(errno));
   tmp_ = name;
+  tempSlot_ = registerTemp(tmp_);
 }
+
+SignalHandler removeTempsAndDie() { return onFatalSignal; }
 
 AtomicFile::~AtomicFile() {
   if (fd_ >= 0) ::close(fd_);
   if (directFd_ >= 0) ::close(directFd_);
   if (!tmp_.empty() && !published_) ::unlink(tmp_.c_str());
+  unregisterTemp(tempSlot_);
 }
 
 static void writeAll(int fd, const std::string& data, const std::string& path) {
@@ -101,6 +138,9 @@ void AtomicFile::publish() {
     if (::close(fd) != 0) throw std::runtime_error("writing " + quoteToken(path_) + " failed: " + std::strerror(errno));
   } else if (std::rename(tmp_.c_str(), target_.c_str()) != 0) {
     throw std::runtime_error("writing " + quoteToken(path_) + " failed: " + std::strerror(errno));
+  } else {
+    unregisterTemp(tempSlot_); // renamed: the name is the report now, a signal must not remove it
+    tempSlot_ = -1;
   }
   published_ = true;
 }

@@ -51,10 +51,15 @@ private:
   std::string path_;   // as given (messages)
   std::string target_; // the file finally written (symlinks followed)
   std::string tmp_;    // temporary file next to target_, "" when written straight or to stdout
-  int fd_ = -1, directFd_ = -1;
+  int fd_ = -1, directFd_ = -1, tempSlot_ = -1;
   bool direct_ = false, existed_ = false, written_ = false, published_ = false;
   std::string buffer_;
 };
+
+// Temporary report files are also removed when a signal ends the process (SIGINT without InterruptGuard, or the second
+// one with it; SIGTERM, SIGHUP): the handler unlinks them and re-raises the signal with its default action.
+using SignalHandler = void (*)(int);
+SignalHandler removeTempsAndDie();
 
 // Writes several reports all or nothing: every temporary file is written first, then all are published; if one
 // fails, the ones already published that did not exist before are removed and the error is rethrown.

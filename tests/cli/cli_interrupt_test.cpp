@@ -115,3 +115,16 @@ TEST_CASE("interrupt: Ctrl-C while a report is written does not cut it short", "
   CHECK(clitest::readFile(svg).find("</svg>") != std::string::npos);
   CHECK(noTempFiles(d));
 }
+
+TEST_CASE("interrupt: Ctrl-C kills check without leaving temporary files",
+          "[cli][interrupt]") {
+  // The report paths are claimed (temporary files made) before the work, so a signal must remove them.
+  const std::string d = scratch("sigint-kill");
+  const std::string scene = clitest::source("docs/examples/terrain.toml");
+  clitest::RunOptions o;
+  o.sigintAfter = 0.15;
+  const auto r = runWith({"check", scene, "--mesh", "--json", d + "/c.json", "--svg", d + "/c.svg"}, o);
+  REQUIRE(r.interrupted);
+  CHECK(r.status == 130);
+  CHECK(clitest::listDir(d).empty());
+}
