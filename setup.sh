@@ -4,6 +4,10 @@
 #   bash setup.sh test   install, build, run the whole test suite (ctest), then a second build with ASan+UBSan
 #                        (build-sanitize/) and the tests not labelled slow under it
 #   bash setup.sh build  install and build only
+#   bash setup.sh fuzz   also install clang; build both libFuzzer targets (build-fuzz/) and run each on its seed
+#                        corpus for FUZZ_RUNS inputs (default 100000). CI does not run this: its short fuzz run is
+#                        the replay ctests (fuzz_*_replay: corpus + fixed mutations), which the sanitizer build of
+#                        `test` runs under ASan+UBSan with g++.
 # Environment: BUILD_DIR (default build), BUILD_TYPE (default Release), JOBS (default: all cores),
 #   SANITIZE (default 1; 0 skips the sanitizer build of `test`), SANITIZE_DIR (default build-sanitize).
 set -euo pipefail
@@ -54,7 +58,26 @@ sanitize_tests() {
   UBSAN_OPTIONS=print_stacktrace=1 ctest --test-dir "$SANITIZE_DIR" --output-on-failure -j "$JOBS" -LE slow
 }
 
+fuzz() {
+  packages+=(clang libclang-rt-14-dev)
+  install_packages
+  cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang \
+    -DCMAKE_CXX_COMPILER=clang++ -DFFTESS_FUZZ=ON -DFFTESS_TESTS=OFF -DFFTESS_BENCHMARKS=OFF
+  cmake --build build-fuzz -j "$JOBS" --target fuzz_tessellator fuzz_scene
+  local runs=${FUZZ_RUNS:-100000} work
+  work=$(mktemp -d)
+  cp tessellator/fuzz_corpus/* "$work"/ 2>/dev/null || true
+  build-fuzz/tessellator/fuzz_tessellator -runs="$runs" "$work"
+  rm -rf "$work" && work=$(mktemp -d)
+  cp verify/fuzz_corpus/* "$work"/
+  build-fuzz/verify/fuzz_scene -runs="$runs" -timeout=20 -rss_limit_mb=4096 "$work"
+  rm -rf "$work"
+}
+
 case "$mode" in
+  fuzz)
+    fuzz
+    ;;
   build)
     install_packages
     build
@@ -84,7 +107,7 @@ case "$mode" in
     if [ "$SANITIZE" != 0 ]; then sanitize_tests; fi
     ;;
   *)
-    echo "usage: bash setup.sh [run|test|build]" >&2
+    echo "usage: bash setup.sh [run|test|build|fuzz]" >&2
     exit 2
     ;;
 esac

@@ -26,6 +26,8 @@ CLI::App* addCheck(CLI::App& app, CheckArgs& a) {
 }
 
 int runCheck(const CheckArgs& a) {
+  if (a.show < 0) throw UsageError("--show " + std::to_string(a.show) + ": must be >= 0");
+  ReportFiles reports(a); // output paths are checked before the work
   const vf::Terrain terrain = load(a); // the one terrain build of this command
   const vf::Scene& scene = terrain.scene();
   vf::Camera cam = scene.camera;
@@ -81,9 +83,11 @@ int runCheck(const CheckArgs& a) {
   if (!a.quiet && !jsonToStdout)
     text += std::string("verdict: ") + (r.stats.cracks > 0 ? "CRACKS" : r.stats.tJunctions > 0 ? "watertight now (T-junctions)" : "watertight") + "\n";
   // Reports first (atomically), then the text: a failure writing a report leaves no partial file.
-  if (!a.json.empty()) writeReport(a.json, checkJson(a, terrain, cam, r, a.mesh ? &mesh : nullptr).dump(2) + "\n");
-  if (!a.svg.empty()) writeReport(a.svg, checkSvg(terrain, r, "fftess check " + a.scene));
+  if (!a.json.empty()) reports.setJson(checkJson(a, terrain, cam, r, a.mesh ? &mesh : nullptr).dump(2) + "\n");
+  if (!a.svg.empty()) reports.setSvg(checkSvg(terrain, r, "fftess check " + a.scene));
+  reports.commit(); // all or nothing
   writeStdout(text);
+  flushStdout();
   return status;
 }
 

@@ -28,8 +28,8 @@ struct CheckArgs : SceneArgs {
 };
 
 struct SweepArgs : SceneArgs {
-  int orbit = 0, flyover = 0, random = 0;
-  uint64_t seed = 1;
+  int orbit = -1, flyover = -1, random = -1; // -1: not given; given counts must be >= 1
+  std::string seed = "1";                     // --seed: a decimal 0 .. 2^64-1, checked by runSweep
   int threads = 0;
   std::string label;   // --label TEXT: name printed in the summary (default: the scene name)
 };

@@ -1,53 +1,175 @@
 #include "common.h"
 
+#include <atomic>
 #include <cerrno>
+#include <csignal>
 #include <cstdlib>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 namespace fftess::cli {
 
-AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {}
+namespace {
 
-AtomicFile::~AtomicFile() = default; // nothing is on disk until commit(): the temp file only lives inside commit()
+std::string dirOf(const std::string& p) {
+  const size_t slash = p.find_last_of('/');
+  if (slash == std::string::npos) return ".";
+  return slash == 0 ? "/" : p.substr(0, slash);
+}
 
-void AtomicFile::commit() {
-  if (committed_) return;
-  committed_ = true;
-  if (path_ == "-") {
-    writeStdout(buffer_);
-    return;
+bool under(const std::string& p, const char* dir) { return p.compare(0, std::strlen(dir), dir) == 0; }
+
+// Temporary files alive now, for the signal handler (async-signal-safe: fixed buffers, atomics, unlink).
+constexpr int kMaxTemps = 16;
+char gTemps[kMaxTemps][4096];
+std::atomic<bool> gTempUsed[kMaxTemps];
+
+extern "C" void onFatalSignal(int sig) {
+  for (int i = 0; i < kMaxTemps; ++i)
+    if (gTempUsed[i].load()) ::unlink(gTemps[i]);
+  std::signal(sig, SIG_DFL);
+  std::raise(sig);
+}
+
+int registerTemp(const std::string& path) { // from the main thread only
+  if (path.size() >= sizeof gTemps[0]) return -1;
+  for (int i = 0; i < kMaxTemps; ++i) {
+    if (gTempUsed[i].load()) continue;
+    std::memcpy(gTemps[i], path.c_str(), path.size() + 1);
+    gTempUsed[i].store(true);
+    for (int sig : {SIGINT, SIGTERM, SIGHUP}) { // only where nobody else handles the signal
+      struct sigaction old;
+      if (::sigaction(sig, nullptr, &old) == 0 && old.sa_handler == SIG_DFL) std::signal(sig, onFatalSignal);
+    }
+    return i;
   }
-  std::string tmpl = path_ + ".tmp.XXXXXX";
-  std::string name(tmpl);
-  int fd = ::mkstemp(name.data());
-  if (fd < 0)
-    throw UsageError("cannot write '" + path_ + "': " + std::strerror(errno));
+  return -1;
+}
+
+void unregisterTemp(int slot) {
+  if (slot >= 0) gTempUsed[slot].store(false);
+}
+
+[[noreturn]] void cannotWrite(const std::string& path, const std::string& why) {
+  throw UsageError("cannot write " + quoteToken(path) + ": " + why);
+}
+
+} // namespace
+
+AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
+  if (path_ == "-") return;
+  if (path_.empty()) cannotWrite(path_, "empty path");
+  // Follow symlinks ourselves (a dangling link names the file to create); never rename over the link.
+  target_ = path_;
+  for (int hops = 0;; ++hops) {
+    struct stat st;
+    if (::lstat(target_.c_str(), &st) != 0 || !S_ISLNK(st.st_mode)) break;
+    if (hops >= 40) cannotWrite(path_, "too many levels of symbolic links");
+    std::string link(4096, '\0');
+    const ssize_t n = ::readlink(target_.c_str(), link.data(), link.size());
+    if (n < 0 || static_cast<size_t>(n) >= link.size()) cannotWrite(path_, std::strerror(errno));
+    link.resize(static_cast<size_t>(n));
+    if (under(target_, "/proc/") || under(target_, "/dev/")) break; // magic links (/dev/stdout): open them as they are
+    target_ = link.front() == '/' ? link : dirOf(target_) + "/" + link;
+  }
+  struct stat st;
+  if (::stat(target_.c_str(), &st) == 0) {
+    existed_ = true;
+    if (S_ISDIR(st.st_mode)) cannotWrite(path_, "is a directory");
+    direct_ = !S_ISREG(st.st_mode) || under(target_, "/dev/") || under(target_, "/proc/");
+    if (direct_) return; // FIFO, device, socket, /dev/stdout: written straight at publish(), never replaced
+  } else if (errno != ENOENT) {
+    cannotWrite(path_, std::strerror(errno));
+  }
+  std::string name = target_ + ".tmp.XXXXXX";
+  fd_ = ::mkstemp(name.data());
+  if (fd_ < 0) cannotWrite(path_, std::strerror(errno));
+  tmp_ = name;
+  tempSlot_ = registerTemp(tmp_);
+}
+
+SignalHandler removeTempsAndDie() { return onFatalSignal; }
+
+AtomicFile::~AtomicFile() {
+  if (fd_ >= 0) ::close(fd_);
+  if (directFd_ >= 0) ::close(directFd_);
+  if (!tmp_.empty() && !published_) ::unlink(tmp_.c_str());
+  unregisterTemp(tempSlot_);
+}
+
+static void writeAll(int fd, const std::string& data, const std::string& path) {
   size_t done = 0;
-  while (done < buffer_.size()) {
-    ssize_t n = ::write(fd, buffer_.data() + done, buffer_.size() - done);
+  while (done < data.size()) {
+    const ssize_t n = ::write(fd, data.data() + done, data.size() - done);
     if (n < 0) {
       if (errno == EINTR) continue;
-      int e = errno;
-      ::close(fd);
-      ::unlink(name.c_str());
-      throw std::runtime_error("writing '" + path_ + "' failed: " + std::strerror(e));
+      throw std::runtime_error("writing " + quoteToken(path) + " failed: " + std::strerror(errno));
     }
     done += static_cast<size_t>(n);
   }
-  ::fchmod(fd, 0644);
-  if (::close(fd) != 0) {
-    int e = errno;
-    ::unlink(name.c_str());
-    throw std::runtime_error("writing '" + path_ + "' failed: " + std::strerror(e));
+}
+
+void AtomicFile::write() {
+  if (written_) return;
+  written_ = true;
+  if (fd_ < 0) return; // stdout or a straight write: at publish()
+  writeAll(fd_, buffer_, path_);
+  ::fchmod(fd_, 0644);
+  const int rc = ::close(fd_);
+  fd_ = -1;
+  if (rc != 0) throw std::runtime_error("writing " + quoteToken(path_) + " failed: " + std::strerror(errno));
+}
+
+void AtomicFile::publish() {
+  write();
+  if (published_) return;
+  if (path_ == "-") {
+    writeStdout(buffer_);
+    flushStdout();
+  } else if (direct_) {
+    stream(buffer_);
+    if (directFd_ < 0) stream(std::string()); // opens it: an empty report still reaches a FIFO's reader as EOF
+    const int fd = directFd_;
+    directFd_ = -1;
+    if (::close(fd) != 0) throw std::runtime_error("writing " + quoteToken(path_) + " failed: " + std::strerror(errno));
+  } else if (std::rename(tmp_.c_str(), target_.c_str()) != 0) {
+    throw std::runtime_error("writing " + quoteToken(path_) + " failed: " + std::strerror(errno));
+  } else {
+    unregisterTemp(tempSlot_); // renamed: the name is the report now, a signal must not remove it
+    tempSlot_ = -1;
   }
-  if (std::rename(name.c_str(), path_.c_str()) != 0) {
-    int e = errno;
-    ::unlink(name.c_str());
-    throw UsageError("cannot write '" + path_ + "': " + std::strerror(e));
+  published_ = true;
+}
+
+void AtomicFile::stream(const std::string& s) {
+  if (path_ == "-") {
+    writeStdout(s);
+  } else if (direct_) {
+    if (directFd_ < 0) directFd_ = ::open(target_.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
+    if (directFd_ < 0) throw std::runtime_error("writing " + quoteToken(path_) + " failed: " + std::strerror(errno));
+    writeAll(directFd_, s, path_);
+  } else {
+    writeAll(fd_, s, path_);
+  }
+}
+
+void AtomicFile::unpublish() {
+  if (published_ && !direct_ && !existed_ && path_ != "-") ::unlink(target_.c_str());
+}
+
+void commitAll(AtomicFile* const* files, size_t count) {
+  for (size_t i = 0; i < count; ++i) files[i]->write();
+  for (size_t i = 0; i < count; ++i) {
+    try {
+      files[i]->publish();
+    } catch (...) {
+      for (size_t k = 0; k < i; ++k) files[k]->unpublish();
+      throw;
+    }
   }
 }
 
@@ -55,6 +177,12 @@ void writeStdout(const std::string& s) {
   if (s.empty()) return;
   if (std::fwrite(s.data(), 1, s.size(), stdout) != s.size())
     throw std::runtime_error(std::string("writing to stdout failed: ") + std::strerror(errno));
+}
+
+void flushStdout() {
+  errno = 0;
+  if (std::fflush(stdout) != 0 || std::ferror(stdout))
+    throw std::runtime_error(std::string("writing to stdout failed: ") + std::strerror(errno ? errno : EIO));
 }
 
 uint32_t floatBits(float f) {
@@ -99,19 +227,46 @@ std::string fractionOf65536(int64_t units2) {
   return s + "/65536";
 }
 
-std::string quoteToken(const std::string& s) {
-  std::string out = "'";
-  for (unsigned char c : s) {
-    if (c < 0x20 || c == 0x7f) {
+UsageError::UsageError(const std::string& what) : std::runtime_error(printable(what)) {}
+
+// Length of the valid UTF-8 sequence at s[i] (no overlongs, no surrogates, <= U+10FFFF), 0 if invalid.
+static size_t utf8Length(const std::string& s, size_t i) {
+  const auto b = [&](size_t k) { return static_cast<unsigned char>(s[k]); };
+  const unsigned char c = b(i);
+  size_t n = c >= 0xc2 && c <= 0xdf ? 2 : c >= 0xe0 && c <= 0xef ? 3 : c >= 0xf0 && c <= 0xf4 ? 4 : 0;
+  if (n == 0 || i + n > s.size()) return 0;
+  for (size_t k = 1; k < n; ++k)
+    if ((b(i + k) & 0xc0) != 0x80) return 0;
+  if (c == 0xe0 && b(i + 1) < 0xa0) return 0; // overlong
+  if (c == 0xed && b(i + 1) >= 0xa0) return 0; // surrogate
+  if (c == 0xf0 && b(i + 1) < 0x90) return 0; // overlong
+  if (c == 0xf4 && b(i + 1) >= 0x90) return 0; // > U+10FFFF
+  return n;
+}
+
+std::string printable(const std::string& s, size_t maxBytes) {
+  std::string out;
+  size_t i = 0;
+  for (; i < s.size() && out.size() < maxBytes;) {
+    const unsigned char c = static_cast<unsigned char>(s[i]);
+    if (c >= 0x20 && c < 0x7f) {
+      out += static_cast<char>(c);
+      ++i;
+    } else if (const size_t n = c >= 0x80 ? utf8Length(s, i) : 0) {
+      out.append(s, i, n);
+      i += n;
+    } else {
       char buf[8];
       std::snprintf(buf, sizeof buf, "\\x%02x", c);
       out += buf;
-    } else {
-      out += static_cast<char>(c);
+      ++i;
     }
   }
-  return out + "'";
+  if (i < s.size()) out += "... (" + std::to_string(s.size()) + " bytes)";
+  return out;
 }
+
+std::string quoteToken(const std::string& s) { return "'" + printable(s, 80) + "'"; }
 
 std::string xmlEscape(const std::string& s) {
   std::string o;

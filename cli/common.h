@@ -16,13 +16,21 @@ enum ExitStatus : int {
 };
 
 // Bad usage or bad input; what() is the complete one-line reason (argument name or file:line, and the bad token).
+// Bad bytes never reach the terminal: the message goes through printable().
 struct UsageError : std::runtime_error {
-  using std::runtime_error::runtime_error;
+  explicit UsageError(const std::string& what);
 };
 
-// Writes a report to PATH.tmp.XXXXXX next to PATH and renames it over PATH on commit(); a writer destroyed without
-// commit() removes its temporary file, so a failed or interrupted run never leaves a partial report behind.
-// PATH "-" means stdout (written at commit()).
+// s with control bytes and bytes that are not UTF-8 escaped as \xHH, cut after maxBytes with "... (N bytes)".
+std::string printable(const std::string& s, size_t maxBytes = 1000);
+
+// A report file written all or nothing. The constructor checks PATH before any work is done (UsageError naming the
+// path: missing directory, a directory, a path under a regular file, ...) and, for a regular file or a new path,
+// creates PATH.tmp.XXXXXX in the directory of the file PATH finally names (symlinks are followed: the link stays and
+// its target is replaced atomically). write() puts the buffer into that temp file, publish() renames it over the
+// target. Anything that is not a regular file (a FIFO, a character device, /dev/stdout, anything under /dev or
+// /proc) is never replaced: it is opened and written straight at publish(). A writer destroyed unpublished removes its
+// temporary file, so a failed or interrupted run never leaves a partial report behind. PATH "-" means stdout.
 class AtomicFile {
 public:
   explicit AtomicFile(std::string path);
@@ -30,17 +38,37 @@ public:
   AtomicFile(const AtomicFile&) = delete;
   AtomicFile& operator=(const AtomicFile&) = delete;
   std::string& buffer() { return buffer_; }
-  void commit(); // throws std::runtime_error on I/O failure (-> exit 3) and UsageError if the directory is unusable
+  void write();   // the buffer into the temporary file; std::runtime_error naming the path on I/O failure (-> exit 3)
+  void publish(); // rename (or the straight write); std::runtime_error on failure
+  void unpublish(); // after publish(): removes a file that did not exist before (all-or-nothing of several reports)
+  void commit() { write(), publish(); }
+  // Streaming instead of buffer(): s goes out now (stdout, the temporary file, or straight to a FIFO/device);
+  // commit() then completes the file. std::runtime_error naming the path on failure.
+  void stream(const std::string& s);
   const std::string& path() const { return path_; }
 
 private:
-  std::string path_;
+  std::string path_;   // as given (messages)
+  std::string target_; // the file finally written (symlinks followed)
+  std::string tmp_;    // temporary file next to target_, "" when written straight or to stdout
+  int fd_ = -1, directFd_ = -1, tempSlot_ = -1;
+  bool direct_ = false, existed_ = false, written_ = false, published_ = false;
   std::string buffer_;
-  bool committed_ = false;
 };
+
+// Temporary report files are also removed when a signal ends the process (SIGINT without InterruptGuard, or the second
+// one with it; SIGTERM, SIGHUP): the handler unlinks them and re-raises the signal with its default action.
+using SignalHandler = void (*)(int);
+SignalHandler removeTempsAndDie();
+
+// Writes several reports all or nothing: every temporary file is written first, then all are published; if one
+// fails, the ones already published that did not exist before are removed and the error is rethrown.
+void commitAll(AtomicFile* const* files, size_t count);
 
 // Writes all of s to stdout at once (one fwrite per call, so a patch block is never half-written by us).
 void writeStdout(const std::string& s);
+// Flushes stdout; std::runtime_error ("writing to stdout failed: ...", exit 3) if any write to it failed.
+void flushStdout();
 
 uint32_t floatBits(float f);
 std::string hex8(uint32_t v);                 // 8 lowercase hex digits
@@ -48,7 +76,7 @@ std::string formatFloat(float f);             // shortest round-trip decimal (%.
 std::string formatNumber(double v);           // for human text: up to 6 significant digits
 std::string fixed16(uint32_t v);              // 16.16 value as 0xHHHHHHHH
 std::string fractionOf65536(int64_t units2);  // value given in 1/131072 units -> "k/65536" with .5 when needed
-std::string quoteToken(const std::string& s); // 'token' with control characters escaped
+std::string quoteToken(const std::string& s); // 'token', escaped as printable(), tokens over 80 bytes cut
 std::string xmlEscape(const std::string& s);  // & < > " as XML entities (SVG text and attributes)
 
 // Factor tokens, batch lines and the hex output format: tessellator/batch.h (fftess::parseFactor and friends).

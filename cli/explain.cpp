@@ -350,7 +350,9 @@ int runExplain(const ExplainArgs& a) {
     throw UsageError("explain: --partitioning " + quoteToken(a.partitioning) + " is not a partitioning");
   Stage stage;
   if (!parseStage(a.stage.c_str(), stage)) throw UsageError("explain: --stage " + quoteToken(a.stage) + " is not a stage");
-  return a.whyPow2 ? whyPow2(a, part, stage) : explainPair(a, part, stage);
+  const int status = a.whyPow2 ? whyPow2(a, part, stage) : explainPair(a, part, stage);
+  flushStdout(); // a stdout that cannot be written is an error (exit 3), not a silent success
+  return status;
 }
 
 } // namespace fftess::cli

@@ -145,10 +145,19 @@ std::string statsText(const vf::Stats& s) {
   return o;
 }
 // ---- shared plumbing ---------------------------------------------------------------------------------------------
-void writeReport(const std::string& path, const std::string& text) {
-  AtomicFile f(path);
-  f.buffer() = text;
-  f.commit();
+ReportFiles::ReportFiles(const SceneArgs& a) {
+  if (!a.json.empty() && !a.svg.empty() && a.json == a.svg && a.json != "-")
+    throw UsageError("--json and --svg name the same file " + quoteToken(a.json));
+  if (!a.json.empty()) json_ = std::make_unique<AtomicFile>(a.json);
+  if (!a.svg.empty()) svg_ = std::make_unique<AtomicFile>(a.svg);
+}
+
+void ReportFiles::commit() {
+  AtomicFile* files[2];
+  size_t n = 0;
+  if (json_) files[n++] = json_.get();
+  if (svg_) files[n++] = svg_.get();
+  commitAll(files, n);
 }
 
 int verdictStatus(const SceneArgs& a, const vf::Stats& s) {

@@ -3,9 +3,11 @@
 #pragma once
 
 #include "check.h"
+#include "common.h"
 
 #include "verify/verify.h"
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -37,6 +39,18 @@ vf::Terrain load(const SceneArgs& a);
 vf::CheckOptions checkOptions(const SceneArgs& a);        // --kernel, --flush-denormals
 void addSceneOptions(CLI::App* sub, SceneArgs& a);
 int verdictStatus(const SceneArgs& a, const vf::Stats& s); // kExitFindings on cracks (and T-junctions if asked)
-void writeReport(const std::string& path, const std::string& text); // atomically (AtomicFile)
+
+// The --json and --svg reports of one command: both paths are checked when this is built (before the work:
+// UsageError naming the path), and commit() writes both all or nothing (AtomicFile, commitAll).
+class ReportFiles {
+public:
+  explicit ReportFiles(const SceneArgs& a);
+  void setJson(std::string text) { if (json_) json_->buffer() = std::move(text); }
+  void setSvg(std::string text) { if (svg_) svg_->buffer() = std::move(text); }
+  void commit();
+
+private:
+  std::unique_ptr<AtomicFile> json_, svg_;
+};
 
 } // namespace fftess::cli

@@ -1,5 +1,6 @@
 // Progress bar and Ctrl-C handling (progress.h).
 #include "progress.h"
+#include "common.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,7 +14,7 @@ namespace {
 std::atomic<bool> gCancel{false};
 extern "C" void onSigint(int) {
   gCancel.store(true);
-  std::signal(SIGINT, SIG_DFL);
+  std::signal(SIGINT, removeTempsAndDie()); // the second Ctrl-C kills, and removes temporary report files first
 }
 
 } // namespace

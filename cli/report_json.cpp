@@ -129,12 +129,14 @@ json checkJson(const SceneArgs& a, const vf::Terrain& terrain, const vf::Camera&
 }
 
 json sweepJson(const SceneArgs& a, const vf::Terrain& terrain, const std::string& camerasSource,
-               const std::vector<vf::Camera>& cams, const vf::SweepResult& res, const std::vector<CauseRow>& causes) {
+               const std::vector<vf::Camera>& cams, size_t requested, const vf::SweepResult& res,
+               const std::vector<CauseRow>& causes) {
   json j = reportHeader("sweep", a, terrain.scene());
   j["cameras_source"] = camerasSource;
-  j["cameras_total"] = cams.size();
+  j["cameras_total"] = requested;
   j["cameras_done"] = res.camerasDone;
   j["cancelled"] = res.cancelled;
+  if (res.cancelled) j["cameras_not_done"] = requested - res.camerasDone; // not listed one by one
   j["stats"] = statsJson(res.total);
   j["verdict"] = res.total.cracks > 0 ? "cracks" : "clean";
   json cs = json::array();
@@ -144,6 +146,7 @@ json sweepJson(const SceneArgs& a, const vf::Terrain& terrain, const std::string
   j["causes"] = cs;
   json cl = json::array();
   for (const vf::CameraResult& c : res.cameras) {
+    if (!c.done) continue; // an interrupted sweep lists only the cameras it checked
     json jc;
     jc["index"] = c.cameraIndex;
     jc["eye"] = vec3Json(cams[c.cameraIndex].eye);

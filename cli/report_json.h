@@ -40,6 +40,7 @@ json checkJson(const SceneArgs& a, const vf::Terrain& terrain, const vf::Camera&
                const vf::MeshReport* mesh);
 // The whole report of `fftess sweep`.
 json sweepJson(const SceneArgs& a, const vf::Terrain& terrain, const std::string& camerasSource,
-               const std::vector<vf::Camera>& cams, const vf::SweepResult& res, const std::vector<CauseRow>& causes);
+               const std::vector<vf::Camera>& cams, size_t requested, const vf::SweepResult& res,
+               const std::vector<CauseRow>& causes); // requested: cameras asked for (more than cams if interrupted)
 
 } // namespace fftess::cli

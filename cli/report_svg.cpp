@@ -198,6 +198,7 @@ std::string sweepSvg(const vf::Terrain& terrain, const std::vector<vf::Camera>& 
   }
   o += "<g id=\"cameras\">\n";
   for (const vf::CameraResult& c : res.cameras) {
+    if (!c.done) continue; // an interrupted sweep draws the cameras it checked
     const vf::Camera& cam = cams[c.cameraIndex];
     const char* cls = !c.done ? "p" : c.stats.cracks > 0 ? "bad" : c.stats.tJunctions > 0 ? "warn" : "ok";
     std::snprintf(buf, sizeof buf, "<circle class=\"%s\" cx=\"%.2f\" cy=\"%.2f\" r=\"3\"><title>camera %zu: %lld cracks</title></circle>\n",

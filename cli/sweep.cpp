@@ -87,44 +87,65 @@ CLI::App* addSweep(CLI::App& app, SweepArgs& a) {
 // Cameras when the scene has no [[camera_path]] and no generator option is given.
 constexpr int kDefaultFlyover = 200;
 
+// --seed: all decimal digits, 0 .. 2^64-1 (no sign, no wrap-around, no saturation).
+static uint64_t parseSeed(const std::string& text) {
+  uint64_t v = 0;
+  bool ok = !text.empty() && text.size() <= 20;
+  for (char c : text) {
+    if (!ok) break;
+    const unsigned d = static_cast<unsigned>(c - '0');
+    ok = c >= '0' && c <= '9' && v <= (UINT64_MAX - d) / 10;
+    v = v * 10 + d;
+  }
+  if (!ok) throw UsageError("--seed " + quoteToken(text) + ": expected a whole number from 0 to 18446744073709551615");
+  return v;
+}
+
 int runSweep(const SweepArgs& a) {
-  const int generators = (a.orbit > 0) + (a.flyover > 0) + (a.random > 0);
+  const int generators = (a.orbit >= 0) + (a.flyover >= 0) + (a.random >= 0);
   if (generators > 1) throw UsageError("sweep: give only one of --orbit, --flyover, --random");
-  if (a.orbit < 0 || a.flyover < 0 || a.random < 0) throw UsageError("sweep: camera counts must be positive");
+  if (a.orbit == 0 || a.orbit < -1) throw UsageError("--orbit " + std::to_string(a.orbit) + ": must be >= 1");
+  if (a.flyover == 0 || a.flyover < -1) throw UsageError("--flyover " + std::to_string(a.flyover) + ": must be >= 1");
+  if (a.random == 0 || a.random < -1) throw UsageError("--random " + std::to_string(a.random) + ": must be >= 1");
   if (a.threads < 0) throw UsageError("--threads " + std::to_string(a.threads) + ": must be >= 0");
+  const uint64_t seed = parseSeed(a.seed);
+  ReportFiles reports(a); // output paths are checked before the work
   const vf::Terrain terrain = load(a); // the one terrain build of this command
   const vf::Scene& scene = terrain.scene();
   vf::CheckOptions opt = checkOptions(a);
   opt.maxFindings = static_cast<size_t>(-1); // every finding reaches onReport, so the cause counts are complete
+  // Ctrl-C from here on (camera generation, the sweep, the reports) stops the work; the summary and reports of what
+  // was done are still written. A second Ctrl-C kills the process.
+  InterruptGuard interrupts;
+  const std::atomic<bool>* cancel = InterruptGuard::flag();
   std::vector<vf::Camera> cams;
   std::string how;
-  if (a.orbit > 0) cams = vf::orbitCameras(terrain, a.orbit), how = "orbit of " + std::to_string(a.orbit);
-  else if (a.flyover > 0) cams = vf::flyoverCameras(terrain, a.flyover), how = "flyover of " + std::to_string(a.flyover);
+  size_t requested = 0;
+  if (a.orbit > 0) cams = vf::orbitCameras(terrain, a.orbit, 0, 0, cancel), how = "orbit of " + std::to_string(a.orbit), requested = size_t(a.orbit);
+  else if (a.flyover > 0) cams = vf::flyoverCameras(terrain, a.flyover, 0, cancel), how = "flyover of " + std::to_string(a.flyover), requested = size_t(a.flyover);
   else if (a.random > 0)
-    cams = vf::randomCameras(terrain, a.random, a.seed), how = std::to_string(a.random) + " random, seed " + std::to_string(a.seed);
+    cams = vf::randomCameras(terrain, a.random, seed, cancel), how = std::to_string(a.random) + " random, seed " + std::to_string(seed), requested = size_t(a.random);
   else if (!scene.cameraPath.empty()) cams = vf::pathCameras(terrain), how = "the scene's camera path";
-  else cams = vf::flyoverCameras(terrain, kDefaultFlyover), how = "flyover of " + std::to_string(kDefaultFlyover) + ", the scene has no camera path";
+  else cams = vf::flyoverCameras(terrain, kDefaultFlyover, 0, cancel), how = "flyover of " + std::to_string(kDefaultFlyover) + ", the scene has no camera path";
+  if (requested == 0) requested = cams.size();
   const bool jsonToStdout = a.json == "-";
   const bool talk = !a.quiet && !jsonToStdout;
   const std::string label = a.label.empty() ? (scene.name.empty() ? a.scene : scene.name) : a.label;
 
   // Progress on stderr: a bar on a terminal, a plain line every few seconds otherwise, nothing with --quiet.
-  // Progress on stderr: a bar on a terminal, a plain line every few seconds otherwise, nothing with --quiet.
   Progress progress("cameras");
   vf::SweepOptions so;
   so.threads = a.threads;
-  so.cancel = InterruptGuard::flag();
+  so.cancel = cancel;
   if (talk) so.progress = [&progress](size_t done, size_t total) { progress.report(done, total); };
   CauseTally tally;
   so.onReport = [&tally](size_t camera, const vf::Report& r) { tally.add(camera, r); };
+  if (talk)
+    std::fprintf(stderr, "fftess sweep %s: %s, %zu cameras (%s)\n", a.scene.c_str(), label.c_str(), requested,
+                 how.c_str());
   vf::SweepResult res;
-  {
-    InterruptGuard interrupts;
-    if (talk)
-      std::fprintf(stderr, "fftess sweep %s: %s, %zu cameras (%s)\n", a.scene.c_str(), label.c_str(), cams.size(),
-                   how.c_str());
-    res = vf::sweep(terrain, cams, opt, so);
-  }
+  if (!cancel->load()) res = vf::sweep(terrain, cams, opt, so); // else interrupted during camera generation
+  res.cancelled = res.cancelled || cams.size() < requested; // interrupted while the cameras were generated
   progress.finish();
   const double elapsed = progress.elapsed();
 
@@ -145,7 +166,7 @@ int runSweep(const SweepArgs& a) {
             (scene.lod.screenSphere.clamp == vf::AdjacencyClamp::Pow2 ? " (the power-of-two workaround on)" : "") + " ==\n";
     for (const std::string& s : overridesOf(a)) text += "  --set " + s + "\n";
     std::snprintf(buf, sizeof buf, "  cameras        %zu of %zu%s (%s, %.1f s, %s threads)\n", res.camerasDone,
-                  cams.size(), res.cancelled ? " (interrupted)" : "", how.c_str(), elapsed,
+                  requested, res.cancelled ? " (interrupted)" : "", how.c_str(), elapsed,
                   a.threads > 0 ? std::to_string(a.threads).c_str() : "all");
     text += buf;
     text += "  adjacency      " + std::string(vf::toString(scene.lod.screenSphere.clamp)) + " clamp, " +
@@ -180,14 +201,16 @@ int runSweep(const SweepArgs& a) {
       const CauseInfo& c = causes.at(k);
       rows.push_back({k, c.findings, c.cameras, c.first, c.detail});
     }
-    writeReport(a.json, sweepJson(a, terrain, how, cams, res, rows).dump(2) + "\n");
+    reports.setJson(sweepJson(a, terrain, how, cams, requested, res, rows).dump(2) + "\n");
   }
   if (!a.svg.empty()) {
     std::vector<size_t> firsts;
     for (const std::string& k : order) firsts.push_back(causes.at(k).first);
-    writeReport(a.svg, sweepSvg(terrain, cams, res, firsts, a.random > 0, "fftess sweep " + a.scene));
+    reports.setSvg(sweepSvg(terrain, cams, res, firsts, a.random > 0, "fftess sweep " + a.scene));
   }
+  reports.commit(); // all or nothing
   writeStdout(text);
+  flushStdout();
   return status;
 }
 

@@ -243,7 +243,8 @@ CLI::App* addTessellate(CLI::App& app, TessellateArgs& a) {
       "  fftess tessellate --format hex patches.txt > patches.out\n"
       "  fftess tessellate --format svg -e 'tri integer triangle_cw hw 4 4 4 4 0 0' -o tri.svg");
   sub->add_option("input", a.input, "Batch file ('-' or omitted: standard input)");
-  sub->add_option("-e,--patch", a.patches, "A batch line given on the command line (repeatable; replaces INPUT)");
+  sub->add_option("-e,--patch", a.patches, "A batch line given on the command line (repeatable; replaces INPUT)")
+      ->allow_extra_args(false); // one line per -e: "-e LINE FILE" is LINE and INPUT, which exclude each other
   sub->add_option("-f,--format", a.format, "Output format")
       ->check(CLI::IsMember({"hex", "table", "obj", "svg", "hashes"}))
       ->capture_default_str();
@@ -331,65 +332,23 @@ private:
   std::string name_;
 };
 
-// Output written as it is produced: stdout, or FILE through a temporary file in the same folder that replaces FILE
-// on commit() (nothing is left behind on failure).
+// Output written as it is produced: stdout, or FILE as AtomicFile writes it (a temporary file renamed over a regular
+// FILE on commit(), a symlink followed, a FIFO or device written straight and never replaced; the path is checked
+// before any work, and nothing is left behind on failure).
 class StreamOutput {
 public:
-  explicit StreamOutput(std::string path) : path_(std::move(path)) {
-    if (path_ == "-") return;
-    tmp_ = path_ + ".tmp.XXXXXX";
-    fd_ = ::mkstemp(tmp_.data());
-    if (fd_ < 0) throw UsageError("cannot write '" + path_ + "': " + std::strerror(errno));
-  }
-  ~StreamOutput() {
-    if (fd_ >= 0) {
-      ::close(fd_);
-      ::unlink(tmp_.c_str());
-    }
-  }
-  StreamOutput(const StreamOutput&) = delete;
-  StreamOutput& operator=(const StreamOutput&) = delete;
-
+  explicit StreamOutput(const std::string& path) : file_(path) {}
   void write(std::string& s) {
-    if (fd_ < 0) {
-      writeStdout(s);
-    } else {
-      size_t done = 0;
-      while (done < s.size()) {
-        const ssize_t n = ::write(fd_, s.data() + done, s.size() - done);
-        if (n < 0) {
-          if (errno == EINTR) continue;
-          throw std::runtime_error("writing '" + path_ + "' failed: " + std::strerror(errno));
-        }
-        done += size_t(n);
-      }
-    }
+    file_.stream(s);
     s.clear();
   }
   void commit() {
-    if (fd_ < 0) {
-      if (std::fflush(stdout) != 0)
-        throw std::runtime_error(std::string("writing to stdout failed: ") + std::strerror(errno));
-      return;
-    }
-    ::fchmod(fd_, 0644);
-    const int fd = fd_;
-    fd_ = -1;
-    if (::close(fd) != 0) {
-      const int e = errno;
-      ::unlink(tmp_.c_str());
-      throw std::runtime_error("writing '" + path_ + "' failed: " + std::strerror(e));
-    }
-    if (std::rename(tmp_.c_str(), path_.c_str()) != 0) {
-      const int e = errno;
-      ::unlink(tmp_.c_str());
-      throw UsageError("cannot write '" + path_ + "': " + std::strerror(e));
-    }
+    file_.commit();
+    if (file_.path() == "-") flushStdout();
   }
 
 private:
-  std::string path_, tmp_;
-  int fd_ = -1;
+  AtomicFile file_;
 };
 
 // A chunk is cut at this many patches or this much planned output (points + indices), whichever comes first.

@@ -118,7 +118,7 @@ bool parseBatchLine(const std::string& line, Patch& patch, BatchError& err) {
   if (t.size() < 4) return fail(4, "", "missing stage (expected " + kStages + ")");
   if (!parseStage(t[3].c_str(), p.stage)) return fail(4, t[3], "unknown stage (expected " + kStages + ")");
   if (t.size() < 10)
-    return fail(int(t.size()) + 1, "",
+    return fail(int(t.size()), t.back(), // the last token there is, so the message names one
                 "expected 6 factors after the stage, got " + std::to_string(t.size() - 4) + " (format: " + kFormat + ")");
   if (t.size() > 10) return fail(11, t[10], "extra token after the 6 factors");
   for (int i = 0; i < 6; ++i) {

@@ -39,6 +39,9 @@ struct Rng {
   double uniform() { return static_cast<double>(next() >> 11) * (1.0 / 9007199254740992.0); } // [0, 1)
 };
 
+// Checked every 4096 cameras: cheap, and a Ctrl-C is seen within milliseconds.
+bool cancelled(const std::atomic<bool>* cancel, int i) { return cancel && (i & 4095) == 0 && cancel->load(); }
+
 } // namespace
 
 std::vector<Camera> pathCameras(const Terrain& terrain) {
@@ -47,12 +50,13 @@ std::vector<Camera> pathCameras(const Terrain& terrain) {
   return {scene.camera};
 }
 
-std::vector<Camera> orbitCameras(const Terrain& terrain, int count, float radius, float height) {
+std::vector<Camera> orbitCameras(const Terrain& terrain, int count, float radius, float height,
+                                 const std::atomic<bool>* cancel) {
   const Geometry g = geometry(terrain);
   const double r = radius > 0 ? radius : 0.5 * g.size;
   const double h = height > 0 ? height : 0.25 * r;
   std::vector<Camera> out;
-  for (int i = 0; i < count; ++i) {
+  for (int i = 0; i < count && !cancelled(cancel, i); ++i) {
     const double a = 2 * kPi * i / std::max(count, 1);
     out.push_back(like(terrain, glm::vec3{float(g.cx + r * std::cos(a)), float(h), float(g.cz + r * std::sin(a))},
                        glm::vec3{float(g.cx), 0.0f, float(g.cz)}));
@@ -60,12 +64,12 @@ std::vector<Camera> orbitCameras(const Terrain& terrain, int count, float radius
   return out;
 }
 
-std::vector<Camera> flyoverCameras(const Terrain& terrain, int count, float height) {
+std::vector<Camera> flyoverCameras(const Terrain& terrain, int count, float height, const std::atomic<bool>* cancel) {
   const Geometry g = geometry(terrain);
   const double h = height > 0 ? height : 0.02 * g.size + std::fabs(double(terrain.scene().displacement.heightScale));
   std::vector<Camera> out;
   const double half = 0.5 * g.size, step = 0.05 * g.size;
-  for (int i = 0; i < count; ++i) {
+  for (int i = 0; i < count && !cancelled(cancel, i); ++i) {
     const double s = count > 1 ? double(i) / (count - 1) : 0.5;
     const double x = g.cx - half + s * g.size, z = g.cz - half + s * g.size;
     out.push_back(like(terrain, glm::vec3{float(x), float(h), float(z)},
@@ -74,11 +78,11 @@ std::vector<Camera> flyoverCameras(const Terrain& terrain, int count, float heig
   return out;
 }
 
-std::vector<Camera> randomCameras(const Terrain& terrain, int count, uint64_t seed) {
+std::vector<Camera> randomCameras(const Terrain& terrain, int count, uint64_t seed, const std::atomic<bool>* cancel) {
   const Geometry g = geometry(terrain);
   Rng rng{seed};
   std::vector<Camera> out;
-  for (int i = 0; i < count; ++i) {
+  for (int i = 0; i < count && !cancelled(cancel, i); ++i) {
     const double x = g.cx + (rng.uniform() - 0.5) * g.size;
     const double z = g.cz + (rng.uniform() - 0.5) * g.size;
     const double h = (1.0 - rng.uniform()) * 0.25 * g.size; // (0, 25%]

@@ -25,6 +25,12 @@ const EdgePoints& EdgeCache::get(float factor, WorkStats& work) {
   return map_.emplace(bits, edgePoints(factor, partitioning_, stage_, options_)).first->second;
 }
 
+static bool allFinite(const glm::vec3* p, int n) {
+  for (int i = 0; i < n; ++i)
+    if (!finite(p[i])) return false;
+  return true;
+}
+
 bool validateCamera(const Camera& c, std::string& error) {
   if (!finite(c.eye)) return error = "camera.eye: not finite", false;
   if (!finite(c.target)) return error = "camera.target: not finite", false;
@@ -122,6 +128,12 @@ Report checkTerrain(const TerrainData& t, const Camera& camera, const CheckOptio
         ++rep.stats.edgesChecked;
         ExactVerdict v;
         if (!match) ++rep.work.cgalCalls;
+        if (!match && !(allFinite(fullA.data(), pa.count) && allFinite(pb.data(), pbp.count))) {
+          // Never hand inf or nan to CGAL (its exact predicates cannot take them): report instead.
+          rep.error = "patch " + std::to_string(ia) + " edge " + std::to_string(e) + " / patch " + std::to_string(ib) +
+                      ": non-finite vertex (the scene's geometry overflows float); nothing checked";
+          return rep;
+        }
         if (!match) v = classifyExact(options.kernel, a, na, fullA.data(), pa.count, pb.data(), pbp.count);
         switch (v.classification) {
         case Classification::Match: ++rep.stats.matches; break;

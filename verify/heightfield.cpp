@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <sys/stat.h>
 
 namespace fftess::verify::detail {
 
@@ -74,6 +75,11 @@ std::vector<float> generateHeightfield(const Displacement& d) {
 
 bool readRawHeightmap(const std::string& path, int width, int height, int bits, std::vector<float>& out,
                       std::string& error) {
+  struct stat st;
+  if (::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) {
+    error = "heightmap file '" + path + "' is " + (S_ISDIR(st.st_mode) ? "a directory" : "not a regular file");
+    return false;
+  }
   std::ifstream f(path, std::ios::binary | std::ios::ate);
   if (!f) {
     error = "cannot open heightmap file '" + path + "'";

@@ -4,6 +4,8 @@
 #include "verify/internal.h"
 
 #include <atomic>
+#include <cfloat>
+#include <cstdio>
 #include <cmath>
 
 namespace fftess::verify {
@@ -45,6 +47,42 @@ struct Builder {
 } // namespace
 
 namespace {
+
+// The terrain's float geometry must be finite and resolve every patch: a patch size that vanishes at the scene's
+// coordinates (denormal, or below 2^-20 of the largest coordinate) or an extent that overflows float is bad input.
+// Non-finite geometry would otherwise reach the LOD and CGAL (whose exact predicates cannot take inf or nan).
+bool geometryFits(const Scene& s, double patchWorld, double minX, double minZ, const TerrainData& t,
+                  std::string& error) {
+  const Layout& L = s.layout;
+  const char* key = L.kind == LayoutKind::TileRings ? "layout.base_patch_size"
+                    : L.kind == LayoutKind::Grid    ? "layout.patch_size"
+                                                    : "layout.cell_size";
+  const double given = L.kind == LayoutKind::TileRings ? L.basePatchSize
+                       : L.kind == LayoutKind::Grid    ? L.patchSize
+                                                       : L.cellSize;
+  char buf[320];
+  const bool finiteExtent = std::isfinite(t.extent.minX) && std::isfinite(t.extent.maxX) &&
+                            std::isfinite(t.extent.minZ) && std::isfinite(t.extent.maxZ) &&
+                            std::isfinite(t.invSizeX) && std::isfinite(t.invSizeZ) && t.invSizeX > 0 &&
+                            t.invSizeZ > 0;
+  const double maxAbs = std::fmax(std::fmax(std::fabs(minX), std::fabs(minX + double(t.unitsX) * patchWorld)),
+                                  std::fmax(std::fabs(minZ), std::fabs(minZ + double(t.unitsZ) * patchWorld)));
+  if (!finiteExtent && !(patchWorld < 1)) {
+    std::snprintf(buf, sizeof buf, "%s: %g overflows float: the terrain spans %g x %g world units", key, given,
+                  double(t.unitsX) * patchWorld, double(t.unitsZ) * patchWorld);
+    error = buf;
+    return false;
+  }
+  if (!finiteExtent || !(patchWorld >= double(FLT_MIN)) || !(patchWorld >= maxAbs * 0x1p-20)) {
+    std::snprintf(buf, sizeof buf,
+                  "%s: %g vanishes in float at the scene's coordinates (a patch of %g world units at |x|, |z| up to "
+                  "%g; it must be at least 2^-20 of that)",
+                  key, given, patchWorld, maxAbs);
+    error = buf;
+    return false;
+  }
+  return true;
+}
 
 bool buildLayout(const Scene& s, TerrainData& t, std::string& error) {
   const Layout& L = s.layout;
@@ -90,6 +128,7 @@ bool buildLayout(const Scene& s, TerrainData& t, std::string& error) {
   t.extent.maxZ = static_cast<float>(minZ + static_cast<double>(t.unitsZ) * patchWorld);
   t.invSizeX = 1.0f / (t.extent.maxX - t.extent.minX);
   t.invSizeZ = 1.0f / (t.extent.maxZ - t.extent.minZ);
+  if (!geometryFits(s, patchWorld, minX, minZ, t, error)) return false;
 
   // Shared vertex buffer: each corner once, from its integer position, in double, rounded to float.
   auto sharedX = [&](int64_t ux) { return static_cast<float>(minX + static_cast<double>(ux) * patchWorld); };
@@ -244,6 +283,12 @@ TerrainResult prepareTerrain(const Scene& scene) {
   auto data = std::make_shared<detail::TerrainData>();
   data->scene = scene;
   if (!detail::buildLayout(data->scene, *data, r.error)) return r;
+  for (const detail::TerrainPatch& p : data->patches)
+    for (const glm::vec3& c : p.corners)
+      if (!std::isfinite(c.x) || !std::isfinite(c.z)) {
+        r.error = "layout: patch " + std::to_string(p.ref.index) + " has a non-finite corner (the layout overflows float)";
+        return r;
+      }
   data->geometry.resize(data->patches.size());
   for (size_t i = 0; i < data->patches.size(); ++i) {
     data->geometry[i].ref = data->patches[i].ref;

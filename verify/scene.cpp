@@ -3,10 +3,12 @@
 #include "verify/internal.h"
 
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <sys/stat.h>
 
 #include <toml++/toml.h>
 
@@ -506,14 +508,36 @@ SceneResult parseImpl(const std::string& text, const std::string& source, const 
   return res;
 }
 
+// Errors are one line: control bytes that came from the input (a key or an override with a newline) as \xHH.
+SceneResult oneLine(SceneResult r) {
+  std::string out;
+  for (unsigned char c : r.error) {
+    if (c >= 0x20 && c != 0x7f) {
+      out += static_cast<char>(c);
+      continue;
+    }
+    char buf[8];
+    std::snprintf(buf, sizeof buf, "\\x%02x", c);
+    out += buf;
+  }
+  r.error = out;
+  return r;
+}
+
 } // namespace
 
 SceneResult parseScene(const std::string& text, const std::string& sourceName,
                        const std::vector<std::string>& overrides, const std::string& baseDir) {
-  return parseImpl(text, sourceName, overrides, baseDir);
+  return oneLine(parseImpl(text, sourceName, overrides, baseDir));
 }
 
 SceneResult loadScene(const std::string& path, const std::vector<std::string>& overrides) {
+  struct stat st;
+  if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) {
+    SceneResult r;
+    r.error = path + ": is a directory, not a scene file";
+    return r;
+  }
   std::ifstream f(path, std::ios::binary);
   if (!f) {
     SceneResult r;
@@ -524,7 +548,7 @@ SceneResult loadScene(const std::string& path, const std::vector<std::string>& o
   ss << f.rdbuf();
   const size_t slash = path.find_last_of('/');
   const std::string dir = slash == std::string::npos ? "." : path.substr(0, slash == 0 ? 1 : slash);
-  return parseImpl(ss.str(), path, overrides, dir);
+  return oneLine(parseImpl(ss.str(), path, overrides, dir));
 }
 
 const char* toString(Classification c) {

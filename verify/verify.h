@@ -436,13 +436,17 @@ std::vector<PatchEdgeRef> flaggedPatchEdges(const Report& report);
 std::vector<Camera> pathCameras(const Terrain& terrain);
 // count (>= 0) cameras on a circle around the terrain centre, looking at the centre. radius <= 0: half the extent;
 // height <= 0: a quarter of the radius.
-std::vector<Camera> orbitCameras(const Terrain& terrain, int count, float radius = 0, float height = 0);
+// cancel (all generators): when it becomes true, generation stops and the cameras made so far are returned.
+std::vector<Camera> orbitCameras(const Terrain& terrain, int count, float radius = 0, float height = 0,
+                                 const std::atomic<bool>* cancel = nullptr);
 // count cameras on a straight line across the terrain (diagonal, -x-z to +x+z) at `height` above it (<= 0: 2% of
 // the extent plus the displacement scale), looking along the flight direction and slightly down.
-std::vector<Camera> flyoverCameras(const Terrain& terrain, int count, float height = 0);
+std::vector<Camera> flyoverCameras(const Terrain& terrain, int count, float height = 0,
+                                   const std::atomic<bool>* cancel = nullptr);
 // count cameras at uniform random positions over the extent, heights in (0, 25% of extent], random yaw, pitch
 // in [-60, 0] degrees. Deterministic for a seed (splitmix64, same on every platform).
-std::vector<Camera> randomCameras(const Terrain& terrain, int count, uint64_t seed);
+std::vector<Camera> randomCameras(const Terrain& terrain, int count, uint64_t seed,
+                                  const std::atomic<bool>* cancel = nullptr);
 
 struct SweepOptions {
   int threads = 0;               // 0: std::thread::hardware_concurrency()

@@ -1,5 +1,7 @@
 #include "run.h"
 
+#include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -60,32 +62,68 @@ std::vector<std::string> listDir(const std::string& dir) {
 std::string golden(const std::string& name) { return std::string(FFTESS_GOLDEN_DIR) + "/" + name; }
 std::string source(const std::string& name) { return std::string(FFTESS_SOURCE_ROOT) + "/" + name; }
 
+const char* binary() {
+  const char* b = std::getenv("FFTESS_TEST_BINARY");
+  return b && *b ? b : FFTESS_BINARY;
+}
+
 Result run(const std::vector<std::string>& args, const std::string& input) {
+  RunOptions o;
+  o.input = input;
+  return runWith(args, o);
+}
+
+TimedResult runWith(const std::vector<std::string>& args, const RunOptions& o) {
   static int counter = 0;
   const std::string base = tmpDir() + "/io" + std::to_string(counter++);
   const std::string in = base + ".in", out = base + ".out", err = base + ".err";
-  writeFile(in, input);
+  writeFile(in, o.input);
+  writeFile(err, "");
   posix_spawn_file_actions_t fa;
   posix_spawn_file_actions_init(&fa);
   posix_spawn_file_actions_addopen(&fa, 0, in.c_str(), O_RDONLY, 0);
-  posix_spawn_file_actions_addopen(&fa, 1, out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  if (o.stdoutPath.empty())
+    posix_spawn_file_actions_addopen(&fa, 1, out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  else
+    posix_spawn_file_actions_addopen(&fa, 1, o.stdoutPath.c_str(), O_WRONLY, 0);
   posix_spawn_file_actions_addopen(&fa, 2, err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  std::vector<std::string> all{FFTESS_BINARY};
+  std::vector<std::string> all{binary()};
   all.insert(all.end(), args.begin(), args.end());
   std::vector<char*> argv;
   for (std::string& a : all) argv.push_back(a.data());
   argv.push_back(nullptr);
   pid_t pid = 0;
-  Result r;
-  if (posix_spawn(&pid, FFTESS_BINARY, &fa, nullptr, argv.data(), environ) != 0) {
+  TimedResult r;
+  if (posix_spawn(&pid, binary(), &fa, nullptr, argv.data(), environ) != 0) {
     posix_spawn_file_actions_destroy(&fa);
-    throw std::runtime_error("cannot start " FFTESS_BINARY);
+    throw std::runtime_error(std::string("cannot start ") + binary());
   }
   posix_spawn_file_actions_destroy(&fa);
+  if (o.whileRunning) o.whileRunning(pid);
+  using Clock = std::chrono::steady_clock;
+  const auto start = Clock::now();
+  auto since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
   int st = 0;
-  ::waitpid(pid, &st, 0);
+  if (o.sigintAfter >= 0) {
+    bool matched = o.sigintWhenErr.empty();
+    auto from = start;
+    Clock::time_point sent;
+    for (;;) {
+      if (::waitpid(pid, &st, WNOHANG) == pid) break;
+      if (!matched && readFile(err).find(o.sigintWhenErr) != std::string::npos) matched = true, from = Clock::now();
+      if (matched && !r.interrupted && since(from) >= o.sigintAfter) {
+        ::kill(pid, SIGINT);
+        r.interrupted = true;
+        sent = Clock::now();
+      }
+      ::usleep(2000);
+    }
+    if (r.interrupted) r.exitAfterSigint = since(sent);
+  } else {
+    ::waitpid(pid, &st, 0);
+  }
   r.status = WIFEXITED(st) ? WEXITSTATUS(st) : 128 + WTERMSIG(st);
-  r.out = readFile(out);
+  if (o.stdoutPath.empty()) r.out = readFile(out);
   r.err = readFile(err);
   ::unlink(in.c_str());
   ::unlink(out.c_str());

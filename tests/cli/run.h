@@ -1,7 +1,9 @@
 // Runs the built fftess binary for end-to-end tests and captures its exit status, stdout and stderr.
 #pragma once
 
+#include <functional>
 #include <string>
+#include <sys/types.h>
 #include <vector>
 
 namespace clitest {
@@ -14,6 +16,23 @@ struct Result {
 
 // args: arguments after the program name. input: written to the program's stdin.
 Result run(const std::vector<std::string>& args, const std::string& input = "");
+
+// For fault injection: stdout to a given path (a device node or FIFO of the test's own), SIGINT once stderr contains
+// a text or after a delay, and a hook that runs while the child runs (e.g. reading a FIFO the child writes).
+struct RunOptions {
+  std::string input;
+  std::string stdoutPath;            // "" = captured in Result::out
+  std::string sigintWhenErr;         // send SIGINT once stderr contains this ("" = not by text)
+  double sigintAfter = -1;           // seconds after the start (or after sigintWhenErr matched); < 0: no SIGINT
+  std::function<void(pid_t)> whileRunning; // called once right after the start, before waiting
+};
+struct TimedResult : Result {
+  bool interrupted = false;          // SIGINT was sent
+  double exitAfterSigint = -1;       // seconds from SIGINT to exit
+};
+TimedResult runWith(const std::vector<std::string>& args, const RunOptions& options);
+// The binary under test (FFTESS_TEST_BINARY in the environment overrides the built one).
+const char* binary();
 // Scratch directory for files the tests write (created on first use, unique per process).
 std::string tmpDir();
 std::string readFile(const std::string& path);
