@@ -49,6 +49,7 @@ bool validateCamera(const Camera& c, std::string& error) {
 
 Report checkTerrain(const TerrainData& t, const Camera& camera, const CheckOptions& options, EdgeCache& cache) {
   Report rep;
+  cache.trim(); // no EdgePoints reference outlives a camera
   if (!validateCamera(camera, rep.error)) return rep;
   const size_t n = t.patches.size();
   rep.stats.patches = static_cast<int64_t>(n);

@@ -82,8 +82,14 @@ double pixelsAt(const lod::Camera& camera, const glm::vec3& at, double world);
 class EdgeCache {
 public:
   EdgeCache(Partitioning p, const Stage& s, const Options& o) : partitioning_(p), stage_(s), options_(o) {}
-  // Adds a miss to work.edgeQueries.
+  // Adds a miss to work.edgeQueries. The reference stays valid until the next trim().
   const EdgePoints& get(float factor, WorkStats& work);
+  // Called between cameras: forgets every entry once there are more than kMaxEntries, so a sweep's memory does not
+  // grow with its camera count (fractional factors seldom repeat across cameras).
+  void trim() {
+    if (map_.size() > kMaxEntries) map_.clear();
+  }
+  static constexpr size_t kMaxEntries = 1 << 15;
 
 private:
   Partitioning partitioning_;
