@@ -17,7 +17,8 @@ CLI::App* addCheck(CLI::App& app, CheckArgs& a) {
               "  fftess check docs/examples/terrain.toml\n"
               "  fftess check docs/examples/terrain.toml --set lod.adjacency_clamp=integer --json report.json "
               "--svg report.svg\n"
-              "Exit status: 0 no cracks, 1 cracks found, 2 bad usage or scene, 3 internal error.");
+              "Exit status: 0 watertight, 1 cracks or holes found or nothing checked, 2 bad usage or scene, 3 internal "
+              "error.");
   addSceneOptions(sub, a);
   sub->add_option("--path-camera", a.pathCamera, "Use camera N of the scene's [[camera_path]] instead of [camera]");
   sub->add_option("--show", a.show, "Finding lines to print (default 20; all are in --json)")->capture_default_str();
@@ -60,12 +61,16 @@ int runCheck(const CheckArgs& a) {
     text += buf;
     text += statsText(r.stats);
     int shown = 0;
+    for (const vf::Hole& h : r.holes) {
+      if (shown++ >= a.show) break;
+      text += holeLine(h) + "\n";
+    }
     for (const vf::Finding& f : r.findings) {
       if (f.classification == vf::Classification::Match) continue;
       if (shown++ >= a.show) break;
       text += findingLine(f) + "\n";
     }
-    const int64_t nonMatch = r.stats.cracks + r.stats.tJunctions;
+    const int64_t nonMatch = r.stats.cracks + r.stats.tJunctions + r.stats.holes;
     if (shown > a.show || nonMatch > a.show)
       text += "  ... " + std::to_string(nonMatch - a.show) + " more findings (--show N, or --json FILE)\n";
   }
@@ -79,9 +84,22 @@ int runCheck(const CheckArgs& a) {
               " patch edges: " + (agree ? "agrees with the edge check" : "DISAGREES with the edge check") + "\n";
     if (!agree) throw std::runtime_error("whole-mesh check and edge check disagree (a verifier bug)");
   }
-  const int status = verdictStatus(a, r.stats);
-  if (!a.quiet && !jsonToStdout)
-    text += std::string("verdict: ") + (r.stats.cracks > 0 ? "CRACKS" : r.stats.tJunctions > 0 ? "watertight now (T-junctions)" : "watertight") + "\n";
+  const vf::Verdict verdict = vf::verdictOf(r.stats);
+  const int status = verdictStatus(a, verdict);
+  if (!a.quiet && !jsonToStdout) {
+    std::string words;
+    switch (verdict) {
+    case vf::Verdict::Cracks: words = r.stats.holes > 0 ? "CRACKS and HOLES" : "CRACKS"; break;
+    case vf::Verdict::Holes: words = "HOLES (patches not drawn while in view)"; break;
+    case vf::Verdict::NothingChecked:
+      words = "NOTHING CHECKED: no shared edge was classified (every patch culled or out of view, or the layout has "
+              "no shared edge); not a clean verdict";
+      break;
+    case vf::Verdict::TJunctionsOnly: words = "watertight now (T-junctions)"; break;
+    default: words = "watertight"; break;
+    }
+    text += "verdict: " + words + "\n";
+  }
   // Reports first (atomically), then the text: a failure writing a report leaves no partial file.
   if (!a.json.empty()) reports.setJson(checkJson(a, terrain, cam, r, a.mesh ? &mesh : nullptr).dump(2) + "\n");
   if (!a.svg.empty()) reports.setSvg(checkSvg(terrain, r, "fftess check " + a.scene));

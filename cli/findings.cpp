@@ -126,6 +126,53 @@ std::string findingLine(const vf::Finding& f) {
          ":" + gap + " " + findingCause(f).detail;
 }
 
+Cause holeCause(const vf::Hole& h) {
+  char buf[480];
+  const std::string scheme = vf::toString(h.lod.scheme);
+  if (h.kind == vf::HoleKind::CulledWhileVisible) {
+    const bool bound = h.visiblePoint.y < h.lodBoxMinY || h.visiblePoint.y > h.lodBoxMaxY;
+    std::snprintf(buf, sizeof buf,
+                  "culled by lod %s's frustum test, but the surface is in view at (%.6g, %.6g, %.6g); lod's box y "
+                  "[%.6g, %.6g]%s",
+                  scheme.c_str(), double(h.visiblePoint.x), double(h.visiblePoint.y), double(h.visiblePoint.z),
+                  double(h.lodBoxMinY), double(h.lodBoxMaxY),
+                  bound ? ": the surface leaves it (height bounds too small)" : ": the surface is inside it (a wrong plane)");
+    return {std::string("culled while visible (lod ") + scheme + (bound ? ", height bounds too small)" : ", frustum test)"), buf};
+  }
+  std::string why;
+  const float f = h.hullFactor;
+  const std::string what = std::isnan(f) ? "NaN" : f < 0 ? "negative" : f == 0 ? "zero" : "not > 0";
+  if (h.edge < 0) {
+    why = "not drawn (patch dropped)";
+  } else {
+    std::snprintf(buf, sizeof buf, "%s factor %s (0x%08X, %s)", edgeName(h.edge), formatFloat(f).c_str(),
+                  static_cast<unsigned>(h.hullFactorBits), what.c_str());
+    why = buf;
+    if (h.lod.scheme != vf::LodScheme::Constant) {
+      std::snprintf(buf, sizeof buf, "; lod %s: metric %s, unclamped %s", scheme.c_str(),
+                    formatFloat(h.lod.why.metric).c_str(), formatFloat(h.lod.why.unclamped).c_str());
+      why += buf;
+      if (h.midpointW == 0)
+        why += "; w = 0 in the projection: the edge's midpoint lies in the eye's plane (x/0)";
+      else if (!(h.midpointW > 0))
+        why += "; the edge's midpoint is behind the eye (w " + formatFloat(h.midpointW) + ")";
+    }
+  }
+  const std::string seen = h.visibility == vf::Visibility::Visible
+                               ? "; in view at (" + formatFloat(h.visiblePoint.x) + ", " + formatFloat(h.visiblePoint.y) +
+                                     ", " + formatFloat(h.visiblePoint.z) + ")"
+                               : "; near the view frustum (not proven invisible)";
+  const std::string key = h.edge < 0 ? "discarded: patch not drawn"
+                          : std::string("discarded: ") + what + " factor" +
+                                (h.lod.scheme != vf::LodScheme::Constant && h.midpointW == 0 ? " (w = 0 at the edge midpoint)" : "") +
+                                " (lod " + scheme + ")";
+  return {key, "discarded by the tessellator: " + why + seen};
+}
+
+std::string holeLine(const vf::Hole& h) {
+  return "hole       " + patchText(h.patch) + ": " + holeCause(h).detail;
+}
+
 std::string fmtWorld(double v) {
   char b[32];
   std::snprintf(b, sizeof b, "%.3g", v);
@@ -140,6 +187,11 @@ std::string statsText(const vf::Stats& s) {
   o += "  matches        " + std::to_string(s.matches) + "\n";
   o += "  T-junctions    " + std::to_string(s.tJunctions) + "\n";
   o += "  cracks         " + std::to_string(s.cracks) + "\n";
+  o += "  holes          " + std::to_string(s.holes) + " (" + std::to_string(s.holesDiscarded) +
+       " discarded by the tessellator, " + std::to_string(s.holesCulledVisible) + " culled while visible)\n";
+  if (s.culledUndecided > 0)
+    o += "  not decided    " + std::to_string(s.culledUndecided) +
+         " culled patches touch the view frustum's box test but no grid point is in view (not reported)\n";
   if (s.cracks > 0)
     o += "  worst gap      " + fmtWorld(s.worstGapWorld) + " world units, " + fmtWorld(s.worstGapPixels) + " pixels\n";
   return o;
@@ -160,10 +212,12 @@ void ReportFiles::commit() {
   commitAll(files, n);
 }
 
-int verdictStatus(const SceneArgs& a, const vf::Stats& s) {
-  if (s.cracks > 0) return kExitFindings;
-  if (a.failOnTJunctions && s.tJunctions > 0) return kExitFindings;
-  return kExitClean;
+int verdictStatus(const SceneArgs& a, vf::Verdict v) {
+  switch (v) {
+  case vf::Verdict::Watertight: return kExitClean;
+  case vf::Verdict::TJunctionsOnly: return a.failOnTJunctions ? kExitFindings : kExitClean;
+  default: return kExitFindings;
+  }
 }
 
 void addSceneOptions(CLI::App* sub, SceneArgs& a) {

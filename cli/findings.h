@@ -29,6 +29,10 @@ struct Cause {
 Cause findingCause(const vf::Finding& f);
 
 std::string findingLine(const vf::Finding& f);        // one line: classification, both sides, gap, cause
+// A hole's cause from its records: a short key (sweep grouping) and the explanation (factor bits, lod's record,
+// the projection's w at the edge's midpoint, where the patch was seen).
+Cause holeCause(const vf::Hole& h);
+std::string holeLine(const vf::Hole& h);              // one line: "hole", the patch, the cause
 std::string statsText(const vf::Stats& s);            // the indented stats block of check and sweep
 
 // Scene options shared by check and sweep.
@@ -38,7 +42,8 @@ std::vector<std::string> overridesOf(const SceneArgs& a); // --eye/--target as o
 vf::Terrain load(const SceneArgs& a);
 vf::CheckOptions checkOptions(const SceneArgs& a);        // --kernel, --flush-denormals
 void addSceneOptions(CLI::App* sub, SceneArgs& a);
-int verdictStatus(const SceneArgs& a, const vf::Stats& s); // kExitFindings on cracks (and T-junctions if asked)
+// kExitFindings on cracks, holes, nothing checked, unchecked cameras (and T-junctions if asked); else kExitClean.
+int verdictStatus(const SceneArgs& a, vf::Verdict v);
 
 // The --json and --svg reports of one command: both paths are checked when this is built (before the work:
 // UsageError naming the path), and commit() writes both all or nothing (AtomicFile, commitAll).

@@ -76,7 +76,33 @@ json findingJson(const vf::Finding& f) {
 json statsJson(const vf::Stats& s) {
   return {{"patches", s.patches},           {"culled_patches", s.culledPatches}, {"edges_checked", s.edgesChecked},
           {"skipped_culled", s.skippedCulled}, {"matches", s.matches},          {"t_junctions", s.tJunctions},
-          {"cracks", s.cracks},             {"worst_gap_world", s.worstGapWorld}, {"worst_gap_pixels", s.worstGapPixels}};
+          {"cracks", s.cracks},             {"holes", s.holes},                  {"holes_discarded", s.holesDiscarded},
+          {"holes_culled_while_visible", s.holesCulledVisible}, {"culled_undecided", s.culledUndecided},
+          {"visibility_tests", s.visibilityTests},
+          {"worst_gap_world", s.worstGapWorld}, {"worst_gap_pixels", s.worstGapPixels}};
+}
+
+json holeJson(const vf::Hole& h) {
+  json j;
+  j["kind"] = vf::toString(h.kind);
+  j["cause"] = holeCause(h).key;
+  j["explanation"] = holeCause(h).detail;
+  j["patch"] = {{"index", h.patch.index}, {"ring", h.patch.ring}, {"tile", h.patch.tile}, {"patch", h.patch.patch},
+                {"level", h.patch.level}};
+  j["visibility"] = vf::toString(h.visibility);
+  j["visible_point"] = h.visibility == vf::Visibility::Visible ? vec3Json(h.visiblePoint) : json(nullptr);
+  j["edge"] = h.edge >= 0 ? json(edgeName(h.edge)) : json(nullptr);
+  j["hull_factor"] = formatFloat(h.hullFactor); // a string: NaN and Inf are not JSON numbers
+  char bits[16];
+  std::snprintf(bits, sizeof bits, "0x%08X", static_cast<unsigned>(h.hullFactorBits));
+  j["factor_bits"] = bits;
+  json fs = json::array();
+  for (float f : h.factors) fs.push_back(formatFloat(f));
+  j["factors"] = fs;
+  j["lod"] = lodJson(h.lod);
+  j["midpoint_w"] = formatFloat(h.midpointW);
+  j["lod_box_y"] = json::array({h.lodBoxMinY, h.lodBoxMaxY});
+  return j;
 }
 
 json cameraJson(const vf::Camera& c) {
@@ -112,11 +138,14 @@ json checkJson(const SceneArgs& a, const vf::Terrain& terrain, const vf::Camera&
   json j = reportHeader("check", a, terrain.scene());
   j["camera"] = cameraJson(cam);
   j["stats"] = statsJson(r.stats);
-  j["verdict"] = r.stats.cracks > 0 ? "cracks" : "clean";
+  j["verdict"] = vf::toString(vf::verdictOf(r.stats));
   j["truncated"] = r.truncated;
   json fs = json::array();
   for (const vf::Finding& f : r.findings) fs.push_back(findingJson(f));
   j["findings"] = fs;
+  json hs = json::array();
+  for (const vf::Hole& h : r.holes) hs.push_back(holeJson(h));
+  j["holes"] = hs;
   if (mesh)
     j["mesh"] = {{"triangles", mesh->triangles}, {"vertices", mesh->vertices}, {"border_edges", mesh->borderEdges},
                  {"inner_border_edges", mesh->innerBorderEdges}, {"flagged_patch_edges", mesh->flagged.size()}};
@@ -137,8 +166,10 @@ json sweepJson(const SceneArgs& a, const vf::Terrain& terrain, const std::string
   j["cameras_done"] = res.camerasDone;
   j["cancelled"] = res.cancelled;
   if (res.cancelled) j["cameras_not_done"] = requested - res.camerasDone; // not listed one by one
+  j["cameras_invalid"] = res.camerasInvalid;
+  j["cameras_nothing_checked"] = res.camerasNothingChecked;
   j["stats"] = statsJson(res.total);
-  j["verdict"] = res.total.cracks > 0 ? "cracks" : "clean";
+  j["verdict"] = vf::toString(vf::verdictOf(res));
   json cs = json::array();
   for (const CauseRow& c : causes)
     cs.push_back({{"cause", c.cause}, {"findings", c.findings}, {"cameras", c.cameras}, {"first_camera", c.firstCamera},
@@ -146,12 +177,18 @@ json sweepJson(const SceneArgs& a, const vf::Terrain& terrain, const std::string
   j["causes"] = cs;
   json cl = json::array();
   for (const vf::CameraResult& c : res.cameras) {
-    if (!c.done) continue; // an interrupted sweep lists only the cameras it checked
+    if (!c.done && c.error.empty()) continue; // an interrupted sweep lists only the cameras it checked
     json jc;
     jc["index"] = c.cameraIndex;
     jc["eye"] = vec3Json(cams[c.cameraIndex].eye);
     jc["target"] = vec3Json(cams[c.cameraIndex].target);
     jc["done"] = c.done;
+    if (!c.error.empty()) {
+      jc["error"] = c.error;
+      cl.push_back(jc);
+      continue;
+    }
+    jc["first_hole"] = c.hasHole ? holeJson(c.firstHole) : json(nullptr);
     jc["stats"] = statsJson(c.stats);
     jc["worst"] = c.hasFinding ? findingJson(c.worst) : json(nullptr);
     cl.push_back(jc);

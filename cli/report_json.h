@@ -16,10 +16,11 @@ using json = nlohmann::ordered_json;
 // "version" of the check and sweep JSON reports; bumped on any change of their schema (docs/cli.md).
 // 2: the classification and cause keys spell T-junctions "t_junction" (version 1 wrote "t-junction").
 // 3: per side "factor_bits" and "lod" (the LOD's own record), and "work" (the command's work counters).
-constexpr int kReportVersion = 3;
+constexpr int kReportVersion = 4; // 4: holes, verdicts nothing_checked / unchecked, invalid cameras
 
 json vec3Json(const glm::vec3& v);
 json findingJson(const vf::Finding& f);
+json holeJson(const vf::Hole& h);
 json lodJson(const vf::EdgeLod& l);   // one side's LOD record (docs/cli.md)
 json workJson(const vf::WorkStats& w);
 json statsJson(const vf::Stats& s);

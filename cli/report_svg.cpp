@@ -26,7 +26,7 @@ const char* kSvgStyle =
     ".cr{stroke:#d01010;stroke-width:3}.mk{fill:none;stroke:#d01010;stroke-width:0.8}.t{font:13px sans-serif}"
     ".s{font:11px monospace}.ok{fill:#2a8a2a}.warn{fill:#e08a00}.bad{fill:#d01010}.path{fill:none;stroke:#446;"
     "stroke-width:1}.ins{fill:#fff;stroke:#222}.a{stroke:#2a5599;stroke-width:1.2}.b{stroke:#7a2a99;stroke-width:1.2}"
-    ".x{stroke:#d01010;stroke-width:2}</style>\n";
+    ".x{stroke:#d01010;stroke-width:2}.hole{fill:#d01010;fill-opacity:0.45;stroke:#d01010;stroke-width:1}</style>\n";
 
 // The layout from above, from verify's real patch geometry (one terrain build for all patches): every patch outlined
 // thinly, and each tile (ring, tile) of a tile-ring layout outlined around its patches. Very large layouts (more
@@ -124,6 +124,16 @@ void svgInset(std::string& o, const vf::Scene& scene, const vf::Finding& f, doub
   o += buf;
 }
 
+// A hole: the patch filled.
+void svgHole(std::string& o, const vf::Terrain& terrain, const MapView& v, const vf::Hole& h, const std::string& title) {
+  if (h.patch.index < 0 || h.patch.index >= terrain.patchCount()) return;
+  const glm::vec3* c = terrain.patches()[static_cast<size_t>(h.patch.index)].corners;
+  char buf[256];
+  std::snprintf(buf, sizeof buf, "<path class=\"hole\" d=\"M%.2f %.2fL%.2f %.2fL%.2f %.2fL%.2f %.2fZ\">", v.x(c[0].x),
+                v.y(c[0].z), v.x(c[1].x), v.y(c[1].z), v.x(c[3].x), v.y(c[3].z), v.x(c[2].x), v.y(c[2].z));
+  o += buf + std::string("<title>") + xmlEscape(title) + "</title></path>\n";
+}
+
 } // namespace
 
 std::string checkSvg(const vf::Terrain& terrain, const vf::Report& r, const std::string& title) {
@@ -156,12 +166,15 @@ std::string checkSvg(const vf::Terrain& terrain, const vf::Report& r, const std:
       o += buf;
     }
   }
+  o += "</g>\n<g id=\"holes\">\n";
+  for (const vf::Hole& h : r.holes) svgHole(o, terrain, v, h, "hole: " + holeCause(h).detail);
   o += "</g>\n";
   std::snprintf(buf, sizeof buf,
                 "<text class=\"t\" x=\"20\" y=\"%.0f\">%lld edges checked: %lld match, %lld T-junctions (orange), "
-                "%lld cracks (red, circled)</text>\n",
+                "%lld cracks (red, circled), %lld holes (filled)</text>\n",
                 H + 25, static_cast<long long>(r.stats.edgesChecked), static_cast<long long>(r.stats.matches),
-                static_cast<long long>(r.stats.tJunctions), static_cast<long long>(r.stats.cracks));
+                static_cast<long long>(r.stats.tJunctions), static_cast<long long>(r.stats.cracks),
+                static_cast<long long>(r.stats.holes));
   o += buf;
   if (worst) svgInset(o, terrain.scene(), *worst, 10, H + 45, std::max(W, 780.0) - 20);
   o += "</svg>\n";
@@ -196,11 +209,15 @@ std::string sweepSvg(const vf::Terrain& terrain, const std::vector<vf::Camera>& 
     }
     o += "\"/>\n";
   }
-  o += "<g id=\"cameras\">\n";
+  o += "<g id=\"holes\">\n"; // the first hole of each camera
+  for (const vf::CameraResult& c : res.cameras)
+    if (c.done && c.hasHole)
+      svgHole(o, terrain, v, c.firstHole, "camera " + std::to_string(c.cameraIndex) + ": " + holeCause(c.firstHole).detail);
+  o += "</g>\n<g id=\"cameras\">\n";
   for (const vf::CameraResult& c : res.cameras) {
     if (!c.done) continue; // an interrupted sweep draws the cameras it checked
     const vf::Camera& cam = cams[c.cameraIndex];
-    const char* cls = !c.done ? "p" : c.stats.cracks > 0 ? "bad" : c.stats.tJunctions > 0 ? "warn" : "ok";
+    const char* cls = !c.done ? "p" : c.stats.cracks > 0 || c.stats.holes > 0 ? "bad" : c.stats.tJunctions > 0 ? "warn" : "ok";
     std::snprintf(buf, sizeof buf, "<circle class=\"%s\" cx=\"%.2f\" cy=\"%.2f\" r=\"3\"><title>camera %zu: %lld cracks</title></circle>\n",
                   cls, v.x(cam.eye.x), v.y(cam.eye.z), c.cameraIndex, static_cast<long long>(c.stats.cracks));
     o += buf;
@@ -220,7 +237,8 @@ std::string sweepSvg(const vf::Terrain& terrain, const std::vector<vf::Camera>& 
   }
   std::snprintf(buf, sizeof buf,
                 "<text class=\"t\" x=\"20\" y=\"%.0f\">%zu cameras from above. Dots: green clean, orange T-junctions, "
-                "red cracks.</text>\n<text class=\"t\" x=\"20\" y=\"%.0f\">Circles: worst crack of each camera. "
+                "red cracks or holes.</text>\n<text class=\"t\" x=\"20\" y=\"%.0f\">Circles: worst crack of each camera; "
+                "filled patches: each camera's first hole. "
                 "Numbers: first camera of each cause (in summary order).</text>\n",
                 H + 20, res.camerasDone, H + 40);
   o += buf;

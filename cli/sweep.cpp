@@ -36,7 +36,17 @@ struct CauseTally {
       const vf::Finding& f = r.findings[k];
       if (f.classification == vf::Classification::Match) continue;
       const Cause cause = findingCause(f);
-      const std::string key = std::string(vf::toString(f.classification)) + ": " + cause.key;
+      addKey(std::string(vf::toString(f.classification)) + ": " + cause.key, cause.detail, camera, k, here);
+    }
+    for (size_t k = 0; k < r.holes.size(); ++k) {
+      const Cause cause = holeCause(r.holes[k]);
+      // Holes after the findings of the same camera (index offset keeps the order stable).
+      addKey("hole: " + cause.key, cause.detail, camera, r.findings.size() + k, here);
+    }
+  }
+
+  void addKey(const std::string& key, const std::string& detail, size_t camera, size_t k, std::set<std::string>& here) {
+    {
       auto [it, added] = causes.try_emplace(key);
       CauseInfo& c = it->second;
       ++c.findings;
@@ -44,7 +54,7 @@ struct CauseTally {
       if (added || camera < c.first || (camera == c.first && k < c.firstFinding)) {
         c.first = camera;
         c.firstFinding = k;
-        c.detail = cause.detail;
+        c.detail = detail;
       }
     }
   }
@@ -73,7 +83,8 @@ CLI::App* addSweep(CLI::App& app, SweepArgs& a) {
               "--json sweep.json --svg sweep.svg\n"
               "Cameras: the scene's [[camera_path]] (or its [camera]) unless --orbit, --flyover or --random is given.\n"
               "Ctrl-C stops early and still prints the summary and writes the reports (exit 130 if no crack was found).\n"
-              "Exit status: 0 no cracks, 1 cracks found, 2 bad usage or scene, 3 internal error.");
+              "Exit status: 0 watertight, 1 cracks or holes found, nothing checked or a camera that could not be checked, "
+              "2 bad usage or scene, 3 internal error.");
   addSceneOptions(sub, a);
   sub->add_option("--orbit", a.orbit, "N cameras on a circle around the terrain, looking at its centre");
   sub->add_option("--flyover", a.flyover, "N cameras on a straight flight across the terrain");
@@ -151,13 +162,16 @@ int runSweep(const SweepArgs& a) {
 
   const std::vector<std::string> order = tally.order();
   const std::map<std::string, CauseInfo>& causes = tally.causes;
-  size_t crackCameras = 0, tjCameras = 0;
+  size_t crackCameras = 0, tjCameras = 0, holeCameras = 0;
   for (const vf::CameraResult& c : res.cameras) {
     if (!c.done) continue;
+    if (c.stats.holes > 0) ++holeCameras;
     if (c.stats.cracks > 0) ++crackCameras;
     else if (c.stats.tJunctions > 0) ++tjCameras;
   }
-  const int status = res.cancelled && res.total.cracks == 0 ? 130 : verdictStatus(a, res.total);
+  const vf::Verdict verdict = vf::verdictOf(res);
+  const bool gaps = verdict == vf::Verdict::Cracks || verdict == vf::Verdict::Holes;
+  const int status = res.cancelled && !gaps ? 130 : verdictStatus(a, verdict);
 
   std::string text;
   if (talk) {
@@ -172,8 +186,20 @@ int runSweep(const SweepArgs& a) {
     text += "  adjacency      " + std::string(vf::toString(scene.lod.screenSphere.clamp)) + " clamp, " +
             toString(scene.partitioning) + " partitioning\n";
     text += statsText(res.total);
-    std::snprintf(buf, sizeof buf, "  cameras with cracks %zu, with T-junctions only %zu\n", crackCameras, tjCameras);
+    std::snprintf(buf, sizeof buf, "  cameras with cracks %zu, with T-junctions only %zu, with holes %zu\n", crackCameras,
+                  tjCameras, holeCameras);
     text += buf;
+    if (res.camerasNothingChecked > 0) {
+      std::snprintf(buf, sizeof buf, "  cameras that classified no shared edge (all culled or out of view): %zu\n",
+                    res.camerasNothingChecked);
+      text += buf;
+    }
+    if (res.camerasInvalid > 0) {
+      size_t first = 0;
+      while (first < res.cameras.size() && res.cameras[first].error.empty()) ++first;
+      std::snprintf(buf, sizeof buf, "  cameras NOT CHECKED (invalid): %zu, first #%zu: ", res.camerasInvalid, first);
+      text += buf + printable(res.cameras[first].error) + "\n";
+    }
     if (!order.empty()) {
       text += "  causes (findings of each cause, cameras where it appeared, the first camera where it appeared):\n";
       for (const std::string& k : order) {
@@ -186,14 +212,32 @@ int runSweep(const SweepArgs& a) {
         text += "      e.g. " + c.detail + "\n";
       }
     }
-    text += std::string("verdict: ") +
-            (res.total.cracks > 0 ? "CRACKS seen from " + std::to_string(crackCameras) + " of " + std::to_string(res.camerasDone) +
-                                        " cameras (worst gap " + fmtWorld(res.total.worstGapWorld) + " world units, " +
-                                        fmtWorld(res.total.worstGapPixels) + " px)"
-             : res.cancelled ? "no cracks so far (interrupted)"
-             : res.total.tJunctions > 0 ? "no cracks (T-junctions only)"
-             : "WATERTIGHT from all " + std::to_string(res.camerasDone) + " cameras") +
-            "\n";
+    const std::string holesText = "HOLES seen from " + std::to_string(holeCameras) + " of " +
+                                  std::to_string(res.camerasDone) + " cameras (" + std::to_string(res.total.holes) +
+                                  " patches not drawn while in view)";
+    std::string words;
+    switch (verdict) {
+    case vf::Verdict::Cracks:
+      words = "CRACKS seen from " + std::to_string(crackCameras) + " of " + std::to_string(res.camerasDone) +
+              " cameras (worst gap " + fmtWorld(res.total.worstGapWorld) + " world units, " +
+              fmtWorld(res.total.worstGapPixels) + " px)" + (res.total.holes > 0 ? "; " + holesText : "");
+      break;
+    case vf::Verdict::Holes: words = holesText; break;
+    case vf::Verdict::NothingChecked:
+      words = "NOTHING CHECKED: no camera classified a shared edge (" + std::to_string(res.camerasDone) +
+              " cameras checked, " + std::to_string(res.camerasInvalid) + " invalid); not a clean verdict";
+      break;
+    case vf::Verdict::Unchecked:
+      words = "NOT CLEAN: " + std::to_string(res.camerasInvalid) + " of " + std::to_string(cams.size()) +
+              " cameras could not be checked (the other " + std::to_string(res.camerasDone) + " found no crack or hole)";
+      break;
+    case vf::Verdict::TJunctionsOnly: words = res.cancelled ? "no cracks so far (interrupted)" : "no cracks (T-junctions only)"; break;
+    case vf::Verdict::Watertight:
+      words = res.cancelled ? "no cracks so far (interrupted)"
+                            : "WATERTIGHT from all " + std::to_string(res.camerasDone) + " cameras";
+      break;
+    }
+    text += "verdict: " + words + "\n";
   }
   if (!a.json.empty()) {
     std::vector<CauseRow> rows;

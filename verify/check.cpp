@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 
 namespace fftess::verify::detail {
 
@@ -47,29 +48,138 @@ bool validateCamera(const Camera& c, std::string& error) {
   return true;
 }
 
+namespace {
+
+uint32_t bitsOf(float f) {
+  uint32_t b;
+  std::memcpy(&b, &f, sizeof b);
+  return b;
+}
+
+// The fault's perturbation of a hull factor (Fault::FactorUlp, FactorStep, NanFactor).
+float perturbFactor(const Fault& f, float x) {
+  switch (f.kind) {
+  case Fault::Kind::FactorUlp: {
+    float y = x;
+    const int n = f.direction < 0 ? -f.direction : f.direction;
+    for (int i = 0; i < n; ++i) y = std::nextafter(y, f.direction < 0 ? -INFINITY : INFINITY);
+    return y;
+  }
+  case Fault::Kind::FactorStep: return x + static_cast<float>(f.direction) * 0x1p-16f;
+  case Fault::Kind::NanFactor: return std::numeric_limits<float>::quiet_NaN();
+  default: return x;
+  }
+}
+
+// w = -z of the edge's midpoint (lod's corners) in view space, in float as lod computes a view position:
+// mid = (a + b) * 0.5, view = V[0]*x + V[1]*y + V[2]*z + V[3].
+float midpointW(const lod::Camera& cam, const TerrainPatch& p, int e) {
+  const glm::vec3 mid = (p.lod.corners[kEdgeCorners[e][0]] + p.lod.corners[kEdgeCorners[e][1]]) * 0.5f;
+  const glm::mat4& v = cam.view;
+  const float z = v[0].z * mid.x + v[1].z * mid.y + v[2].z * mid.z + v[3].z;
+  return -z;
+}
+
+} // namespace
+
 Report checkTerrain(const TerrainData& t, const Camera& camera, const CheckOptions& options, EdgeCache& cache) {
   Report rep;
   cache.trim(); // no EdgePoints reference outlives a camera
   if (!validateCamera(camera, rep.error)) return rep;
   const size_t n = t.patches.size();
   rep.stats.patches = static_cast<int64_t>(n);
+  const Fault& fault = options.fault;
+  const bool faultPatch = fault.kind != Fault::Kind::None && fault.patch >= 0 && static_cast<size_t>(fault.patch) < n &&
+                          fault.edge >= 0 && fault.edge < 4;
 
   std::vector<lod::PatchLod> factors;
   computeFactors(t, camera, factors, rep.work);
   const lod::Camera lodCamera = toLodCamera(camera);
-
-  std::vector<std::array<const EdgePoints*, 4>> ep(n);
-  std::vector<char> culled(n, 0);
-  for (size_t i = 0; i < n; ++i) {
-    for (int e = 0; e < 4; ++e) {
-      ep[i][e] = &cache.get(factors[i].factors[e], rep.work);
-      if (ep[i][e]->culled) culled[i] = 1;
-    }
-    rep.stats.culledPatches += culled[i];
+  if (faultPatch) {
+    float& f = factors[static_cast<size_t>(fault.patch)].factors[fault.edge];
+    f = perturbFactor(fault, f);
   }
 
+  // Which patches are drawn. lod/ culls some on purpose; the tessellator discards every patch with an outer factor
+  // NaN, <= 0 or -Inf (D3D11.3 11.7.6). A patch not drawn is a hole when it would be on screen (verify.h, Hole).
+  std::vector<std::array<const EdgePoints*, 4>> ep(n);
+  std::vector<char> culled(n, 0);
+  const FrustumTest frustum(lodCamera);
+  for (size_t i = 0; i < n; ++i) {
+    int discardEdge = -1;
+    for (int e = 0; e < 4; ++e) {
+      ep[i][e] = &cache.get(factors[i].factors[e], rep.work);
+      if (ep[i][e]->culled && discardEdge < 0) discardEdge = e;
+    }
+    const bool dropped = faultPatch && fault.kind == Fault::Kind::DropPatch && static_cast<size_t>(fault.patch) == i;
+    const bool lodCulled = factors[i].why.culled;
+    if (!lodCulled && discardEdge < 0 && !dropped) continue;
+    culled[i] = 1;
+    ++rep.stats.culledPatches;
+    const TerrainPatch& P = t.patches[i];
+    glm::vec3 point{};
+    if (lodCulled) {
+      const Visibility vis = patchVisibility(t, P, frustum, options.visibilityGrid, &point, rep.work);
+      if (vis != Visibility::Invisible) ++rep.stats.visibilityTests;
+      if (vis == Visibility::Undecided) ++rep.stats.culledUndecided;
+      if (vis != Visibility::Visible) continue;
+    }
+    Visibility vis = Visibility::Visible;
+    if (!lodCulled) {
+      vis = patchVisibility(t, P, frustum, options.visibilityGrid, &point, rep.work);
+      if (vis == Visibility::Invisible) continue; // not drawn, not on screen: no hole
+      ++rep.stats.visibilityTests;
+    }
+    Hole h;
+    h.kind = lodCulled ? HoleKind::CulledWhileVisible : HoleKind::Discarded;
+    h.patch = P.ref;
+    h.visibility = vis;
+    h.visiblePoint = point;
+    h.edge = lodCulled || discardEdge < 0 ? -1 : discardEdge;
+    const int e = h.edge < 0 ? 0 : h.edge;
+    h.hullFactor = factors[i].factors[e];
+    h.hullFactorBits = bitsOf(h.hullFactor);
+    for (int k = 0; k < 6; ++k) h.factors[k] = factors[i].factors[k];
+    h.lod.why = factors[i].why.factor[e];
+    h.lod.culled = lodCulled;
+    neighbourRule(t, P, e, h.lod);
+    h.midpointW = midpointW(lodCamera, P, e);
+    h.lodBoxMinY = h.lodBoxMaxY = P.lod.corners[0].y;
+    for (const glm::vec3& c : P.lod.corners) {
+      h.lodBoxMinY = std::fmin(h.lodBoxMinY, c.y);
+      h.lodBoxMaxY = std::fmax(h.lodBoxMaxY, c.y);
+    }
+    if (P.lod.useHeightBounds) {
+      h.lodBoxMinY = std::fmin(h.lodBoxMinY, P.lod.minHeight);
+      h.lodBoxMaxY = std::fmax(h.lodBoxMaxY, P.lod.maxHeight);
+    }
+    ++rep.stats.holes;
+    ++(lodCulled ? rep.stats.holesCulledVisible : rep.stats.holesDiscarded);
+    if (rep.holes.size() < options.maxFindings) rep.holes.push_back(h);
+    else rep.truncated = true;
+  }
+
+  // World positions of the points of edge e of patch i, with the fault's edge perturbations (MirrorEdge, PointUlp).
+  auto edgeWorld = [&](size_t i, int e, const EdgePoints& E, std::vector<glm::vec3>& out, std::vector<DomainPoint>* dom) {
+    const bool here = faultPatch && static_cast<size_t>(fault.patch) == i && fault.edge == e;
+    const bool mirror = here && fault.kind == Fault::Kind::MirrorEdge;
+    out.resize(static_cast<size_t>(E.count));
+    if (dom) dom->resize(static_cast<size_t>(E.count));
+    for (int j = 0; j < E.count; ++j) {
+      const float param = mirror ? 1.0f - E.param[E.count - 1 - j] : E.param[j];
+      const DomainPoint d = edgeDomain(e, param);
+      if (dom) (*dom)[static_cast<size_t>(j)] = d;
+      out[static_cast<size_t>(j)] = evalDomain(t, t.patches[i], d.u, d.v, rep.work);
+    }
+    if (here && fault.kind == Fault::Kind::PointUlp && fault.point >= 0 && fault.point < E.count && fault.axis >= 0 &&
+        fault.axis < 3) {
+      float& c = out[static_cast<size_t>(fault.point)][fault.axis];
+      c = std::nextafter(c, fault.direction < 0 ? -INFINITY : INFINITY);
+    }
+  };
+
   std::vector<glm::vec3> fullA, pb;
-  std::vector<DomainPoint> domA;
+  std::vector<DomainPoint> domA, domB;
   for (size_t ia = 0; ia < n; ++ia) {
     const TerrainPatch& A = t.patches[ia];
     for (int e = 0; e < 4; ++e) {
@@ -97,12 +207,7 @@ Report checkTerrain(const TerrainData& t, const Camera& camera, const CheckOptio
         const EdgePoints& pa = *ep[ia][e];
         const EdgePoints& pbp = *ep[ib][eb];
         if (!fullDone) {
-          fullA.resize(pa.count);
-          domA.resize(pa.count);
-          for (int j = 0; j < pa.count; ++j) {
-            domA[j] = edgeDomain(e, pa.param[j]);
-            fullA[j] = evalDomain(t, A, domA[j].u, domA[j].v, rep.work);
-          }
+          edgeWorld(ia, e, pa, fullA, &domA);
           fullDone = true;
         }
         // The part of A's edge that B covers, in A's edge parameter.
@@ -114,14 +219,15 @@ Report checkTerrain(const TerrainData& t, const Camera& camera, const CheckOptio
           hi = lo + 0.5f;
         }
         int first = 0, last = pa.count; // [first, last)
-        while (first < pa.count && pa.param[first] < lo) ++first;
-        while (last > first && pa.param[last - 1] > hi) --last;
+        // The parameters the points were taken at (MirrorEdge changes them).
+        auto paramA = [&](int j) {
+          const DomainPoint& d = domA[static_cast<size_t>(j)];
+          return e == Ueq0 || e == Ueq1 ? d.v : d.u;
+        };
+        while (first < pa.count && paramA(first) < lo) ++first;
+        while (last > first && paramA(last - 1) > hi) --last;
         const int na = last - first;
-        pb.resize(pbp.count);
-        for (int j = 0; j < pbp.count; ++j) {
-          const DomainPoint d = edgeDomain(eb, pbp.param[j]);
-          pb[j] = evalDomain(t, B, d.u, d.v, rep.work);
-        }
+        edgeWorld(static_cast<size_t>(ib), eb, pbp, pb, &domB);
         const glm::vec3* a = fullA.data() + first;
         bool match = na == pbp.count;
         for (int j = 0; match && j < na; ++j) match = sameBits(a[j], pb[j]);
@@ -175,7 +281,7 @@ Report checkTerrain(const TerrainData& t, const Camera& camera, const CheckOptio
         }
         if (i < pbp.count) {
           f.b.firstMismatch = i;
-          f.b.mismatchDomain = edgeDomain(eb, pbp.param[i]);
+          f.b.mismatchDomain = domB[static_cast<size_t>(i)];
           f.b.mismatchWorld = pb[i];
         }
         f.edgeStart = B.corners[kEdgeCorners[eb][0]];
@@ -203,6 +309,44 @@ Report checkScene(const Terrain& terrain, const Camera& camera, const CheckOptio
   const Scene& scene = terrain.scene();
   detail::EdgeCache cache(scene.partitioning, scene.stage, options.tessellator);
   return detail::checkTerrain(terrain.data(), camera, options, cache);
+}
+
+Verdict verdictOf(const Stats& s) {
+  if (s.cracks > 0) return Verdict::Cracks;
+  if (s.holes > 0) return Verdict::Holes;
+  if (s.edgesChecked == 0) return Verdict::NothingChecked;
+  if (s.tJunctions > 0) return Verdict::TJunctionsOnly;
+  return Verdict::Watertight;
+}
+
+Verdict verdictOf(const SweepResult& r) {
+  const Verdict v = verdictOf(r.total);
+  if (v == Verdict::Cracks || v == Verdict::Holes) return v;
+  if (r.camerasInvalid > 0) return Verdict::Unchecked;
+  return v;
+}
+
+const char* toString(Verdict v) {
+  switch (v) {
+  case Verdict::Watertight: return "watertight";
+  case Verdict::TJunctionsOnly: return "t_junctions";
+  case Verdict::Cracks: return "cracks";
+  case Verdict::Holes: return "holes";
+  case Verdict::NothingChecked: return "nothing_checked";
+  case Verdict::Unchecked: return "unchecked";
+  }
+  return "?";
+}
+
+const char* toString(HoleKind k) { return k == HoleKind::Discarded ? "discarded" : "culled_while_visible"; }
+
+const char* toString(Visibility v) {
+  switch (v) {
+  case Visibility::Invisible: return "invisible";
+  case Visibility::Visible: return "visible";
+  case Visibility::Undecided: return "undecided";
+  }
+  return "?";
 }
 
 std::vector<PatchEdgeRef> flaggedPatchEdges(const Report& report) {

@@ -38,8 +38,14 @@ struct TerrainPatch {
   // Neighbours across each edge (FactorIndex order): up to two patch indices, -1 where none.
   std::array<std::array<int, 2>, 4> nb{{{-1, -1}, {-1, -1}, {-1, -1}, {-1, -1}}};
   lod::Patch lod;               // what lod/ sees: corners raised to their heights (lod.displaced_corners), bounds
+  // Bounds of the true displaced surface's y (the texels the footprint samples, times height_scale, padded for
+  // float rounding): the hole check's visibility box (verify.h, Hole). [0, 0] on flat terrain.
+  float surfaceMinY = 0, surfaceMaxY = 0;
   lod::TileNeighbours tile;     // tile rings with adjacency: sizes across each edge, parity, far corners
 };
+
+// The scene key that sets the patch size of its layout ("layout.base_patch_size", ...), for messages.
+const char* patchSizeKey(const Scene& s);
 
 struct TerrainData {
   Scene scene;
@@ -128,5 +134,25 @@ ExactVerdict classifyExact(Kernel kernel, const glm::vec3* a, int na, const glm:
 
 Report checkTerrain(const TerrainData& t, const Camera& camera, const CheckOptions& options, EdgeCache& cache);
 bool validateCamera(const Camera& c, std::string& error);
+
+// ---------------------------------------------------------------------------------------------------------------
+// visibility.cpp: is a patch that is not drawn on screen? (verify.h, Hole)
+
+class FrustumTest {
+public:
+  explicit FrustumTest(const lod::Camera& camera); // clip = projection * view, in double
+  // The box [lo, hi] lies wholly outside one frustum plane.
+  bool boxOutside(const glm::dvec3& lo, const glm::dvec3& hi) const;
+  // The point is strictly inside the frustum.
+  bool inside(const glm::vec3& p) const;
+
+private:
+  double m_[4][4]; // row-major clip matrix
+};
+
+// Invisible (box outside), Visible (a grid point inside; *point set) or Undecided. Adds the grid's domain
+// evaluations to work.
+Visibility patchVisibility(const TerrainData& t, const TerrainPatch& p, const FrustumTest& frustum, int grid,
+                           glm::vec3* point, WorkStats& work);
 
 } // namespace fftess::verify::detail

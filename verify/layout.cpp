@@ -46,6 +46,12 @@ struct Builder {
 
 } // namespace
 
+const char* patchSizeKey(const Scene& s) {
+  return s.layout.kind == LayoutKind::TileRings ? "layout.base_patch_size"
+         : s.layout.kind == LayoutKind::Grid    ? "layout.patch_size"
+                                                : "layout.cell_size";
+}
+
 namespace {
 
 // The terrain's float geometry must be finite and resolve every patch: a patch size that vanishes at the scene's
@@ -54,9 +60,7 @@ namespace {
 bool geometryFits(const Scene& s, double patchWorld, double minX, double minZ, const TerrainData& t,
                   std::string& error) {
   const Layout& L = s.layout;
-  const char* key = L.kind == LayoutKind::TileRings ? "layout.base_patch_size"
-                    : L.kind == LayoutKind::Grid    ? "layout.patch_size"
-                                                    : "layout.cell_size";
+  const char* key = patchSizeKey(s);
   const double given = L.kind == LayoutKind::TileRings ? L.basePatchSize
                        : L.kind == LayoutKind::Grid    ? L.patchSize
                                                        : L.cellSize;
@@ -73,10 +77,12 @@ bool geometryFits(const Scene& s, double patchWorld, double minX, double minZ, c
     error = buf;
     return false;
   }
-  if (!finiteExtent || !(patchWorld >= double(FLT_MIN)) || !(patchWorld >= maxAbs * 0x1p-20)) {
+  // 2^-63: below it a patch's squared edge length (the LOD's distances) underflows float.
+  if (!finiteExtent || !(patchWorld >= 0x1p-63) || !(patchWorld >= maxAbs * 0x1p-20)) {
     std::snprintf(buf, sizeof buf,
                   "%s: %g vanishes in float at the scene's coordinates (a patch of %g world units at |x|, |z| up to "
-                  "%g; it must be at least 2^-20 of that)",
+                  "%g; it must be at least 2^-20 of that, and at least 2^-63 so that its squared edge length stays a "
+                  "normal float)",
                   key, given, patchWorld, maxAbs);
     error = buf;
     return false;
@@ -217,6 +223,8 @@ bool buildLayout(const Scene& s, TerrainData& t, std::string& error) {
 }
 
 
+void prepareNeighbours(TerrainData& t);
+
 // What lod/ sees of each patch: its corners raised to the heights the vertex shader samples (lod.displaced_corners)
 // and the culling box's height bounds; on tile rings with adjacency, the neighbour sizes, parity and far corners.
 void prepareLod(TerrainData& t) {
@@ -236,6 +244,47 @@ void prepareLod(TerrainData& t) {
     }
   }
   if (!t.adjacency) return;
+  prepareNeighbours(t);
+}
+
+// The hole check's box (TerrainPatch::surfaceMinY/MaxY): the texels a patch's footprint can sample (one texel of
+// margin each side for the bilinear pair and float rounding of the texture coordinate), times height_scale,
+// padded by 2^-10 of height_scale (filter-weight rounding; any sampled height lies between its texels).
+void prepareSurfaceBounds(TerrainData& t) {
+  const Displacement& d = t.scene.displacement;
+  if (d.kind == DisplacementKind::None) return;
+  const std::vector<float>& tex = *d.texels;
+  const int w = d.texWidth, h = d.texHeight;
+  const double hs = d.heightScale;
+  const double pad = std::fabs(hs) * 0x1p-10;
+  auto index = [](double s, int n) {
+    if (!(s > 0)) return 0; // also NaN
+    if (s >= n - 1) return n - 1;
+    return static_cast<int>(s);
+  };
+  for (TerrainPatch& p : t.patches) {
+    double t0x = p.tex[0][0], t1x = p.tex[0][0], t0z = p.tex[0][1], t1z = p.tex[0][1];
+    for (int c = 1; c < 4; ++c) {
+      t0x = std::fmin(t0x, p.tex[c][0]), t1x = std::fmax(t1x, p.tex[c][0]);
+      t0z = std::fmin(t0z, p.tex[c][1]), t1z = std::fmax(t1z, p.tex[c][1]);
+    }
+    const int x0 = index(std::floor(t0x * w - 0.5) - 1, w), x1 = index(std::floor(t1x * w - 0.5) + 2, w);
+    const int z0 = index(std::floor(t0z * h - 0.5) - 1, h), z1 = index(std::floor(t1z * h - 0.5) + 2, h);
+    float lo = tex[static_cast<size_t>(z0) * w + x0], hi = lo;
+    for (int z = z0; z <= z1; ++z)
+      for (int x = x0; x <= x1; ++x) {
+        const float v = tex[static_cast<size_t>(z) * w + x];
+        lo = std::fmin(lo, v);
+        hi = std::fmax(hi, v);
+      }
+    const double a = hs * lo, b = hs * hi;
+    p.surfaceMinY = static_cast<float>(std::fmin(a, b) - pad);
+    p.surfaceMaxY = static_cast<float>(std::fmax(a, b) + pad);
+  }
+}
+
+// Tile rings with size jumps: the neighbour sizes, parity and far corners lod::nvidiaTile needs.
+void prepareNeighbours(TerrainData& t) {
   for (TerrainPatch& p : t.patches) {
     lod::TileNeighbours& tn = p.tile;
     tn.oddU = ((p.ux / p.size) & 1) != 0;
@@ -289,12 +338,25 @@ TerrainResult prepareTerrain(const Scene& scene) {
         r.error = "layout: patch " + std::to_string(p.ref.index) + " has a non-finite corner (the layout overflows float)";
         return r;
       }
+  for (const detail::TerrainPatch& p : data->patches)
+    if (!(p.corners[1].x > p.corners[0].x) || !(p.corners[3].x > p.corners[2].x) ||
+        !(p.corners[2].z > p.corners[0].z) || !(p.corners[3].z > p.corners[1].z)) {
+      char buf[300];
+      std::snprintf(buf, sizeof buf,
+                    "%s: patch %d has zero area in float (corners x %.9g .. %.9g, z %.9g .. %.9g): the patch size "
+                    "vanishes at the scene's coordinates",
+                    detail::patchSizeKey(data->scene), p.ref.index, double(p.corners[0].x), double(p.corners[1].x),
+                    double(p.corners[0].z), double(p.corners[2].z));
+      r.error = buf;
+      return r;
+    }
   data->geometry.resize(data->patches.size());
   for (size_t i = 0; i < data->patches.size(); ++i) {
     data->geometry[i].ref = data->patches[i].ref;
     for (int c = 0; c < 4; ++c) data->geometry[i].corners[c] = data->patches[i].corners[c];
   }
   detail::prepareLod(*data);
+  detail::prepareSurfaceBounds(*data);
   data->work.terrainBuilds = 1;
   ++detail::gTerrainBuilds;
   r.terrain.data_ = std::move(data);

@@ -33,7 +33,12 @@ SweepResult sweep(const Terrain& terrain, const std::vector<Camera>& cameras, co
       Report rep = detail::checkTerrain(terrain.data(), cameras[i], options, cache);
       CameraResult& cr = out.cameras[i];
       cr.done = rep.error.empty();
+      cr.error = rep.error;
       cr.stats = rep.stats;
+      if (!rep.holes.empty()) {
+        cr.hasHole = true;
+        cr.firstHole = rep.holes.front();
+      }
       work[i] = rep.work;
       for (const Finding& f : rep.findings) {
         if (f.classification == Classification::Match) continue;
@@ -57,8 +62,10 @@ SweepResult sweep(const Terrain& terrain, const std::vector<Camera>& cameras, co
   for (auto& th : pool) th.join();
 
   for (const CameraResult& cr : out.cameras) {
+    if (!cr.error.empty()) ++out.camerasInvalid;
     if (!cr.done) continue;
     ++out.camerasDone;
+    if (cr.stats.edgesChecked == 0) ++out.camerasNothingChecked;
     out.work += work[cr.cameraIndex];
     Stats& s = out.total;
     s.patches += cr.stats.patches;
@@ -68,10 +75,15 @@ SweepResult sweep(const Terrain& terrain, const std::vector<Camera>& cameras, co
     s.matches += cr.stats.matches;
     s.tJunctions += cr.stats.tJunctions;
     s.cracks += cr.stats.cracks;
+    s.holes += cr.stats.holes;
+    s.holesDiscarded += cr.stats.holesDiscarded;
+    s.holesCulledVisible += cr.stats.holesCulledVisible;
+    s.culledUndecided += cr.stats.culledUndecided;
+    s.visibilityTests += cr.stats.visibilityTests;
     s.worstGapWorld = std::max(s.worstGapWorld, cr.stats.worstGapWorld);
     s.worstGapPixels = std::max(s.worstGapPixels, cr.stats.worstGapPixels);
   }
-  out.cancelled = sweepOptions.cancel && sweepOptions.cancel->load() && out.camerasDone < cameras.size();
+  out.cancelled = sweepOptions.cancel && sweepOptions.cancel->load() && out.camerasDone + out.camerasInvalid < cameras.size();
   return out;
 }
 

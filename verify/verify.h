@@ -310,11 +310,39 @@ enum class Kernel : uint8_t {
   FloatNaive, // CGAL Simple_cartesian<float>: predicates evaluated in float. Wrong on purpose (for comparison)
 };
 
+// One deliberate perturbation, applied inside checkScene, to prove that the checker sees it (the fault-injection
+// suite, tests/verify/fault_injection_test.cpp). Kind::None (the default) changes nothing and costs nothing.
+struct Fault {
+  enum class Kind : uint8_t {
+    None,
+    FactorUlp,      // hull factor of (patch, edge) moved by `direction` ulps (std::nextafter), after the LOD
+    FactorStep,     // hull factor of (patch, edge) plus direction * 2^-16 (one 16.16 step), in float
+    PointUlp,       // world position of edge point `point` of (patch, edge): component `axis` (0 x, 1 y, 2 z)
+                    // moved by one ulp towards +inf (direction > 0) or -inf, after the domain shader
+    DropPatch,      // the patch is not drawn (as if the tessellator discarded it; the LOD did not cull it)
+    NanFactor,      // hull factor of (patch, edge) set to NaN
+    MirrorEdge,     // the edge points of (patch, edge) are taken at 1 - t instead of t (a port that walks the
+                    // edge backwards); D3D's symmetric edge tessellation makes this a no-op for many factors
+    NeighbourSize,  // the LOD is told that the neighbour across (patch, edge) has relative size `size`
+  };
+  Kind kind = Kind::None;
+  int patch = -1;       // PatchRef::index
+  int edge = 0;         // FactorIndex: Ueq0 Veq0 Ueq1 Veq1
+  int point = 0;        // PointUlp: index into the edge's points (0 = the edge's start corner)
+  int axis = 0;         // PointUlp
+  int direction = 1;    // FactorUlp, FactorStep, PointUlp: +1 or -1
+  float size = 1;       // NeighbourSize: 0.5, 1 or 2
+};
+
 struct CheckOptions {
   Kernel kernel = Kernel::Epick;  // classification is exact with Epick and Epeck; they agree on every verdict
-  size_t maxFindings = 1000;      // findings kept in Report::findings (stats always count all)
+  size_t maxFindings = 1000;      // findings (and holes) kept in Report::findings / Report::holes (stats count all)
   bool keepMatches = false;       // also keep matching pairs as findings
   Options tessellator{};          // handed to fftess::edgePoints / Tessellator (flushDenormals)
+  // Holes: a patch that lod/ culled is tested for visibility on a visibilityGrid x visibilityGrid grid of domain
+  // points (edges included) when its true surface box is not wholly outside the view frustum (see Hole).
+  int visibilityGrid = 33;        // >= 2
+  Fault fault{};                  // testing the checker only
 };
 
 enum class Classification : uint8_t {
@@ -373,11 +401,59 @@ struct Finding {
 // nothing. For printing; cli prints from the record itself where it needs more.
 std::string lodWords(const EdgeSide& side);
 
+// A hole: a patch that is not drawn although part of it would be on screen.
+//
+// The tessellator discards a patch when any outer factor is NaN, <= 0 or -Inf (D3D11.3 11.7.6; the reference's
+// culling rule). Whether a discarded patch would leave a visible hole is decided from its true surface:
+//   * its box: x/z from its corners, y from the displacement texels its footprint samples (bilinear filtering and
+//     mip averaging stay inside them), padded by 2^-20 of its magnitude for float rounding. A box wholly outside
+//     one plane of the view frustum (double precision) proves the patch invisible;
+//   * otherwise a grid of visibilityGrid^2 domain points (edges included), positioned by the scene's domain shader;
+//     one strictly inside the frustum (clip space in double: |x|, |y| < w, near < z < far) proves it visible.
+// Holes reported:
+//   Discarded          the tessellator discards the patch (some outer hull factor NaN, <= 0 or -Inf) but lod/ did
+//                      not cull it, and it is not proven invisible (visible, or not decided: reported either way);
+//   CulledWhileVisible lod/'s frustum test culled the patch, and a grid point is inside the frustum (a height bound
+//                      too small, a wrong plane, a patch box that misses its displaced surface).
+// A culled patch whose box touches the frustum but whose grid has no point inside is counted in
+// Stats::culledUndecided, not reported: the grid's spacing is the limit of what was checked.
+enum class HoleKind : uint8_t { Discarded, CulledWhileVisible };
+enum class Visibility : uint8_t { Invisible, Visible, Undecided };
+
+struct Hole {
+  HoleKind kind = HoleKind::Discarded;
+  PatchRef patch;
+  Visibility visibility = Visibility::Visible;
+  glm::vec3 visiblePoint{};    // a point of the patch inside the frustum (Visibility::Visible)
+  // Discarded: the first outer edge (FactorIndex order) whose factor made the tessellator discard the patch, and
+  // its factor, bits and lod/'s record. CulledWhileVisible: edge -1; factor is the cull value lod/ wrote.
+  int edge = -1;
+  float hullFactor = 0;
+  uint32_t hullFactorBits = 0;
+  float factors[6] = {0, 0, 0, 0, 0, 0}; // the patch's six hull factors (Ueq0 Veq0 Ueq1 Veq1 insideU insideV)
+  EdgeLod lod;                 // lod/'s record of that edge (CulledWhileVisible: of Ueq0)
+  // The edge's midpoint (lod's corners) in view space: w = -z, the projection's divisor. 0: the eye lies in the
+  // plane through the midpoint parallel to the image (a projected size of 0/0 or x/0).
+  float midpointW = 0;
+  // The y range of the box lod/'s frustum test culls with (its corners' y, widened by its height bounds), next to
+  // the y where the surface was seen: a culled-while-visible hole with visiblePoint.y outside it is a height bound
+  // too small.
+  float lodBoxMinY = 0, lodBoxMaxY = 0;
+};
+
+const char* toString(HoleKind k);  // "discarded", "culled_while_visible"
+const char* toString(Visibility v); // "invisible", "visible", "undecided"
+
 struct Stats {
   int64_t patches = 0;         // patches in the layout
   int64_t culledPatches = 0;   // culled by the LOD (frustum) or by the tessellator (factor not > 0)
   int64_t edgesChecked = 0;    // shared edge pairs classified (a 2x jump counts as two pairs)
-  int64_t skippedCulled = 0;   // shared edge pairs not classified because a side is culled
+  int64_t skippedCulled = 0;   // shared edge pairs not classified because a side is culled (or a hole)
+  int64_t holes = 0;           // Hole findings (both kinds)
+  int64_t holesDiscarded = 0;  // HoleKind::Discarded
+  int64_t holesCulledVisible = 0; // HoleKind::CulledWhileVisible
+  int64_t culledUndecided = 0; // lod-culled patches neither proven invisible nor visible (see Hole)
+  int64_t visibilityTests = 0; // culled or discarded patches whose box touched the frustum (grid evaluated)
   int64_t matches = 0;
   int64_t tJunctions = 0;
   int64_t cracks = 0;
@@ -388,6 +464,7 @@ struct Stats {
 struct Report {
   std::string error;             // non-empty: the camera is invalid and nothing was checked
   std::vector<Finding> findings; // non-matching pairs (and matches with keepMatches), in layout order
+  std::vector<Hole> holes;       // holes, in layout order (at most maxFindings; Stats::holes counts all)
   bool truncated = false;        // more findings than maxFindings
   Stats stats;
   WorkStats work;                // this camera's work (camera-dependent only; see Terrain::stats())
@@ -466,10 +543,13 @@ struct SweepOptions {
 
 struct CameraResult {
   size_t cameraIndex = 0;
-  bool done = false;             // false: skipped because of cancel
+  bool done = false;             // false: skipped because of cancel, or invalid (error set)
+  std::string error;             // the camera could not be checked (Report::error); done is false
   Stats stats;
   bool hasFinding = false;
   Finding worst;                 // the finding with the largest gap (first crack or T-junction if no gap)
+  bool hasHole = false;
+  Hole firstHole;                // the first hole in layout order
 };
 
 struct SweepResult {
@@ -477,9 +557,24 @@ struct SweepResult {
   std::vector<Report> reports;       // keepReports: one per camera (empty reports for skipped cameras)
   Stats total;                       // summed over cameras done; worst gaps are maxima
   WorkStats work;                    // summed over cameras done (the terrain's own work is terrain.stats())
-  size_t camerasDone = 0;
+  size_t camerasDone = 0;            // cameras checked
+  size_t camerasInvalid = 0;         // cameras that could not be checked (CameraResult::error)
+  size_t camerasNothingChecked = 0;  // cameras done that classified no shared edge (everything culled, say)
   bool cancelled = false;
 };
+
+// The verdict of a report or a sweep, in one place (the cli turns it into words and an exit status).
+enum class Verdict : uint8_t {
+  Watertight,      // at least one shared edge classified, every one a match, no hole, every camera checked
+  TJunctionsOnly,  // as Watertight but some T-junctions (no gap now; a gap once displacement differs)
+  Cracks,          // at least one crack (holes may come with them)
+  Holes,           // at least one hole, no crack
+  NothingChecked,  // no shared edge was classified (and no crack or hole): not clean
+  Unchecked,       // some cameras could not be checked (and no crack or hole): not clean
+};
+Verdict verdictOf(const Stats& s);
+Verdict verdictOf(const SweepResult& r);
+const char* toString(Verdict v); // "watertight", "t_junctions", "cracks", "holes", "nothing_checked", "unchecked"
 
 // Checks every camera against the one prepared terrain (shared read-only by the threads).
 SweepResult sweep(const Terrain& terrain, const std::vector<Camera>& cameras, const CheckOptions& options = {},
