@@ -71,8 +71,18 @@ bool geometryFits(const Scene& s, double patchWorld, double minX, double minZ, c
                             t.invSizeZ > 0;
   const double maxAbs = std::fmax(std::fmax(std::fabs(minX), std::fabs(minX + double(t.unitsX) * patchWorld)),
                                   std::fmax(std::fabs(minZ), std::fabs(minZ + double(t.unitsZ) * patchWorld)));
-  if (!finiteExtent && !(patchWorld < 1)) {
-    std::snprintf(buf, sizeof buf, "%s: %g overflows float: the terrain spans %g x %g world units", key, given,
+  if (s.displacement.kind != DisplacementKind::None && !(std::fabs(s.displacement.heightScale) < 0x1p60)) {
+    std::snprintf(buf, sizeof buf,
+                  "displacement.height_scale: %g overflows float in the LOD's squared distances (must be below 2^60)",
+                  double(s.displacement.heightScale));
+    error = buf;
+    return false;
+  }
+  // 2^60: beyond it squared distances (the LOD's edge lengths and view distances) overflow float.
+  if ((!finiteExtent || !(maxAbs < 0x1p60)) && !(patchWorld < 1)) {
+    std::snprintf(buf, sizeof buf, "%s: %g overflows float: the terrain spans %g x %g world units (coordinates must stay below 2^60 "
+                  "so that squared distances stay finite)",
+                  key, given,
                   double(t.unitsX) * patchWorld, double(t.unitsZ) * patchWorld);
     error = buf;
     return false;

@@ -4,6 +4,8 @@
 #include "verify_test_util.h"
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 
 using namespace fftess::verify;
 using namespace fftess::verify::test;
@@ -33,9 +35,11 @@ void requireWatertight(const Scene& s, const Camera& cam, const char* what) {
     Report r = checkScene(prepared(s), cam, o);
     INFO(what << " " << toString(k) << ": " << r.error);
     REQUIRE(r.error.empty());
-    CHECK(r.stats.edgesChecked + r.stats.skippedCulled > 0);
+    CHECK(r.stats.edgesChecked > 0);
     CHECK(r.stats.cracks == 0);
     CHECK(r.stats.tJunctions == 0);
+    CHECK(r.stats.holes == 0);
+    CHECK(verdictOf(r.stats) == Verdict::Watertight);
     CHECK(std::isfinite(r.stats.worstGapWorld));
   }
 }
@@ -59,19 +63,150 @@ TEST_CASE("hard_geometry_128km_world_camera_1cm_above_a_corner", "[verify][hard]
   }
 }
 
-TEST_CASE("hard_geometry_camera_exactly_on_an_edge", "[verify][hard]") {
-  for (bool rings : {false, true}) {
-    // Flat terrain: the eye lies on the edge's line itself (y = 0), looking along it.
-    Scene s = world(rings, {"displacement.kind=none"});
-    const Terrain terrain = prepared(s);
-    const glm::vec3 a = domainPosition(terrain, rings ? 5 : 64 * 128 + 64, 0.0f, 0.0f);
-    const glm::vec3 b = domainPosition(terrain, rings ? 5 : 64 * 128 + 64, 0.0f, 1.0f);
+// The eye on the flat terrain (grid.toml: 24 x 24 patches of 4 units, corners at multiples of 4), looking along +z
+// with screen_sphere and no frustum culling. Every edge whose midpoint lies in the eye's image plane (view z = 0)
+// projects with w = 0: its factor is NaN, the tessellator discards both patches that share it, and those in view
+// are holes. The expected holes are computed here from the layout: the patches with such an edge that have a point
+// in front of the eye inside the frustum.
+namespace {
+
+Scene flatGrid() {
+  return loadExample("grid.toml", {"displacement.kind=none", "lod.scheme=screen_sphere",
+                                   "tessellation.partitioning=fractional_even", "lod.frustum_cull=false"});
+}
+
+void requireHolesAtTheEyePlane(const glm::vec3& eye, const char* what, int expectedMin) {
+  const Scene s = flatGrid();
+  const Terrain terrain = prepared(s);
+  Camera cam = s.camera;
+  cam.eye = eye;
+  cam.target = eye + glm::vec3(0.0f, 0.0f, 100.0f);
+  for (Kernel k : {Kernel::Epick, Kernel::Epeck}) {
+    CheckOptions o;
+    o.kernel = k;
+    const Report r = checkScene(terrain, cam, o);
+    INFO(what << " " << toString(k));
+    REQUIRE(r.error.empty());
+    CHECK(r.stats.holes >= expectedMin);
+    CHECK(r.stats.holes == r.stats.holesDiscarded);
+    CHECK(verdictOf(r.stats) == Verdict::Holes);
+    REQUIRE(r.holes.size() == static_cast<size_t>(r.stats.holes));
+    for (const Hole& h : r.holes) {
+      const PatchGeometry& g = terrain.patches()[static_cast<size_t>(h.patch.index)];
+      INFO("patch " << h.patch.index << " edge " << h.edge);
+      CHECK(h.kind == HoleKind::Discarded);
+      CHECK(h.visibility == Visibility::Visible);
+      CHECK(std::isnan(h.hullFactor));
+      CHECK(h.midpointW == 0.0f);
+      // The discarding edge's midpoint lies in the eye's image plane z = eye.z.
+      REQUIRE(h.edge >= 0);
+      static constexpr int kEnds[4][2] = {{0, 2}, {0, 1}, {1, 3}, {2, 3}};
+      const float mz = (g.corners[kEnds[h.edge][0]].z + g.corners[kEnds[h.edge][1]].z) * 0.5f;
+      CHECK(mz == eye.z);
+      // The point that proved it visible is in front of the eye.
+      CHECK(h.visiblePoint.z > eye.z);
+    }
+  }
+}
+
+} // namespace
+
+TEST_CASE("hard_geometry_eye_exactly_on_an_edge_reports_holes", "[verify][hard]") {
+  // (0, 0, 2): the midpoint of the shared edge x = 0, z in [0, 4].
+  requireHolesAtTheEyePlane({0.0f, 0.0f, 2.0f}, "eye on an edge", 2);
+}
+
+TEST_CASE("hard_geometry_eye_exactly_on_a_corner_reports_holes", "[verify][hard]") {
+  // (0, 0, 0): four patches' corner; the edges along x at z = 0 have their midpoints in the image plane.
+  requireHolesAtTheEyePlane({0.0f, 0.0f, 0.0f}, "eye on a corner", 2);
+}
+
+TEST_CASE("hard_geometry_eye_exactly_on_an_interior_vertex", "[verify][hard]") {
+  // (1, 0, 2): an interior vertex of patch [0,4]x[0,4] (u = 1/4, v = 1/2 at factor 4); the plane z = 2 holds the
+  // midpoints of the edges x = 0 and x = 4: holes. (1, 0, 1) holds none: the control, watertight.
+  requireHolesAtTheEyePlane({1.0f, 0.0f, 2.0f}, "eye on an interior vertex", 1);
+  const Scene s = flatGrid();
+  Camera cam = s.camera;
+  cam.eye = {1.0f, 0.0f, 1.0f};
+  cam.target = cam.eye + glm::vec3(0.0f, 0.0f, 100.0f);
+  requireWatertight(s, cam, "eye on an interior vertex off the midpoint rows");
+}
+
+TEST_CASE("hard_geometry_holes_with_frustum_culling_on", "[verify][hard]") {
+  // The same eye with screen_sphere's own frustum test: it keeps the patches beside the eye, so the NaN still
+  // reaches the tessellator.
+  Scene s = flatGrid();
+  s.lod.screenSphere.sphere.frustumCull = true;
+  Camera cam = s.camera;
+  cam.eye = {0.0f, 0.0f, 2.0f};
+  cam.target = {0.0f, 0.0f, 100.0f};
+  const Report r = checkScene(prepared(s), cam);
+  CHECK(r.stats.holesDiscarded >= 2);
+  CHECK(verdictOf(r.stats) == Verdict::Holes);
+}
+
+TEST_CASE("hard_geometry_world_far_from_the_origin", "[verify][hard]") {
+  SECTION("centre at 1e5: watertight with pow2") {
+    const Scene s = loadExample("rings_small.toml", {"layout.center=[1e5,1e5]"});
+    const Terrain t = prepared(s);
+    const SweepResult r = sweep(t, randomCameras(t, 40, 5));
+    CHECK(r.camerasDone == 40);
+    CHECK(verdictOf(r) == Verdict::Watertight);
+  }
+  SECTION("centre at 1e7, 2-unit patches: rejected, the patch size vanishes at those coordinates") {
+    SceneResult sr = loadScene(examplePath("rings_small.toml"), {"layout.center=[1e7,1e7]"});
+    REQUIRE(sr.ok);
+    const TerrainResult tr = prepareTerrain(sr.scene);
+    CHECK(!tr.ok);
+    CHECK(tr.error.find("layout.base_patch_size") != std::string::npos);
+  }
+  SECTION("centre at 1e7, 16-unit patches: the LOD's float frustum test culls patches in view") {
+    // At 1e7 a float's ulp is 1 unit: the float plane equations (proj * view, in lod/) misplace the frustum by
+    // units, and patches in front of the camera are culled. A GPU running the same float test shows those holes.
+    const Scene s = loadExample("rings_small.toml", {"layout.center=[1e7,1e7]", "layout.base_patch_size=16"});
+    const Terrain t = prepared(s);
+    CheckOptions o;
+    o.maxFindings = 100000;
+    SweepOptions so;
+    so.keepReports = true;
+    const SweepResult r = sweep(t, randomCameras(t, 20, 1), o, so);
+    CHECK(r.total.holesCulledVisible > 0);
+    CHECK(r.total.cracks == 0);
+    CHECK(verdictOf(r) == Verdict::Holes);
+    for (const Report& rep : r.reports)
+      for (const Hole& h : rep.holes) {
+        CHECK(h.kind == HoleKind::CulledWhileVisible);
+        CHECK(h.visibility == Visibility::Visible);
+      }
+    // 1e6 is still fine.
+    const Scene near = loadExample("rings_small.toml", {"layout.center=[1e6,1e6]", "layout.base_patch_size=16"});
+    const Terrain tn = prepared(near);
+    CHECK(verdictOf(sweep(tn, randomCameras(tn, 20, 1))) == Verdict::Watertight);
+  }
+}
+
+TEST_CASE("hard_geometry_camera_below_the_displaced_surface", "[verify][hard]") {
+  // Looking up at the terrain from below: the LOD, the tessellator and the check see the same surface.
+  const Scene s = loadExample("rings_small.toml");
+  Camera cam = s.camera;
+  cam.eye = {3.0f, -20.0f, -5.0f};
+  cam.target = {10.0f, 5.0f, 30.0f};
+  requireWatertight(s, cam, "below the surface");
+}
+
+TEST_CASE("hard_geometry_grazing_angles", "[verify][hard]") {
+  const Scene s = loadExample("rings_small.toml");
+  const Terrain t = prepared(s);
+  // The eye a hair above the highest texel, looking horizontally across the whole terrain in several directions.
+  const float top = s.displacement.heightScale + 0.001f;
+  for (int k = 0; k < 8; ++k) {
+    const float a = static_cast<float>(k) * 0.785398f;
     Camera cam = s.camera;
-    cam.eye = glm::vec3{a.x, 0.0f, 0.5f * (a.z + b.z)};
-    cam.target = glm::vec3{a.x, 0.0f, b.z + 1000.0f};
-    cam.nearZ = 0.01f;
-    cam.farZ = 300000.0f;
-    requireWatertight(s, cam, rings ? "rings, eye on an edge" : "grid, eye on an edge");
+    // Off the grid lines: an eye on a line x = const looking along x has edge midpoints in its image plane (w = 0,
+    // holes: the tests above).
+    cam.eye = {-61.3f * std::cos(a) + 0.37f, top, -61.3f * std::sin(a) + 0.21f};
+    cam.target = {60.0f * std::cos(a) + 0.11f, top, 60.0f * std::sin(a) + 0.05f};
+    requireWatertight(s, cam, "grazing");
   }
 }
 
@@ -114,4 +249,62 @@ TEST_CASE("hard_geometry_far_patches_at_the_minimum_factor", "[verify][hard]") {
     CHECK(f.classification == Classification::Match);
   }
   CHECK(far > 100);
+}
+
+TEST_CASE("hard_geometry_raw_heightmaps_at_full_scale", "[verify][hard]") {
+  // 16-bit RAW heightmaps of 0 and of 65535 everywhere (and an 8-bit 255): the heights are exactly 0 and exactly
+  // height_scale, the terrain is a plane, and the NVIDIA setup is watertight.
+  const std::string dir = std::string(FFTESS_TEST_TMP_DIR) + "/raw_full_scale";
+  std::filesystem::create_directories(dir);
+  const int n = 129;
+  struct Case {
+    const char* name;
+    int bits;
+    unsigned value;
+    float height;
+  };
+  for (const Case& c : {Case{"zero16", 16, 0u, 0.0f}, Case{"max16", 16, 65535u, 8.0f}, Case{"max8", 8, 255u, 8.0f}}) {
+    const std::string file = dir + "/" + c.name + ".raw";
+    {
+      std::ofstream out(file, std::ios::binary);
+      for (int i = 0; i < n * n; ++i) {
+        out.put(static_cast<char>(c.value & 0xFF));
+        if (c.bits == 16) out.put(static_cast<char>(c.value >> 8));
+      }
+    }
+    const Scene s = loadExample("rings_small.toml",
+                                {"displacement.kind=raw", std::string("displacement.file=\"") + file + "\"",
+                                 "displacement.width=129", "displacement.height=129",
+                                 "displacement.bits=" + std::to_string(c.bits), "displacement.height_scale=8"});
+    const Terrain t = prepared(s);
+    INFO(c.name);
+    CHECK(domainPosition(t, 7, 0.3f, 0.6f).y == c.height);
+    const SweepResult r = sweep(t, randomCameras(t, 25, 3));
+    CHECK(r.camerasDone == 25);
+    CHECK(verdictOf(r) == Verdict::Watertight);
+  }
+}
+
+TEST_CASE("hard_geometry_non_finite_inputs_never_reach_the_lod_silently", "[verify][hard]") {
+  // Every float a scene gives the LOD, the layout or the camera: NaN, +Inf and -Inf are refused at load with the
+  // key named. What is left for NaN is arithmetic (w = 0, tested above), and that is reported as a hole.
+  const char* keys[] = {"layout.patch_size", "layout.base_patch_size", "layout.cell_size", "displacement.height_scale",
+                        "displacement.frequency", "displacement.lacunarity", "displacement.gain", "lod.factor",
+                        "lod.target_pixels", "lod.min_factor", "lod.max_factor", "lod.min_distance",
+                        "lod.max_distance", "lod.min_tess", "lod.max_tess", "lod.rank",
+                        "lod.edges_per_screen_height", "camera.fov_y", "camera.near", "camera.far"};
+  for (const char* key : keys)
+    for (const char* value : {"nan", "inf", "-inf"}) {
+      const SceneResult r = loadScene(examplePath("terrain.toml"), {std::string(key) + "=" + value});
+      INFO(key << " = " << value << ": " << r.error);
+      CHECK(!r.ok);
+      CHECK(r.error.find(key) != std::string::npos);
+    }
+  for (const char* key : {"layout.center", "camera.eye", "camera.target", "camera.up"})
+    for (const char* value : {"[nan, 0]", "[0, inf, 0]", "[-inf, 0, 0]"}) {
+      const SceneResult r = loadScene(examplePath("terrain.toml"), {std::string(key) + "=" + value});
+      INFO(key << " = " << value << ": " << r.error);
+      CHECK(!r.ok);
+      CHECK(r.error.find(key) != std::string::npos);
+    }
 }
