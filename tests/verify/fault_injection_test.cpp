@@ -1,0 +1,278 @@
+// Fault injection proves the checker: in an otherwise watertight scene, perturb one thing at a time (CheckOptions::
+// fault) and require the verifier to report exactly what the perturbation changed, at the right place, as the right
+// kind: a crack or T-junction on the perturbed shared edge, a hole at a dropped or NaN patch; and nothing where
+// the geometry did not change (a factor ulp that rounds to the same 16.16 points, a mirrored edge that D3D's
+// symmetric tessellation reproduces). The harness knows which is which from the emulator (fftess::edgePoints) and
+// from its own visibility test, not from the verifier: both false negatives and false positives fail.
+#include "verify_test_util.h"
+
+#include "tests/common/splitmix.h"
+
+#include "lod/lod.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <map>
+#include <set>
+#include <tuple>
+
+using namespace fftess;
+using namespace fftess::verify;
+using namespace fftess::verify::test;
+
+namespace {
+
+using Kind = Fault::Kind;
+
+const char* kindName(Kind k) {
+  switch (k) {
+  case Kind::FactorUlp: return "factor +-1 ulp";
+  case Kind::FactorStep: return "factor +-1 16.16 step";
+  case Kind::PointUlp: return "edge point +-1 ulp in x, y or z";
+  case Kind::DropPatch: return "dropped patch";
+  case Kind::NanFactor: return "NaN factor";
+  case Kind::MirrorEdge: return "mirrored edge";
+  case Kind::NeighbourSize: return "wrong neighbour size";
+  case Kind::None: return "none";
+  }
+  return "?";
+}
+
+// One side of a baseline pair: which patch edge, its hull factor and the part of its edge that is compared.
+struct PairKey {
+  int pa, ea, pb, eb;
+  bool operator<(const PairKey& o) const { return std::tie(pa, ea, pb, eb) < std::tie(o.pa, o.ea, o.pb, o.eb); }
+  bool operator==(const PairKey& o) const { return std::tie(pa, ea, pb, eb) == std::tie(o.pa, o.ea, o.pb, o.eb); }
+};
+
+struct Tally {
+  int injected = 0, changed = 0, detected = 0, unchanged = 0, quiet = 0, undecidable = 0;
+};
+
+// The points the tessellator puts on an edge for a factor, restricted to [lo, hi] (the compared part).
+std::vector<float> paramsIn(float factor, const Scene& s, float lo, float hi, bool mirror = false) {
+  const EdgePoints e = edgePoints(factor, s.partitioning, s.stage);
+  std::vector<float> out;
+  for (int j = 0; j < e.count; ++j) {
+    const float p = mirror ? 1.0f - e.param[e.count - 1 - j] : e.param[j];
+    if (p >= lo && p <= hi) out.push_back(p);
+  }
+  return out;
+}
+
+bool sameBits(const std::vector<float>& a, const std::vector<float>& b) {
+  if (a.size() != b.size()) return false;
+  for (size_t i = 0; i < a.size(); ++i)
+    if (std::memcmp(&a[i], &b[i], sizeof(float)) != 0) return false;
+  return true;
+}
+
+float perturbed(const Fault& f, float x) {
+  if (f.kind == Kind::FactorStep) return x + static_cast<float>(f.direction) * 0x1p-16f;
+  return std::nextafter(x, f.direction < 0 ? -INFINITY : INFINITY);
+}
+
+// The harness's own visibility test of a patch (independent of verify/visibility.cpp): a 17 x 17 grid of domain
+// points, each projected in double with lod's camera; strictly inside the clip volume counts.
+bool seenOnGrid(const Terrain& t, const Camera& c, int patch) {
+  const lod::Camera cam =
+      lod::makeCamera(c.eye, c.target, c.up, c.fovY * (3.14159265358979323846f / 180.0f), c.nearZ, c.farZ,
+                      glm::vec2(static_cast<float>(c.width), static_cast<float>(c.height)));
+  const glm::dmat4 m = glm::dmat4(cam.projection) * glm::dmat4(cam.view);
+  for (int j = 0; j <= 16; ++j)
+    for (int i = 0; i <= 16; ++i) {
+      const glm::vec3 p = domainPosition(t, patch, static_cast<float>(i) / 16.0f, static_cast<float>(j) / 16.0f);
+      const glm::dvec4 q = m * glm::dvec4(p.x, p.y, p.z, 1.0);
+      if (q.w > 0 && std::fabs(q.x) < q.w && std::fabs(q.y) < q.w && q.z > -q.w && q.z < q.w) return true;
+    }
+  return false;
+}
+
+struct Harness {
+  const char* name;
+  Scene scene;
+  Terrain terrain;
+  Camera camera;
+  bool flat;
+  std::vector<Finding> pairs; // baseline: every shared edge pair, all matches
+  std::map<Kind, Tally>& tally;
+
+  Report run(const Fault& f) const {
+    CheckOptions o;
+    o.maxFindings = 1u << 20;
+    o.fault = f;
+    return checkScene(terrain, camera, o);
+  }
+
+  // The pairs (a patch edge on either side) the fault touches, with what the harness expects at each.
+  void injectEdgeFault(const Fault& f, uint64_t& rngState) {
+    Tally& t = tally[f.kind];
+    ++t.injected;
+    std::set<PairKey> expect;      // pairs whose compared points change
+    std::map<PairKey, Classification> expectKind; // PointUlp on flat terrain: T-junction or crack
+    for (const Finding& p : pairs) {
+      for (int side = 0; side < 2; ++side) {
+        const EdgeSide& s = side == 0 ? p.a : p.b;
+        if (s.patch.index != f.patch || s.edge != f.edge) continue;
+        const PairKey key{p.a.patch.index, p.a.edge, p.b.patch.index, p.b.edge};
+        const float lo = s.paramLo, hi = s.paramHi;
+        bool changes = false;
+        if (f.kind == Kind::FactorUlp || f.kind == Kind::FactorStep)
+          changes = !sameBits(paramsIn(s.hullFactor, scene, lo, hi), paramsIn(perturbed(f, s.hullFactor), scene, lo, hi));
+        else if (f.kind == Kind::MirrorEdge)
+          changes = !sameBits(paramsIn(s.hullFactor, scene, lo, hi), paramsIn(s.hullFactor, scene, lo, hi, true));
+        else if (f.kind == Kind::PointUlp) {
+          const EdgePoints e = edgePoints(s.hullFactor, scene.partitioning, scene.stage);
+          if (f.point < e.count) {
+            const float param = e.param[f.point];
+            changes = param >= lo && param <= hi;
+            // Flat terrain: a vertex moved along its straight edge stays on the other side's line (T-junction)
+            // unless it is an end of the compared part; any other move leaves it (crack).
+            const bool alongEdge = (f.edge == Ueq0 || f.edge == Ueq1) ? f.axis == 2 : f.axis == 0;
+            const bool endOfPart = param == lo || param == hi;
+            if (changes)
+              expectKind[key] = flat && alongEdge && !endOfPart ? Classification::TJunction : Classification::Crack;
+          }
+        }
+        if (changes) expect.insert(key);
+      }
+    }
+    (void)rngState;
+    const Report r = run(f);
+    INFO(name << ": " << kindName(f.kind) << " patch " << f.patch << " edge " << f.edge << " point " << f.point
+              << " axis " << f.axis << " dir " << f.direction);
+    REQUIRE(r.error.empty());
+    CHECK(r.stats.holes == 0);
+    std::set<PairKey> seen;
+    for (const Finding& x : r.findings) {
+      if (x.classification == Classification::Match) continue;
+      const PairKey key{x.a.patch.index, x.a.edge, x.b.patch.index, x.b.edge};
+      seen.insert(key);
+      auto k = expectKind.find(key);
+      if (k != expectKind.end()) CHECK(toString(x.classification) == std::string(toString(k->second)));
+    }
+    CHECK(seen == expect); // no false negative, no false positive
+    if (expect.empty()) {
+      ++t.unchanged;
+      if (seen.empty()) ++t.quiet;
+    } else {
+      ++t.changed;
+      if (seen == expect) ++t.detected;
+    }
+  }
+
+  void injectPatchFault(const Fault& f) {
+    Tally& t = tally[f.kind];
+    ++t.injected;
+    const bool visible = seenOnGrid(terrain, camera, f.patch);
+    const Report r = run(f);
+    INFO(name << ": " << kindName(f.kind) << " patch " << f.patch << " edge " << f.edge);
+    REQUIRE(r.error.empty());
+    CHECK(r.stats.cracks == 0);
+    CHECK(r.stats.tJunctions == 0);
+    CHECK(r.stats.holes <= 1);
+    const bool hole = r.holes.size() == 1 && r.holes[0].patch.index == f.patch &&
+                      r.holes[0].kind == HoleKind::Discarded &&
+                      (f.kind == Kind::DropPatch || (r.holes[0].edge == f.edge && std::isnan(r.holes[0].hullFactor)));
+    if (visible) {
+      ++t.changed;
+      CHECK(hole);
+      if (hole) ++t.detected;
+    } else {
+      // Not seen on the harness's grid: invisible, or too close to the frustum's border for a grid to tell.
+      ++t.undecidable;
+      CHECK((r.stats.holes == 0 || hole));
+    }
+  }
+};
+
+Harness makeHarness(const char* name, const char* example, const std::vector<std::string>& overrides, bool flat,
+                    std::map<Kind, Tally>& tally) {
+  Scene s = loadExample(example, overrides);
+  Terrain t = prepared(s);
+  Harness h{name, s, t, s.camera, flat, {}, tally};
+  CheckOptions o;
+  o.keepMatches = true;
+  o.maxFindings = 1u << 20;
+  const Report base = checkScene(t, s.camera, o);
+  INFO(name);
+  REQUIRE(base.error.empty());
+  REQUIRE(verdictOf(base.stats) == Verdict::Watertight); // the harness starts from a watertight scene
+  REQUIRE(base.stats.edgesChecked > 100);
+  h.pairs = base.findings;
+  return h;
+}
+
+void runFaults(Harness& h, int count, uint64_t seed) {
+  fftess::testing::SplitMix64 rng{seed};
+  for (int n = 0; n < count; ++n) {
+    const Finding& pair = h.pairs[rng.next() % h.pairs.size()];
+    const EdgeSide& side = (rng.next() & 1) ? pair.a : pair.b;
+    Fault f;
+    f.patch = side.patch.index;
+    f.edge = side.edge;
+    f.direction = (rng.next() & 1) ? 1 : -1;
+    const uint64_t pick = rng.next() % 100;
+    if (pick < 20) f.kind = Kind::FactorUlp;
+    else if (pick < 40) f.kind = Kind::FactorStep;
+    else if (pick < 70) {
+      f.kind = Kind::PointUlp;
+      const EdgePoints e = edgePoints(side.hullFactor, h.scene.partitioning, h.scene.stage);
+      f.point = static_cast<int>(rng.next() % static_cast<uint64_t>(e.count));
+      f.axis = static_cast<int>(rng.next() % 3);
+    } else if (pick < 80) f.kind = Kind::MirrorEdge;
+    else if (pick < 90) f.kind = Kind::DropPatch;
+    else f.kind = Kind::NanFactor;
+    uint64_t state = rng.next();
+    if (f.kind == Kind::DropPatch || f.kind == Kind::NanFactor) h.injectPatchFault(f);
+    else h.injectEdgeFault(f, state);
+  }
+}
+
+void printTally(const char* title, const std::map<Kind, Tally>& tally) {
+  std::printf("%s\n  %-34s %8s %8s %8s %10s %8s %12s\n", title, "fault kind", "injected", "changed", "detected",
+              "unchanged", "quiet", "undecidable");
+  int injected = 0;
+  for (const auto& [k, t] : tally) {
+    std::printf("  %-34s %8d %8d %8d %10d %8d %12d\n", kindName(k), t.injected, t.changed, t.detected, t.unchanged,
+                t.quiet, t.undecidable);
+    injected += t.injected;
+  }
+  std::printf("  total injected: %d\n", injected);
+}
+
+} // namespace
+
+TEST_CASE("fault_injection_every_fault_is_found_and_nothing_else", "[verify][faults]") {
+  std::map<Kind, Tally> tally;
+  Harness rings = makeHarness("rings_small (screen_sphere, pow2, fbm)", "rings_small.toml", {}, false, tally);
+  Harness grid = makeHarness("grid (distance_pow2, fractional_odd, ridge)", "grid.toml", {}, false, tally);
+  Harness flat = makeHarness("flat grid (constant 7, integer)", "grid.toml",
+                             {"displacement.kind=none", "lod.scheme=constant", "lod.factor=7",
+                              "tessellation.partitioning=integer"},
+                             true, tally);
+  Harness flatOdd = makeHarness("flat grid (distance_pow2, fractional_odd)", "grid.toml", {"displacement.kind=none"},
+                                true, tally);
+  runFaults(rings, 450, 1);
+  runFaults(grid, 350, 2);
+  runFaults(flat, 150, 3);
+  runFaults(flatOdd, 250, 4);
+  printTally("fault injection (4 scenes):", tally);
+  int injected = 0;
+  for (const auto& [k, t] : tally) {
+    injected += t.injected;
+    INFO(kindName(k));
+    CHECK(t.detected == t.changed); // 100% of the faults that change the geometry are found
+    CHECK(t.quiet == t.unchanged);  // and none of those that do not is reported
+  }
+  CHECK(injected >= 1000);
+  // Each kind both changed the geometry somewhere and (for factor and mirror faults) left it alone somewhere.
+  CHECK(tally[Kind::FactorUlp].changed > 0);
+  CHECK(tally[Kind::FactorUlp].unchanged > 0);
+  CHECK(tally[Kind::FactorStep].changed > 0);
+  CHECK(tally[Kind::PointUlp].changed > 0);
+  CHECK(tally[Kind::MirrorEdge].unchanged > 0);
+  CHECK(tally[Kind::DropPatch].changed > 0);
+  CHECK(tally[Kind::NanFactor].changed > 0);
+}
