@@ -56,6 +56,7 @@ Report checkTerrain(const TerrainData& t, const Camera& camera, const CheckOptio
 
   std::vector<lod::PatchLod> factors;
   computeFactors(t, camera, factors, rep.work);
+  const DomainCamera domainCam = domainCamera(t, factors);
   const lod::Camera lodCamera = toLodCamera(camera);
 
   std::vector<std::array<const EdgePoints*, 4>> ep(n);
@@ -101,7 +102,7 @@ Report checkTerrain(const TerrainData& t, const Camera& camera, const CheckOptio
           domA.resize(pa.count);
           for (int j = 0; j < pa.count; ++j) {
             domA[j] = edgeDomain(e, pa.param[j]);
-            fullA[j] = evalDomain(t, A, domA[j].u, domA[j].v, rep.work);
+            fullA[j] = evalDomain(t, A, domA[j].u, domA[j].v, domainCam.at(ia), rep.work);
           }
           fullDone = true;
         }
@@ -120,7 +121,7 @@ Report checkTerrain(const TerrainData& t, const Camera& camera, const CheckOptio
         pb.resize(pbp.count);
         for (int j = 0; j < pbp.count; ++j) {
           const DomainPoint d = edgeDomain(eb, pbp.param[j]);
-          pb[j] = evalDomain(t, B, d.u, d.v, rep.work);
+          pb[j] = evalDomain(t, B, d.u, d.v, domainCam.at(static_cast<size_t>(ib)), rep.work);
         }
         const glm::vec3* a = fullA.data() + first;
         bool match = na == pbp.count;
