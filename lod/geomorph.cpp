@@ -30,4 +30,12 @@ GeomorphEdge geomorphEdgeHeights(float level, float neighbourLevel, const float 
   return e;
 }
 
+float geomorphWeight(float level, float neighbourLevel, const GeomorphParams& params) {
+  return glsl::geomorphWeight(level, neighbourLevel, detail::toGlsl(params));
+}
+
+float geomorphHeight(float height, float previousHeight, float nextHeight, float weight) {
+  return glsl::geomorphHeight(height, previousHeight, nextHeight, weight);
+}
+
 } // namespace fftess::lod

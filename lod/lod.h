@@ -282,6 +282,14 @@ struct GeomorphEdge {
 GeomorphEdge geomorphEdgeHeights(float level, float neighbourLevel, const float fineHeights[65],
                                  const GeomorphParams& params = {});
 
+// The pieces of geomorphEdgeHeights, for a domain shader that morphs one vertex at a time (verify/domain.cpp):
+// geomorphWeight: the weight of an inserted vertex's true height on the border between levels `level` (this patch)
+// and `neighbourLevel` (pass `level` for the patch's interior): the tween of min(level, neighbourLevel), or with
+// literalArticleWeight (1 - tween(neighbourLevel)) * tween(level).
+float geomorphWeight(float level, float neighbourLevel, const GeomorphParams& params = {});
+// geomorphHeight: m = (previousHeight + nextHeight) * 0.5; m + weight * (height - m), rounded in that order.
+float geomorphHeight(float height, float previousHeight, float nextHeight, float weight);
+
 // ---------------------------------------------------------------------------------------------------------------
 // Printing helpers for the CLI.
 const char* schemeName(Scheme scheme);   // "screen_sphere", "nvidia_tile", "distance_pow2", "bonaventura", ...,

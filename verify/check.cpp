@@ -99,6 +99,7 @@ Report checkTerrain(const TerrainData& t, const Camera& camera, const CheckOptio
     float& f = factors[static_cast<size_t>(fault.patch)].factors[fault.edge];
     f = perturbFactor(fault, f);
   }
+  const DomainCamera domainCam = domainCamera(t, factors); // per-patch domain state (geomorph, mip levels)
 
   // Which patches are drawn. lod/ culls some on purpose; the tessellator discards every patch with an outer factor
   // NaN, <= 0 or -Inf (D3D11.3 11.7.6). A patch not drawn is a hole when it would be on screen (verify.h, Hole).
@@ -119,14 +120,14 @@ Report checkTerrain(const TerrainData& t, const Camera& camera, const CheckOptio
     const TerrainPatch& P = t.patches[i];
     glm::vec3 point{};
     if (lodCulled) {
-      const Visibility vis = patchVisibility(t, P, frustum, options.visibilityGrid, &point, rep.work);
+      const Visibility vis = patchVisibility(t, P, domainCam.at(i), frustum, options.visibilityGrid, &point, rep.work);
       if (vis != Visibility::Invisible) ++rep.stats.visibilityTests;
       if (vis == Visibility::Undecided) ++rep.stats.culledUndecided;
       if (vis != Visibility::Visible) continue;
     }
     Visibility vis = Visibility::Visible;
     if (!lodCulled) {
-      vis = patchVisibility(t, P, frustum, options.visibilityGrid, &point, rep.work);
+      vis = patchVisibility(t, P, domainCam.at(i), frustum, options.visibilityGrid, &point, rep.work);
       if (vis == Visibility::Invisible) continue; // not drawn, not on screen: no hole
       ++rep.stats.visibilityTests;
     }
@@ -169,7 +170,7 @@ Report checkTerrain(const TerrainData& t, const Camera& camera, const CheckOptio
       const float param = mirror ? 1.0f - E.param[E.count - 1 - j] : E.param[j];
       const DomainPoint d = edgeDomain(e, param);
       if (dom) (*dom)[static_cast<size_t>(j)] = d;
-      out[static_cast<size_t>(j)] = evalDomain(t, t.patches[i], d.u, d.v, rep.work);
+      out[static_cast<size_t>(j)] = evalDomain(t, t.patches[i], d.u, d.v, domainCam.at(i), rep.work);
     }
     if (here && fault.kind == Fault::Kind::PointUlp && fault.point >= 0 && fault.point < E.count && fault.axis >= 0 &&
         fault.axis < 3) {

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <sys/stat.h>
 
@@ -110,15 +111,15 @@ bool readRawHeightmap(const std::string& path, int width, int height, int bits, 
   return true;
 }
 
-float sampleBilinear(const Displacement& d, float tx, float tz) {
-  const std::vector<float>& t = *d.texels;
-  const int w = d.texWidth, h = d.texHeight;
+namespace {
+
+float bilinear(const std::vector<float>& t, int w, int h, int subtexelBits, float tx, float tz) {
   const float sx = tx * static_cast<float>(w) - 0.5f;
   const float sz = tz * static_cast<float>(h) - 0.5f;
   float x0 = std::floor(sx), z0 = std::floor(sz);
   float fx = sx - x0, fz = sz - z0;
-  if (d.subtexelBits > 0) {
-    const float q = std::ldexp(1.0f, d.subtexelBits);
+  if (subtexelBits > 0) {
+    const float q = std::ldexp(1.0f, subtexelBits);
     fx = std::nearbyint(fx * q) / q;
     fz = std::nearbyint(fz * q) / q;
   }
@@ -134,6 +135,114 @@ float sampleBilinear(const Displacement& d, float tx, float tz) {
   const float r0 = a + fx * (b - a);
   const float r1 = c + fx * (e - c);
   return r0 + fz * (r1 - r0);
+}
+
+} // namespace
+
+float sampleBilinear(const Displacement& d, float tx, float tz) {
+  return bilinear(*d.texels, d.texWidth, d.texHeight, d.subtexelBits, tx, tz);
+}
+
+float sampleBilinearLevel(const Displacement& d, int level, float tx, float tz) {
+  if (level <= 0) return sampleBilinear(d, tx, tz);
+  const MipLevel& m = (*d.mips)[static_cast<size_t>(level - 1)];
+  return bilinear(m.texels, m.width, m.height, d.subtexelBits, tx, tz);
+}
+
+float sampleTrilinear(const Displacement& d, float tx, float tz, float level) {
+  const int top = d.mips ? static_cast<int>(d.mips->size()) : 0;
+  float l = level;
+  if (!(l > 0.0f)) l = 0.0f; // also NaN
+  if (l > static_cast<float>(top)) l = static_cast<float>(top);
+  const float l0 = std::floor(l);
+  float f = l - l0;
+  if (d.subtexelBits > 0) {
+    const float q = std::ldexp(1.0f, d.subtexelBits);
+    f = std::nearbyint(f * q) / q;
+  }
+  const int i0 = static_cast<int>(l0);
+  const float h0 = sampleBilinearLevel(d, i0, tx, tz);
+  if (!(f > 0.0f)) return h0;
+  const float h1 = sampleBilinearLevel(d, std::min(i0 + 1, top), tx, tz);
+  return h0 + f * (h1 - h0);
+}
+
+// binary32: 1 sign, 8 exponent (bias 127), 23 mantissa bits; binary16: 1, 5 (bias 15), 10.
+uint16_t floatToHalf(float f) {
+  uint32_t x;
+  std::memcpy(&x, &f, sizeof x);
+  const uint32_t sign = (x >> 16) & 0x8000u;
+  const uint32_t a = x & 0x7fffffffu;
+  if (a >= 0x7f800000u) // infinity, NaN (quiet bit set, top 9 payload bits kept)
+    return static_cast<uint16_t>(sign | 0x7c00u | (a > 0x7f800000u ? 0x200u | ((a >> 13) & 0x3ffu) : 0u));
+  if (a >= 0x477ff000u) return static_cast<uint16_t>(sign | 0x7c00u); // >= 65520 = 65504 + half an ulp: tie -> inf
+  // Round the integer q = m >> shift to nearest, ties to even (rem: the bits shifted out).
+  auto roundShift = [](uint32_t m, int shift) {
+    uint32_t q = m >> shift;
+    const uint32_t rem = m & ((1u << shift) - 1u), half = 1u << (shift - 1);
+    if (rem > half || (rem == half && (q & 1u))) ++q;
+    return q;
+  };
+  const int e = static_cast<int>(a >> 23); // biased float exponent
+  if (e < 113) {                           // below 2^-14: a half subnormal (or zero): q units of 2^-24
+    if (e < 102) return static_cast<uint16_t>(sign); // < 2^-25: rounds to zero (2^-25 itself is a tie -> 0)
+    const uint32_t m = (a & 0x7fffffu) | 0x800000u;  // value = m * 2^(e - 150)
+    return static_cast<uint16_t>(sign | roundShift(m, 126 - e)); // q may carry into 0x400 = 2^-14: still right
+  }
+  // Normal: rebias the exponent, round the mantissa's low 13 bits away (a carry moves into the exponent).
+  const uint32_t h = ((static_cast<uint32_t>(e - 112)) << 10) | ((a >> 13) & 0x3ffu);
+  const uint32_t rem = a & 0x1fffu;
+  const uint32_t r = h + ((rem > 0x1000u || (rem == 0x1000u && (h & 1u))) ? 1u : 0u);
+  return static_cast<uint16_t>(sign | r);
+}
+
+float halfToFloat(uint16_t h) {
+  const uint32_t sign = static_cast<uint32_t>(h & 0x8000u) << 16;
+  const uint32_t e = (h >> 10) & 0x1fu, m = h & 0x3ffu;
+  uint32_t x;
+  if (e == 0) {
+    const float v = std::ldexp(static_cast<float>(m), -24); // exact: m < 2^10
+    std::memcpy(&x, &v, sizeof x);
+    x |= sign;
+  } else if (e == 31) {
+    x = sign | 0x7f800000u | (m << 13);
+  } else {
+    x = sign | ((e + 112) << 23) | (m << 13);
+  }
+  float f;
+  std::memcpy(&f, &x, sizeof f);
+  return f;
+}
+
+void applyTexelFormat(TexelFormat format, std::vector<float>& texels) {
+  if (format != TexelFormat::R16Float) return;
+  for (float& t : texels) t = halfToFloat(floatToHalf(t));
+}
+
+std::vector<MipLevel> buildMipChain(const std::vector<float>& texels, int width, int height, TexelFormat format) {
+  std::vector<MipLevel> out;
+  const std::vector<float>* src = &texels;
+  int w = width, h = height;
+  while (w > 1 || h > 1) {
+    MipLevel m;
+    m.width = std::max(1, w / 2);
+    m.height = std::max(1, h / 2);
+    m.texels.resize(static_cast<size_t>(m.width) * m.height);
+    for (int j = 0; j < m.height; ++j) {
+      const int z0 = std::min(2 * j, h - 1), z1 = std::min(2 * j + 1, h - 1);
+      for (int i = 0; i < m.width; ++i) {
+        const int x0 = std::min(2 * i, w - 1), x1 = std::min(2 * i + 1, w - 1);
+        auto at = [&](int x, int z) { return (*src)[static_cast<size_t>(z) * w + x]; };
+        m.texels[static_cast<size_t>(j) * m.width + i] = ((at(x0, z0) + at(x1, z0)) + (at(x0, z1) + at(x1, z1))) * 0.25f;
+      }
+    }
+    applyTexelFormat(format, m.texels);
+    out.push_back(std::move(m));
+    src = &out.back().texels;
+    w = out.back().width;
+    h = out.back().height;
+  }
+  return out;
 }
 
 } // namespace fftess::verify::detail

@@ -25,6 +25,26 @@ bool readRawHeightmap(const std::string& path, int width, int height, int bits, 
 //   s = tx * width - 0.5; i0 = floor(s); f = s - i0; f quantised to subtexelBits (round to nearest);
 //   t = t0 + f * (t1 - t0) per row (x first), then across rows (z), each product and sum rounded to float.
 float sampleBilinear(const Displacement& d, float tx, float tz);
+// The same on mip level `level` (0 = d.texels, k >= 1 = (*d.mips)[k - 1]); level must exist.
+float sampleBilinearLevel(const Displacement& d, int level, float tx, float tz);
+// Trilinear sampling (displacement.mip): l = level clamped to [0, number of levels - 1] (NaN: 0); l0 = floor(l);
+// f = l - l0, quantised to subtexelBits like the bilinear weights; h0 = bilinear on l0; f > 0: h1 = bilinear on
+// l0 + 1 and h = h0 + f * (h1 - h0) (product and sum rounded separately); else h = h0.
+float sampleTrilinear(const Displacement& d, float tx, float tz, float level);
+
+// IEEE 754 binary16 (DXGI_FORMAT_R16_FLOAT), our own conversion: float -> half rounds to nearest, ties to even;
+// overflow (|x| >= 65520) gives infinity, NaN stays NaN (quiet, sign and top payload bits kept); half -> float is
+// exact.
+uint16_t floatToHalf(float f);
+float halfToFloat(uint16_t h);
+// Applies displacement.format to texels (r16_float: each texel through floatToHalf and back).
+void applyTexelFormat(TexelFormat format, std::vector<float>& texels);
+// Box-filtered mip chain of a width x height texture, levels 1.. down to 1 x 1: level k + 1 has max(1, w / 2) x
+// max(1, h / 2) texels (D3D's floor rule; an odd level's last row/column is not read), texel (i, j) =
+// ((a + b) + (c + d)) * 0.25 with a = (2i, 2j), b = (2i + 1, 2j), c = (2i, 2j + 1), d = (2i + 1, 2j + 1) of the level
+// above (an index past a 1-texel side is clamped), each level then put through `format` (a GPU stores R16 mips in
+// half too).
+std::vector<MipLevel> buildMipChain(const std::vector<float>& texels, int width, int height, TexelFormat format);
 
 // ---------------------------------------------------------------------------------------------------------------
 // layout.cpp: the prepared terrain.
@@ -70,7 +90,11 @@ constexpr int kOpposite[4] = {Ueq1, Veq1, Ueq0, Veq0};
 // coordinate from world x/z over the extent). Displacement must not be None. Adds one to work.heightSamples.
 float heightAt(const TerrainData& t, float x, float z, WorkStats& work);
 // World position of (u, v) on patch p. Adds one to work.domainEvaluations and, when displaced, work.heightSamples.
-glm::vec3 evalDomain(const TerrainData& t, const TerrainPatch& p, float u, float v, WorkStats& work);
+// camera: this camera's state of patch p (DomainCamera::at), nullptr for the camera-independent position (no
+// geomorph, mip level 0). Geomorph adds the two heights an inserted vertex morphs between to work.heightSamples.
+struct PatchDomain;
+glm::vec3 evalDomain(const TerrainData& t, const TerrainPatch& p, float u, float v, const PatchDomain* camera,
+                     WorkStats& work);
 
 // ---------------------------------------------------------------------------------------------------------------
 // lod_bridge.cpp: the scene's LOD settings -> lod/ calls, per camera.
@@ -81,6 +105,24 @@ lod::Camera toLodCamera(const Camera& c);
 void computeFactors(const TerrainData& t, const Camera& camera, std::vector<lod::PatchLod>& out, WorkStats& work);
 // The neighbour rule of edge e of patch p as the LOD applied it (EdgeLod's neighbourSize, clamp, reconstruction).
 void neighbourRule(const TerrainData& t, const TerrainPatch& p, int e, EdgeLod& out);
+// Per camera, per patch: what the domain shader reads besides the prepared terrain. Built by domainCamera from the
+// factors lod/ returned (no further lod/ call, no height sample).
+struct PatchDomain {
+  // lod.scheme = "geomorph": segments (the hull factor, a power of two) and the weight of the inserted vertices' true
+  // height (lod::geomorphWeight), per edge in FactorIndex order ([e]: the border level min(L, L_neighbour)) and for
+  // the interior ([4]: the patch's own level).
+  float morphSegments[5] = {0, 0, 0, 0, 0};
+  float morphWeight[5] = {0, 0, 0, 0, 0};
+  // displacement.mip: the mip level at each corner, maxExponent - lod::Why::cornerLevel[c] (per_vertex), or the
+  // patch's level maxExponent - exponent at its centre in [0] (per_patch).
+  float mipLevel[4] = {0, 0, 0, 0};
+};
+struct DomainCamera {
+  std::vector<PatchDomain> patches; // one per patch; empty when the scene's domain shader needs no camera state
+  const PatchDomain* at(size_t i) const { return patches.empty() ? nullptr : &patches[i]; }
+};
+// Empty (no allocation) unless lod.scheme = "geomorph" on a displaced scene or displacement.mip != "none".
+DomainCamera domainCamera(const TerrainData& t, const std::vector<lod::PatchLod>& factors);
 // A world length at a point in pixels, with lod's projection (see Finding::gapPixels).
 double pixelsAt(const lod::Camera& camera, const glm::vec3& at, double world);
 
@@ -152,7 +194,7 @@ private:
 
 // Invisible (box outside), Visible (a grid point inside; *point set) or Undecided. Adds the grid's domain
 // evaluations to work.
-Visibility patchVisibility(const TerrainData& t, const TerrainPatch& p, const FrustumTest& frustum, int grid,
-                           glm::vec3* point, WorkStats& work);
+Visibility patchVisibility(const TerrainData& t, const TerrainPatch& p, const PatchDomain* domain,
+                           const FrustumTest& frustum, int grid, glm::vec3* point, WorkStats& work);
 
 } // namespace fftess::verify::detail

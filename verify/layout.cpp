@@ -235,6 +235,43 @@ bool buildLayout(const Scene& s, TerrainData& t, std::string& error) {
 
 void prepareNeighbours(TerrainData& t);
 
+// lod.height_bounds = "per_patch" (Luna's BoundsY): the lowest and highest texel value any bilinear sample of the
+// patch can blend, on every level the scene samples. The patch's texture coordinates span [a, b] (its corners',
+// per axis); a sample at s = tx * w - 0.5 reads texels floor(s) and floor(s) + 1, so the texels floor(a * w - 0.5)
+// .. floor(b * w - 0.5) + 1 (clamped), widened by one texel each way for the domain shader's rounding of tx.
+// Returns [lo, hi] of the texel values (0..1 before height_scale).
+void patchTexelRange(const Displacement& d, const TerrainPatch& p, float& lo, float& hi) {
+  float a[2] = {p.tex[0][0], p.tex[0][1]}, b[2] = {a[0], a[1]};
+  for (int c = 1; c < 4; ++c)
+    for (int k = 0; k < 2; ++k) {
+      a[k] = std::fmin(a[k], p.tex[c][k]);
+      b[k] = std::fmax(b[k], p.tex[c][k]);
+    }
+  lo = INFINITY;
+  hi = -INFINITY;
+  const int levels = 1 + (d.mips ? static_cast<int>(d.mips->size()) : 0);
+  for (int l = 0; l < levels; ++l) {
+    const std::vector<float>& tex = l == 0 ? *d.texels : (*d.mips)[static_cast<size_t>(l - 1)].texels;
+    const int w = l == 0 ? d.texWidth : (*d.mips)[static_cast<size_t>(l - 1)].width;
+    const int h = l == 0 ? d.texHeight : (*d.mips)[static_cast<size_t>(l - 1)].height;
+    auto range = [](float x0, float x1, int n, int& i0, int& i1) {
+      const float s0 = std::floor(x0 * static_cast<float>(n) - 0.5f) - 1.0f;
+      const float s1 = std::floor(x1 * static_cast<float>(n) - 0.5f) + 2.0f;
+      i0 = !(s0 > 0.0f) ? 0 : s0 >= static_cast<float>(n - 1) ? n - 1 : static_cast<int>(s0);
+      i1 = !(s1 > 0.0f) ? 0 : s1 >= static_cast<float>(n - 1) ? n - 1 : static_cast<int>(s1);
+    };
+    int x0, x1, z0, z1;
+    range(a[0], b[0], w, x0, x1);
+    range(a[1], b[1], h, z0, z1);
+    for (int z = z0; z <= z1; ++z)
+      for (int x = x0; x <= x1; ++x) {
+        const float v = tex[static_cast<size_t>(z) * w + x];
+        lo = std::fmin(lo, v);
+        hi = std::fmax(hi, v);
+      }
+  }
+}
+
 // What lod/ sees of each patch: its corners raised to the heights the vertex shader samples (lod.displaced_corners)
 // and the culling box's height bounds; on tile rings with adjacency, the neighbour sizes, parity and far corners.
 void prepareLod(TerrainData& t) {
@@ -249,44 +286,34 @@ void prepareLod(TerrainData& t) {
     }
     if (displaced) {
       p.lod.useHeightBounds = true;
-      p.lod.minHeight = std::fmin(0.0f, s.displacement.heightScale);
-      p.lod.maxHeight = std::fmax(0.0f, s.displacement.heightScale);
+      if (s.lod.heightBounds == HeightBounds::PerPatch) {
+        float lo, hi;
+        patchTexelRange(s.displacement, p, lo, hi);
+        const float a = s.displacement.heightScale * lo, b = s.displacement.heightScale * hi;
+        p.lod.minHeight = std::fmin(a, b);
+        p.lod.maxHeight = std::fmax(a, b);
+      } else {
+        p.lod.minHeight = std::fmin(0.0f, s.displacement.heightScale);
+        p.lod.maxHeight = std::fmax(0.0f, s.displacement.heightScale);
+      }
     }
   }
   if (!t.adjacency) return;
   prepareNeighbours(t);
 }
 
-// The hole check's box (TerrainPatch::surfaceMinY/MaxY): the texels a patch's footprint can sample (one texel of
-// margin each side for the bilinear pair and float rounding of the texture coordinate), times height_scale,
-// padded by 2^-10 of height_scale (filter-weight rounding; any sampled height lies between its texels).
+// The hole check's box (TerrainPatch::surfaceMinY/MaxY): the texels a patch's footprint can sample on every level
+// the scene samples (patchTexelRange: one texel of margin each side for the bilinear pair and the rounding of the
+// texture coordinate), times height_scale, padded by 2^-10 of height_scale (filter-weight rounding; any sampled
+// height lies between its texels).
 void prepareSurfaceBounds(TerrainData& t) {
   const Displacement& d = t.scene.displacement;
   if (d.kind == DisplacementKind::None) return;
-  const std::vector<float>& tex = *d.texels;
-  const int w = d.texWidth, h = d.texHeight;
   const double hs = d.heightScale;
   const double pad = std::fabs(hs) * 0x1p-10;
-  auto index = [](double s, int n) {
-    if (!(s > 0)) return 0; // also NaN
-    if (s >= n - 1) return n - 1;
-    return static_cast<int>(s);
-  };
   for (TerrainPatch& p : t.patches) {
-    double t0x = p.tex[0][0], t1x = p.tex[0][0], t0z = p.tex[0][1], t1z = p.tex[0][1];
-    for (int c = 1; c < 4; ++c) {
-      t0x = std::fmin(t0x, p.tex[c][0]), t1x = std::fmax(t1x, p.tex[c][0]);
-      t0z = std::fmin(t0z, p.tex[c][1]), t1z = std::fmax(t1z, p.tex[c][1]);
-    }
-    const int x0 = index(std::floor(t0x * w - 0.5) - 1, w), x1 = index(std::floor(t1x * w - 0.5) + 2, w);
-    const int z0 = index(std::floor(t0z * h - 0.5) - 1, h), z1 = index(std::floor(t1z * h - 0.5) + 2, h);
-    float lo = tex[static_cast<size_t>(z0) * w + x0], hi = lo;
-    for (int z = z0; z <= z1; ++z)
-      for (int x = x0; x <= x1; ++x) {
-        const float v = tex[static_cast<size_t>(z) * w + x];
-        lo = std::fmin(lo, v);
-        hi = std::fmax(hi, v);
-      }
+    float lo, hi;
+    patchTexelRange(d, p, lo, hi);
     const double a = hs * lo, b = hs * hi;
     p.surfaceMinY = static_cast<float>(std::fmin(a, b) - pad);
     p.surfaceMaxY = static_cast<float>(std::fmax(a, b) + pad);

@@ -23,6 +23,22 @@ void computeFactors(const TerrainData& t, const Camera& camera, std::vector<lod:
     return;
   }
   const lod::Camera cam = toLodCamera(camera);
+  if (L.scheme == LodScheme::Geomorph) {
+    // Each patch's float level from its centre, then its factors from its own and its neighbours' levels (the
+    // patch's own level across the terrain's border). Patches are all one size (the scene refuses size jumps).
+    std::vector<float> level(t.patches.size());
+    for (size_t i = 0; i < t.patches.size(); ++i) level[i] = lod::geomorphLevel(t.patches[i].lod, cam, L.geomorph);
+    for (size_t i = 0; i < t.patches.size(); ++i) {
+      float nl[4];
+      for (int e = 0; e < 4; ++e) {
+        const int n = t.patches[i].nb[e][0];
+        nl[e] = n >= 0 ? level[static_cast<size_t>(n)] : level[i];
+      }
+      out[i] = lod::geomorph(level[i], nl);
+    }
+    work.lodEvaluations += static_cast<int64_t>(t.patches.size());
+    return;
+  }
   for (size_t i = 0; i < t.patches.size(); ++i) {
     const TerrainPatch& p = t.patches[i];
     switch (L.scheme) {
@@ -34,10 +50,48 @@ void computeFactors(const TerrainData& t, const Camera& camera, std::vector<lod:
     case LodScheme::DistancePow2: out[i] = lod::distancePow2(p.lod, cam, L.distancePow2); break;
     case LodScheme::Bonaventura: out[i] = lod::bonaventura(p.lod, cam, L.bonaventura); break;
     case LodScheme::ClipDiameter: out[i] = lod::clipDiameter(p.lod, cam, L.clipDiameter); break;
-    case LodScheme::Constant: break;
+    case LodScheme::Constant:
+    case LodScheme::Geomorph: break;
     }
   }
   work.lodEvaluations += static_cast<int64_t>(t.patches.size());
+}
+
+// Geomorph: the level lod::geomorph recorded as the inside factors' metric (FactorWhy::metric = L); segments are
+// the hull factors. Mip: lod::bonaventura's corrected, unrounded exponents: Why::cornerLevel (per_vertex) or the
+// inside factor's exponent at the patch centre (per_patch); mip level = maxExponent - exponent, in float.
+DomainCamera domainCamera(const TerrainData& t, const std::vector<lod::PatchLod>& factors) {
+  DomainCamera out;
+  const Scene& s = t.scene;
+  const bool displaced = s.displacement.kind != DisplacementKind::None;
+  const bool geomorph = displaced && s.lod.scheme == LodScheme::Geomorph;
+  const bool mip = displaced && s.displacement.mip != MipMode::None;
+  if (!geomorph && !mip) return out;
+  out.patches.resize(t.patches.size());
+  for (size_t i = 0; i < t.patches.size(); ++i) {
+    PatchDomain& d = out.patches[i];
+    const lod::PatchLod& f = factors[i];
+    if (geomorph) {
+      const float level = f.why.factor[4].metric;
+      for (int e = 0; e < 4; ++e) {
+        const int n = t.patches[i].nb[e][0];
+        const float nl = n >= 0 ? factors[static_cast<size_t>(n)].why.factor[4].metric : level;
+        d.morphSegments[e] = f.factors[e];
+        d.morphWeight[e] = lod::geomorphWeight(level, nl, s.lod.geomorph);
+      }
+      d.morphSegments[4] = f.factors[4];
+      d.morphWeight[4] = lod::geomorphWeight(level, level, s.lod.geomorph);
+    }
+    if (mip) {
+      const float maxExp = s.lod.bonaventura.maxExponent;
+      if (s.displacement.mip == MipMode::PerPatch) {
+        d.mipLevel[0] = maxExp - f.why.factor[4].exponent;
+      } else {
+        for (int c = 0; c < 4; ++c) d.mipLevel[c] = maxExp - f.why.cornerLevel[c];
+      }
+    }
+  }
+  return out;
 }
 
 void neighbourRule(const TerrainData& t, const TerrainPatch& p, int e, EdgeLod& out) {

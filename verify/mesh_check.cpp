@@ -52,6 +52,7 @@ MeshReport checkSceneMesh(const Terrain& terrain, const Camera& camera, const Ch
   if (!detail::validateCamera(camera, rep.error)) return rep;
   std::vector<lod::PatchLod> factors;
   detail::computeFactors(t, camera, factors, rep.work);
+  const detail::DomainCamera domainCam = detail::domainCamera(t, factors);
 
   const size_t n = t.patches.size();
   std::vector<char> drawn(n, 0);
@@ -72,7 +73,7 @@ MeshReport checkSceneMesh(const Terrain& terrain, const Camera& camera, const Ch
     ++rep.patchesDrawn;
     const size_t base = points.size();
     for (const DomainPoint& d : tess.points()) {
-      const glm::vec3 w = detail::evalDomain(t, t.patches[i], d.u, d.v, rep.work);
+      const glm::vec3 w = detail::evalDomain(t, t.patches[i], d.u, d.v, domainCam.at(i), rep.work);
       points.emplace_back(w.x, w.y, w.z);
       if (unsigned m = edgeMask(d)) where[Key{w.x, w.y, w.z}].push_back({static_cast<int>(i), m});
     }

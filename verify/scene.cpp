@@ -34,7 +34,16 @@ const Enum kSchemes[] = {{"constant", int(LodScheme::Constant)},
                          {"distance_pow2", int(LodScheme::DistancePow2)},
                          {"bonaventura", int(LodScheme::Bonaventura)},
                          {"clip_diameter", int(LodScheme::ClipDiameter)},
-                         {"patch_center", int(LodScheme::PatchCenter)}};
+                         {"patch_center", int(LodScheme::PatchCenter)},
+                         {"geomorph", int(LodScheme::Geomorph)}};
+const Enum kMipModes[] = {{"none", int(MipMode::None)},
+                          {"per_patch", int(MipMode::PerPatch)},
+                          {"per_vertex", int(MipMode::PerVertex)}};
+const Enum kTexelFormats[] = {{"float", int(TexelFormat::Float)}, {"r16_float", int(TexelFormat::R16Float)}};
+const Enum kHeightBounds[] = {{"global", int(HeightBounds::Global)}, {"per_patch", int(HeightBounds::PerPatch)}};
+const Enum kInsideRules[] = {{"average", int(lod::InsideRule::Average)},
+                             {"min", int(lod::InsideRule::Min)},
+                             {"max", int(lod::InsideRule::Max)}};
 const Enum kClamps[] = {{"none", int(AdjacencyClamp::None)},
                         {"integer", int(AdjacencyClamp::Integer)},
                         {"pow2", int(AdjacencyClamp::Pow2)}};
@@ -284,7 +293,7 @@ void readScene(Reader& r, const toml::table& root, Scene& s, const std::string& 
     const std::string p = "displacement.";
     r.unknownKeys(t, p,
                   {"kind", "height_scale", "file", "width", "height", "bits", "seed", "octaves", "frequency",
-                   "lacunarity", "gain", "resolution", "subtexel_bits"});
+                   "lacunarity", "gain", "resolution", "subtexel_bits", "format", "mip"});
     if (!tp) d.kind = DisplacementKind::None;
     r.enumeration(t, p, "kind", kDisplacementKinds, d.kind);
     r.number(t, p, "height_scale", d.heightScale);
@@ -301,6 +310,10 @@ void readScene(Reader& r, const toml::table& root, Scene& s, const std::string& 
     positive("gain", d.gain);
     r.integer(t, p, "resolution", d.resolution, 2, 8192);
     r.integer(t, p, "subtexel_bits", d.subtexelBits, 0, 23);
+    r.enumeration(t, p, "format", kTexelFormats, d.format);
+    r.enumeration(t, p, "mip", kMipModes, d.mip);
+    if (d.mip != MipMode::None && d.kind == DisplacementKind::None)
+      r.fail(p + "mip", t.get("mip"), "needs a displacement texture (displacement.kind is \"none\")");
     if (d.kind == DisplacementKind::Raw) {
       r.string(t, p, "file", d.file, true);
       r.integer(t, p, "width", d.width, 2, 65536);
@@ -312,6 +325,7 @@ void readScene(Reader& r, const toml::table& root, Scene& s, const std::string& 
       auto texels = std::make_shared<std::vector<float>>();
       std::string err;
       if (!detail::readRawHeightmap(path, d.width, d.height, d.bits, *texels, err)) r.fail(p + "file", t.get("file"), err);
+      detail::applyTexelFormat(d.format, *texels);
       d.texels = texels;
       d.texWidth = d.width;
       d.texHeight = d.height;
@@ -319,10 +333,16 @@ void readScene(Reader& r, const toml::table& root, Scene& s, const std::string& 
       for (const char* k : {"file", "width", "height"})
         if (t.get(k)) r.fail(p + k, t.get(k), "only allowed with kind = \"raw\"");
       if (d.kind == DisplacementKind::Fbm || d.kind == DisplacementKind::Ridge) {
-        d.texels = std::make_shared<std::vector<float>>(detail::generateHeightfield(d));
+        auto texels = std::make_shared<std::vector<float>>(detail::generateHeightfield(d));
+        detail::applyTexelFormat(d.format, *texels);
+        d.texels = texels;
         d.texWidth = d.texHeight = d.resolution;
       }
     }
+    // The mip chain only when asked for, once, at load.
+    if (d.mip != MipMode::None)
+      d.mips = std::make_shared<const std::vector<MipLevel>>(
+          detail::buildMipChain(*d.texels, d.texWidth, d.texHeight, d.format));
     if (s.layout.kind == LayoutKind::HeightmapGrid) {
       const toml::node* at = root.get("layout");
       if (d.kind == DisplacementKind::None)
@@ -343,7 +363,8 @@ void readScene(Reader& r, const toml::table& root, Scene& s, const std::string& 
     r.unknownKeys(t, p,
                   {"scheme", "target_pixels", "factor", "min_factor", "max_factor", "min_distance", "max_distance",
                    "min_tess", "max_tess", "angle_correction", "rank", "edges_per_screen_height", "frustum_cull",
-                   "displaced_corners", "adjacency_clamp", "reconstruction"});
+                   "displaced_corners", "adjacency_clamp", "reconstruction", "finest_level", "coarsest_level",
+                   "literal_article_weight", "height_bounds", "inside"});
     r.enumeration(t, p, "scheme", kSchemes, L.scheme, true);
     // Keys several schemes share are read once and set in every parameter struct that has the field.
     lod::ScreenSphereParams& sphere = L.screenSphere.sphere;
@@ -363,8 +384,8 @@ void readScene(Reader& r, const toml::table& root, Scene& s, const std::string& 
     if (!(maxDistance > minDistance))
       r.fail(p + "max_distance", t.get("max_distance") ? t.get("max_distance") : t.get("min_distance"),
              "must be > lod.min_distance");
-    L.distancePow2.minDistance = L.bonaventura.minDistance = minDistance;
-    L.distancePow2.maxDistance = L.bonaventura.maxDistance = maxDistance;
+    L.distancePow2.minDistance = L.bonaventura.minDistance = L.geomorph.minDistance = minDistance;
+    L.distancePow2.maxDistance = L.bonaventura.maxDistance = L.geomorph.maxDistance = maxDistance;
     float minTess = L.distancePow2.minTessExponent, maxTess = L.distancePow2.maxTessExponent;
     r.number(t, p, "min_tess", minTess);
     r.number(t, p, "max_tess", maxTess);
@@ -383,6 +404,15 @@ void readScene(Reader& r, const toml::table& root, Scene& s, const std::string& 
     r.boolean(t, p, "displaced_corners", L.displacedCorners);
     r.enumeration(t, p, "adjacency_clamp", kClamps, L.screenSphere.clamp);
     r.enumeration(t, p, "reconstruction", kReconstructions, L.screenSphere.reconstruction);
+    // geomorph
+    for (auto [key, field] : {std::pair<const char*, float*>{"finest_level", &L.geomorph.finestLevel},
+                              std::pair<const char*, float*>{"coarsest_level", &L.geomorph.coarsestLevel}})
+      if (r.number(t, p, key, *field) && !(*field >= 0 && *field <= 5))
+        r.fail(p + key, t.get(key), "must be in [0, 5] (level 5: 2^6 = 64 segments)");
+    r.boolean(t, p, "literal_article_weight", L.geomorph.literalArticleWeight);
+    r.enumeration(t, p, "height_bounds", kHeightBounds, L.heightBounds);
+    lod::InsideRule inside = L.screenSphere.sphere.inside;
+    if (r.enumeration(t, p, "inside", kInsideRules, inside)) L.screenSphere.sphere.inside = L.clipDiameter.inside = inside;
   }
 
   // [tessellation]
@@ -395,6 +425,27 @@ void readScene(Reader& r, const toml::table& root, Scene& s, const std::string& 
     if (r.string(t, p, "stage", stage) && !parseStage(stage.c_str(), s.stage))
       r.fail(p + "stage", t.get("stage"),
              "unknown value \"" + stage + "\" (expected " + joinNames(stageNames(), " | ") + ")");
+  }
+
+  // Effects that need a particular scheme, partitioning or layout.
+  {
+    const toml::table& lt = *root.get("lod")->as_table();
+    if (s.lod.scheme == LodScheme::Geomorph) {
+      if (s.partitioning != Partitioning::Integer) {
+        const toml::table& tt = *root.get("tessellation")->as_table();
+        r.fail("tessellation.partitioning", tt.get("partitioning"),
+               std::string("lod.scheme = \"geomorph\" draws at 2^(floor(L) + 1) segments with integer partitioning; "
+                           "got \"") + nameOf(kPartitionings, int(s.partitioning)) + "\" (set it to \"integer\")");
+      }
+      if (s.layout.kind == LayoutKind::TileRings && s.layout.rings > 1)
+        r.fail("lod.scheme", lt.get("scheme"),
+               "\"geomorph\" needs patches of one size (tile_rings with more than one ring has size jumps)");
+    }
+    if (s.displacement.mip != MipMode::None && s.lod.scheme != LodScheme::Bonaventura) {
+      const toml::table& dt = *root.get("displacement")->as_table();
+      r.fail("displacement.mip", dt.get("mip"),
+             "needs lod.scheme = \"bonaventura\" (its corrected exponents are the mip levels)");
+    }
   }
 
   // [domain]
@@ -566,6 +617,9 @@ const char* toString(AdjacencyClamp c) { return nameOf(kClamps, int(c)); }
 const char* toString(lod::Reconstruction r) { return nameOf(kReconstructions, int(r)); }
 const char* toString(LerpFormula f) { return nameOf(kFormulas, int(f)); }
 const char* toString(Kernel k) { return nameOf(kKernels, int(k)); }
+const char* toString(MipMode m) { return nameOf(kMipModes, int(m)); }
+const char* toString(TexelFormat f) { return nameOf(kTexelFormats, int(f)); }
+const char* toString(HeightBounds b) { return nameOf(kHeightBounds, int(b)); }
 bool parseKernel(const char* s, Kernel& out) {
   for (const Enum& e : kKernels)
     if (std::strcmp(s, e.name) == 0) {

@@ -78,6 +78,26 @@ enum class DisplacementKind : uint8_t {
   Ridge,  // "ridge": procedural ridged multifractal baked into a texture at load
 };
 
+// Mip selection of the displacement texture (displacement.mip; Bonaventura's coherence problem). Needs lod.scheme =
+// "bonaventura" (its exponents are the levels) when not None.
+enum class MipMode : uint8_t {
+  None,      // "none" (default): level 0 only; no mip chain is built
+  PerPatch,  // "per_patch": one level per patch, from its centre (neighbours sample a shared edge at different levels)
+  PerVertex, // "per_vertex": the corner levels (lod::Why::cornerLevel) interpolated at each domain point
+};
+
+// Texel format the heights are uploaded in (displacement.format).
+enum class TexelFormat : uint8_t {
+  Float,    // "float" (default): 32-bit float, the loaded values as they are
+  R16Float, // "r16_float": DXGI_FORMAT_R16_FLOAT (Luna): every texel rounded to IEEE half (nearest even) at load
+};
+
+// One level of the mip chain (level 1 and up; level 0 is Displacement::texels).
+struct MipLevel {
+  int width = 0, height = 0;
+  std::vector<float> texels; // row-major, z rows of x texels
+};
+
 struct Displacement {
   DisplacementKind kind = DisplacementKind::Fbm; // displacement.kind
   float heightScale = 4;           // displacement.height_scale (finite): world height of texel value 1
@@ -94,9 +114,13 @@ struct Displacement {
   int resolution = 513;            // displacement.resolution (2..8192): generated texture is resolution^2
   // Sampler (all kinds): bilinear, clamp addressing, texture spread over the terrain's extent.
   int subtexelBits = 8;            // displacement.subtexel_bits (0..23, 0 = full float): filter weight precision
+  TexelFormat format = TexelFormat::Float; // displacement.format: applied to the texels at load (r16_float: half)
+  MipMode mip = MipMode::None;     // displacement.mip: the chain below is built at load only when not None
   // Filled by loadScene: texels (row-major, z rows of x texels, 0..1), texture size.
   std::shared_ptr<const std::vector<float>> texels;
   int texWidth = 0, texHeight = 0;
+  // Filled by loadScene when mip != None: levels 1..n of a box-filtered chain down to 1 x 1 (after format).
+  std::shared_ptr<const std::vector<MipLevel>> mips;
 };
 
 enum class LodScheme : uint8_t {
@@ -108,6 +132,16 @@ enum class LodScheme : uint8_t {
   ClipDiameter,   // "clip_diameter": clip-space sphere diameter (lod::clipDiameter)
   PatchCenter,    // "patch_center": deliberately broken (lod::patchCenter): screen_sphere, but every edge's sphere
                   // sits at the patch centre instead of the edge midpoint (neighbours disagree)
+  Geomorph,       // "geomorph": geomorphing (lod::geomorphLevel, lod::geomorph): float level per patch, integer
+                  // partitioning at 2^(floor(L) + 1), borders at the coarser level, inserted vertices morphed by the
+                  // domain shader (needs tessellation.partitioning = "integer" and patches of one size)
+};
+
+// Height bounds of each patch's culling box (lod.height_bounds).
+enum class HeightBounds : uint8_t {
+  Global,   // "global" (default): the displacement's whole range [min(0, scale), max(0, scale)] for every patch
+  PerPatch, // "per_patch": Luna's BoundsY: min/max of the texels the patch's bilinear samples can reach (all mip
+            // levels when displacement.mip is set), times height_scale
 };
 
 // Clamp applied where a patch meets a neighbour of a different size (lod.adjacency_clamp = "none" | "integer" |
@@ -129,13 +163,23 @@ struct Lod {
   // maxTessExponent = lod.min_tess, lod.max_tess; frustumCull = lod.frustum_cull.
   lod::DistancePow2Params distancePow2{};
   // bonaventura: the distances as distance_pow2; minExponent, maxExponent = lod.min_tess, lod.max_tess;
-  // angleCorrection = lod.angle_correction; rank = lod.rank (0..2); minFactor, maxFactor; frustumCull.
-  lod::BonaventuraParams bonaventura{};
+  // angleCorrection = lod.angle_correction; rank = lod.rank (0..2; the scene's default is 0.4, the thesis' value;
+  // lod.h's default for the scheme alone stays 0.5); minFactor, maxFactor; frustumCull.
+  lod::BonaventuraParams bonaventura = sceneBonaventura();
   // clip_diameter: edgesPerScreenHeight = lod.edges_per_screen_height (> 0); minFactor, maxFactor; frustumCull =
   // lod.frustum_cull, which defaults to true here (lod.h's default for the scheme alone is false).
   lod::ClipDiameterParams clipDiameter = sceneClipDiameter();
+  // geomorph: minDistance, maxDistance = lod.min_distance, lod.max_distance; finestLevel, coarsestLevel =
+  // lod.finest_level, lod.coarsest_level (each in [0, 5]); literalArticleWeight = lod.literal_article_weight.
+  lod::GeomorphParams geomorph{};
   bool displacedCorners = true;  // lod.displaced_corners: corners raised to their height for the LOD (NVIDIA VS)
+  HeightBounds heightBounds = HeightBounds::Global; // lod.height_bounds
 
+  static lod::BonaventuraParams sceneBonaventura() {
+    lod::BonaventuraParams p;
+    p.rank = 0.4f;
+    return p;
+  }
   static lod::ClipDiameterParams sceneClipDiameter() {
     lod::ClipDiameterParams p;
     p.frustumCull = true;
@@ -588,6 +632,9 @@ const char* toString(LodScheme s);
 const char* toString(AdjacencyClamp c);
 const char* toString(lod::Reconstruction r);
 const char* toString(LerpFormula f);
+const char* toString(MipMode m);
+const char* toString(TexelFormat f);
+const char* toString(HeightBounds b);
 const char* toString(Kernel k);
 bool parseKernel(const char* s, Kernel& out);
 

@@ -39,8 +39,8 @@ bool FrustumTest::inside(const glm::vec3& p) const {
   return w > 0 && std::fabs(c[0]) < w && std::fabs(c[1]) < w && c[2] > -w && c[2] < w;
 }
 
-Visibility patchVisibility(const TerrainData& t, const TerrainPatch& p, const FrustumTest& frustum, int grid,
-                           glm::vec3* point, WorkStats& work) {
+Visibility patchVisibility(const TerrainData& t, const TerrainPatch& p, const PatchDomain* domain,
+                           const FrustumTest& frustum, int grid, glm::vec3* point, WorkStats& work) {
   glm::dvec3 lo(p.corners[0]), hi(p.corners[0]);
   for (const glm::vec3& c : p.corners) {
     lo = glm::min(lo, glm::dvec3(c));
@@ -58,7 +58,7 @@ Visibility patchVisibility(const TerrainData& t, const TerrainPatch& p, const Fr
     for (int i = 0; i < n; ++i) {
       const float u = static_cast<float>(i) / static_cast<float>(n - 1);
       const float v = static_cast<float>(j) / static_cast<float>(n - 1);
-      const glm::vec3 w = evalDomain(t, p, u, v, work);
+      const glm::vec3 w = evalDomain(t, p, u, v, domain, work);
       if (frustum.inside(w)) {
         if (point) *point = w;
         return Visibility::Visible;

@@ -71,6 +71,25 @@ LodResult geomorphLod(float level, float n0, float n1, float n2, float n3) {
   return r;
 }
 
+// The weight of an inserted vertex's true height on the border between a patch at `level` and its neighbour at
+// `neighbourLevel` (pass the patch's own level for its interior): the tween of the border level min(level,
+// neighbourLevel), which both sides compute alike; or, with literalArticleWeight, the article's
+// (1 - tween(neighbourLevel)) * tween(level), product rounded once.
+float geomorphWeight(float level, float neighbourLevel, GeomorphSettings s) {
+  float w = geomorphTween(min(level, neighbourLevel));
+  if (s.literalArticleWeight) {
+    w = (1.0f - geomorphTween(neighbourLevel)) * geomorphTween(level);
+  }
+  return w;
+}
+
+// An inserted vertex's morphed height: m = (previous + next) * 0.5, then m + weight * (height - m), each operation
+// rounded to float in that order (the sum, the halving, the difference, the product, the sum).
+float geomorphHeight(float height, float previousHeight, float nextHeight, float weight) {
+  float m = (previousHeight + nextHeight) * 0.5f;
+  return m + weight * (height - m);
+}
+
 struct GeomorphBorder {
   int segments;
   float heights[65];
@@ -84,10 +103,7 @@ GeomorphBorder geomorphBorderHeights(float level, float neighbourLevel, float fi
   float edgeLevel = min(level, neighbourLevel);
   int n = int(exp2(geomorphWhole(edgeLevel) + 1.0f));
   int step = 64 / n;
-  float w = geomorphTween(edgeLevel);
-  if (s.literalArticleWeight) {
-    w = (1.0f - geomorphTween(neighbourLevel)) * geomorphTween(level);
-  }
+  float w = geomorphWeight(level, neighbourLevel, s);
   b.segments = n;
   for (int k = 0; k < 65; ++k) {
     b.heights[k] = 0.0f;
@@ -95,8 +111,7 @@ GeomorphBorder geomorphBorderHeights(float level, float neighbourLevel, float fi
   for (int k = 0; k <= n; ++k) {
     float h = fine[k * step];
     if (k - (k / 2) * 2 == 1) {
-      float m = (fine[(k - 1) * step] + fine[(k + 1) * step]) * 0.5f;
-      h = m + w * (h - m);
+      h = geomorphHeight(h, fine[(k - 1) * step], fine[(k + 1) * step], w);
     }
     b.heights[k] = h;
   }

@@ -89,3 +89,20 @@ TEST_CASE("geomorph: the article's literal inserted-vertex weight is not symmetr
   CHECK(bits(b.heights[1]) == bits(128.0f - 64.0f * 0.125f));
   CHECK(bits(a.heights[1]) != bits(b.heights[1]));
 }
+
+TEST_CASE("geomorph: the per-vertex pieces (weight, morphed height), hand-computed", "[lod][geomorph]") {
+  // Border weight: the tween of min(L, Ln), the same from both sides.
+  CHECK(bits(geomorphWeight(2.25f, 3.5f)) == bits(0.25f));
+  CHECK(bits(geomorphWeight(3.5f, 2.25f)) == bits(0.25f));
+  CHECK(bits(geomorphWeight(2.75f, 2.75f)) == bits(0.75f));
+  // The article's weight (1 - tween(Ln)) * tween(L): (1 - 0.5) * 0.25 = 0.125 one way, (1 - 0.25) * 0.5 = 0.375 the
+  // other.
+  GeomorphParams lit;
+  lit.literalArticleWeight = true;
+  CHECK(bits(geomorphWeight(2.25f, 3.5f, lit)) == bits(0.125f));
+  CHECK(bits(geomorphWeight(3.5f, 2.25f, lit)) == bits(0.375f));
+  // m = (2 + 6) * 0.5 = 4; 4 + 0.25 * (8 - 4) = 5. Tween 0: the midpoint; tween 1: the true height.
+  CHECK(bits(geomorphHeight(8.0f, 2.0f, 6.0f, 0.25f)) == bits(5.0f));
+  CHECK(bits(geomorphHeight(8.0f, 2.0f, 6.0f, 0.0f)) == bits(4.0f));
+  CHECK(bits(geomorphHeight(8.0f, 2.0f, 6.0f, 1.0f)) == bits(8.0f));
+}

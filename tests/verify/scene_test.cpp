@@ -42,7 +42,8 @@ void requireError(const SceneResult& r, const std::vector<std::string>& parts) {
 } // namespace
 
 TEST_CASE("bundled example scenes load", "[verify][scene]") {
-  for (const char* name : {"terrain.toml", "grid.toml", "rings_small.toml", "broken_lod.toml", "luna.toml"}) {
+  for (const char* name : {"terrain.toml", "grid.toml", "rings_small.toml", "broken_lod.toml", "luna.toml", "geomorph.toml",
+                           "bonaventura_mip.toml", "luna_r16.toml"}) {
     INFO(name);
     Scene s = loadExample(name);
     CHECK(prepared(s).patchCount() > 0);
