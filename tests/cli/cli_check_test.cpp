@@ -162,7 +162,7 @@ TEST_CASE("check: the bundled scene is watertight with the pow2 workaround, crac
     }
     CHECK(smallSide.at("lod").at("neighbour_size") == 2.0);
     CHECK(bigSide.at("lod").at("neighbour_size") == 0.5);
-    CHECK(f.at("cause").get<std::string>().find("(lod integer clamp, rebuilt edge_vector)") != std::string::npos);
+    CHECK(f.at("cause").get<std::string>().find("(lod integer clamp, rebuilt resampled)") != std::string::npos);
   }
 }
 
