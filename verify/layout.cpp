@@ -261,7 +261,8 @@ void prepareLod(TerrainData& t) {
         // rebuilds by the edge vector (lod::rebuiltCorner, the shader's own function, so the x/z bits agree).
         if (resample) {
           const bool odd = alongX ? tn.oddU : tn.oddV;
-          const glm::vec3 c = lod::rebuiltCorner(p.lod.corners[kEdgeCorners[e][0]], p.lod.corners[kEdgeCorners[e][1]], odd);
+          const glm::vec3 c =
+              lod::rebuiltCorner(p.lod.corners[kEdgeCorners[e][0]], p.lod.corners[kEdgeCorners[e][1]], odd);
           tn.rebuiltHeight[e] = heightAt(t, c.x, c.z, t.work);
         }
       }
