@@ -321,7 +321,7 @@ TEST_CASE("tile rule, every scheme: the smaller side takes the scheme's factor o
   }
 }
 
-TEST_CASE("tile rule: the integer clamp is the sample's recipe; NaN stays visible", "[lod][nvidia_tile][tile_rule]") {
+TEST_CASE("tile rule: the integer clamp is the sample's recipe, NaN stays visible", "[lod][nvidia_tile][tile_rule]") {
   TileNeighbours n;
   n.size[0] = 2.0f; // Ueq0: smaller side
   n.size[2] = 0.5f; // Ueq1: larger side
