@@ -12,4 +12,13 @@ PatchLod distancePow2(const Patch& patch, const Camera& camera, const DistancePo
   return detail::fromGlsl(r, Scheme::DistancePow2);
 }
 
+PatchLod distancePow2Tile(const Patch& patch, const TileNeighbours& neighbours, const Camera& camera,
+                          const DistancePow2Params& params, const TileAdjacency& adjacency) {
+  const glm::vec3* c = patch.corners;
+  glsl::LodResult r = glsl::distancePow2TileLod(c[0], c[1], c[2], c[3], patch.useHeightBounds, patch.minHeight,
+                                                patch.maxHeight, detail::toGlsl(neighbours), detail::toGlsl(camera),
+                                                detail::toGlsl(params), detail::toGlsl(adjacency));
+  return detail::fromGlsl(r, Scheme::DistancePow2);
+}
+
 } // namespace fftess::lod

@@ -54,6 +54,18 @@ glsl::LodCamera toGlsl(const Camera& camera) {
   return c;
 }
 
+int clampCode(AdjacencyClamp clamp) {
+  return clamp == AdjacencyClamp::Integer ? glsl::kClampInteger
+         : clamp == AdjacencyClamp::Pow2  ? glsl::kClampPow2
+                                          : glsl::kClampNone;
+}
+
+int rebuildCode(Reconstruction reconstruction) {
+  return reconstruction == Reconstruction::FarCorner   ? glsl::kRebuildFarCorner
+         : reconstruction == Reconstruction::Resampled ? glsl::kRebuildResampled
+                                                       : glsl::kRebuildEdgeVector;
+}
+
 int insideRuleCode(InsideRule rule) {
   switch (rule) {
   case InsideRule::Min:
@@ -80,10 +92,15 @@ glsl::ScreenSphereSettings toGlsl(const ScreenSphereParams& p) {
 glsl::TileSettings toGlsl(const NvidiaTileParams& p) {
   glsl::TileSettings s;
   s.sphere = toGlsl(p.sphere);
-  s.clampMode = p.clamp == AdjacencyClamp::Integer ? glsl::kClampInteger
-                : p.clamp == AdjacencyClamp::Pow2  ? glsl::kClampPow2
-                                                   : glsl::kClampNone;
-  s.rebuild = p.reconstruction == Reconstruction::FarCorner ? glsl::kRebuildFarCorner : glsl::kRebuildEdgeVector;
+  s.clampMode = clampCode(p.clamp);
+  s.rebuild = rebuildCode(p.reconstruction);
+  return s;
+}
+
+glsl::AdjacencySettings toGlsl(const TileAdjacency& p) {
+  glsl::AdjacencySettings s;
+  s.clampMode = clampCode(p.clamp);
+  s.rebuild = rebuildCode(p.reconstruction);
   return s;
 }
 
@@ -92,6 +109,7 @@ glsl::TileNeighbourInfo toGlsl(const TileNeighbours& t) {
   for (int i = 0; i < 4; ++i) {
     n.size[i] = t.size[i];
     n.farCorner[i] = t.farCorner[i];
+    n.rebuiltHeight[i] = t.rebuiltHeight[i];
   }
   n.oddU = t.oddU;
   n.oddV = t.oddV;

@@ -70,7 +70,8 @@ enum class InsideRule : uint8_t { Average, Min, Max };
 // ---------------------------------------------------------------------------------------------------------------
 // Outputs: factors plus the reason for each.
 
-enum class Scheme : uint8_t { ScreenSphere, NvidiaTile, DistancePow2, Bonaventura, ClipDiameter, Geomorph, PatchCenter };
+enum class Scheme : uint8_t { ScreenSphere, NvidiaTile, DistancePow2, Bonaventura, ClipDiameter, Geomorph, PatchCenter,
+                              Constant };
 
 // Bits of FactorWhy::fixes: which clamp, fix or literal-source switch changed a factor.
 enum Fix : uint32_t {
@@ -78,10 +79,10 @@ enum Fix : uint32_t {
   FixClampedMin = 1u << 0,        // raised to the scheme's minimum factor
   FixClampedMax = 1u << 1,        // lowered to the scheme's maximum factor
   FixCulled = 1u << 2,            // the patch was culled; the factor is the cull value
-  FixLargerNeighbour = 1u << 3,   // NVIDIA: neighbour twice the size; its edge was rebuilt and half its factor taken
-  FixSmallerNeighbour = 1u << 4,  // NVIDIA: neighbour half the size; this is the larger side of the jump
-  FixIntegerClamp = 1u << 5,      // NVIDIA integer clamp rounded this factor
-  FixPow2Clamp = 1u << 6,         // NVIDIA power-of-two clamp rounded this factor
+  FixLargerNeighbour = 1u << 3,   // tile rings: neighbour twice the size; its edge was rebuilt and half its factor taken
+  FixSmallerNeighbour = 1u << 4,  // tile rings: neighbour half the size; this is the larger side of the jump
+  FixIntegerClamp = 1u << 5,      // tile rings: the integer adjacency clamp rounded this factor
+  FixPow2Clamp = 1u << 6,         // tile rings: the power-of-two adjacency clamp rounded this factor
   FixAngleCorrection = 1u << 7,   // Bonaventura camera-angle correction applied
   FixRoundedExponent = 1u << 8,   // Bonaventura: exponent rounded to an integer
   FixCoarserNeighbour = 1u << 9,  // geomorphing: the edge follows the coarser neighbour's level
@@ -139,20 +140,29 @@ PatchLod patchCenter(const Patch& patch, const Camera& camera, const ScreenSpher
 //   * neighbour 0.5 (this patch is the larger side): its own edge factor.
 //   * the adjacency clamp, applied to both sides of a jump (a switch, so the verifier can show what each buys):
 //       None:    as above;
-//       Integer: larger side rounded up to an even integer, smaller side = that / 2 (the sample's recipe);
-//       Pow2:    larger side rounded up to a power of two in [4, 64], smaller side = that / 2, in [2, 32].
+//       Integer: larger side rounded up to an even integer and kept in [4, 64], smaller side = that / 2, in
+//                [2, 32] (the sample's recipe); NaN stays NaN;
+//       Pow2:    larger side rounded up to a power of two in [4, 64], smaller side = that / 2, in [2, 32]
+//                (a NaN factor becomes 4, by comparisons).
 // The eight boundary cases of the sample's constant hull shader are these two cases on each of the four edges.
+// The same rule for the other schemes (their own edge factor on the rebuilt edge): section 7.
 enum class AdjacencyClamp : uint8_t { None, Integer, Pow2 };
 
 // How the smaller patch gets the far end of its larger neighbour's edge.
 enum class Reconstruction : uint8_t {
-  // The sample: move the corner by the edge vector (p1 + (p1 - p0) or p0 - (p1 - p0)), then give the rebuilt end
-  // the height (y) of the corner it was moved from ("make vertex heights agree"). Bitwise agreement with the
-  // larger patch only on flat terrain whose positions are exact in float.
+  // The sample's vector math, literally: move the corner by the edge vector (rebuiltCorner: p1 + (p1 - p0) or
+  // p0 - (p1 - p0)) and keep the height (y) of the corner it was moved from. Bitwise agreement with the larger
+  // patch only where that height equals the far corner's (flat terrain, or corners not raised) and the positions
+  // are exact in float.
   EdgeVector,
   // The far end is TileNeighbours::farCorner[edge] (the larger patch's own corner, displaced height included):
-  // the two sides compute the same sphere from the same two points, so they agree bitwise.
+  // the two sides compute the same factor from the same two points, so they agree bitwise.
   FarCorner,
+  // The sample's intent ("MakeVertexHeightsAgree": re-acquire the moved vertex's height): x/z from rebuiltCorner
+  // as EdgeVector, y = TileNeighbours::rebuiltHeight[edge], the displacement sampled at that x/z as the vertex
+  // shader samples corner heights. Agrees with the larger patch bitwise when rebuiltCorner's x/z equal the far
+  // corner's x/z (the sampler is a function of x/z).
+  Resampled,
 };
 
 struct TileNeighbours {
@@ -166,6 +176,9 @@ struct TileNeighbours {
   bool oddV = false;
   // Reconstruction::FarCorner only: the far end of the larger neighbour's edge, per edge with size 2.
   glm::vec3 farCorner[4]{};
+  // Reconstruction::Resampled only: per edge with size 2, the height of the terrain at the x/z of
+  // rebuiltCorner(start, end, odd) of that edge (what the vertex shader would sample there). Finite.
+  float rebuiltHeight[4] = {0.0f, 0.0f, 0.0f, 0.0f};
 };
 
 struct NvidiaTileParams {
@@ -176,6 +189,14 @@ struct NvidiaTileParams {
 
 PatchLod nvidiaTile(const Patch& patch, const TileNeighbours& neighbours, const Camera& camera,
                     const NvidiaTileParams& params = {});
+
+// The far end of the larger neighbour's edge by the edge vector (lod/shaders/nvidia_tile.glsl rebuiltCorner), for
+// edge start -> end of a patch (corners in D3D edge order, see edgeStartCorner in common.glsl: Ueq0 = 0-2, Veq0 =
+// 0-1, Ueq1 = 1-3, Veq1 = 2-3). In float: edge = end - start; odd == false: end + edge, y = end.y; odd == true:
+// start - edge, y = start.y. odd: TileNeighbours::oddV for Ueq0/Ueq1, oddU for Veq0/Veq1. A caller that fills
+// TileNeighbours::rebuiltHeight samples its height at this x/z: the shader rebuilds the same bits.
+//   start, end: any floats (finite for a meaningful result).
+glm::vec3 rebuiltCorner(glm::vec3 start, glm::vec3 end, bool odd);
 
 // The sample's AssignNeighbourSizes for one tile of one ring. A ring is a square of outerWidth x outerWidth tiles
 // with a centred hole of holeWidth x holeWidth tiles (holeWidth = 0 for the innermost ring; outerWidth and
@@ -289,6 +310,44 @@ GeomorphEdge geomorphEdgeHeights(float level, float neighbourLevel, const float 
 float geomorphWeight(float level, float neighbourLevel, const GeomorphParams& params = {});
 // geomorphHeight: m = (previousHeight + nextHeight) * 0.5; m + weight * (height - m), rounded in that order.
 float geomorphHeight(float height, float previousHeight, float nextHeight, float weight);
+
+// ---------------------------------------------------------------------------------------------------------------
+// 7. The tile-ring neighbour rule for every other scheme (nvidiaTile is the screen-space sphere's). Each function
+// is the scheme's own function (same culling, same inside factors, same edges without a jump), except on an edge
+// whose TileNeighbours::size is 2 or 0.5:
+//   * size 2 (smaller side): the larger neighbour's edge is rebuilt (adjacency.reconstruction, as for nvidiaTile),
+//     the scheme's own edge rule is evaluated on it, and larger(that factor) / 2 is written; the record (metric,
+//     unclamped, exponent, fixes) is the rebuilt edge's, plus FixLargerNeighbour and the clamp's bit;
+//   * size 0.5 (larger side): larger(own edge factor), plus FixSmallerNeighbour and the clamp's bit;
+//   * larger(F) is adjacency.clamp's rule (section 2): F, the integer clamp or the power-of-two clamp.
+// A culled patch is returned as the scheme culls it (no adjacency fix).
+struct TileAdjacency {
+  AdjacencyClamp clamp = AdjacencyClamp::Pow2;                // the sample's workaround by default
+  Reconstruction reconstruction = Reconstruction::EdgeVector; // Resampled needs TileNeighbours::rebuiltHeight
+};
+
+// distancePow2 with the neighbour rule: the rebuilt edge's factor is 2^exponent of its midpoint's distance.
+// patch, camera, params: as distancePow2. neighbours: sizes 0.5 / 1 / 2 per edge, parity, and farCorner or
+// rebuiltHeight where the reconstruction needs them.
+PatchLod distancePow2Tile(const Patch& patch, const TileNeighbours& neighbours, const Camera& camera,
+                          const DistancePow2Params& params = {}, const TileAdjacency& adjacency = {});
+
+// bonaventura with the neighbour rule: the rebuilt edge's factor is Bonaventura's at its midpoint (angle
+// correction, rounded exponent, factor clamps). Why::cornerLevel stays the patch's own.
+// patch, camera, params: as bonaventura. neighbours: as distancePow2Tile.
+PatchLod bonaventuraTile(const Patch& patch, const TileNeighbours& neighbours, const Camera& camera,
+                         const BonaventuraParams& params = {}, const TileAdjacency& adjacency = {});
+
+// clipDiameter with the neighbour rule: the rebuilt edge's factor is clipDiameter's edge rule on its two ends.
+// patch, camera, params: as clipDiameter. neighbours: as distancePow2Tile.
+PatchLod clipDiameterTile(const Patch& patch, const TileNeighbours& neighbours, const Camera& camera,
+                          const ClipDiameterParams& params = {}, const TileAdjacency& adjacency = {});
+
+// A constant factor on every edge and inside, with the neighbour rule: the rebuilt edge's factor is `factor` too,
+// so the smaller side writes larger(factor) / 2 and the larger side larger(factor). No camera, no culling; the
+// record's metric is 0 and unclamped = factor; Why::scheme is Scheme::Constant.
+// factor: any float (> 0 to be drawn; NaN stays NaN with None and Integer).
+PatchLod constantTile(float factor, const TileNeighbours& neighbours, const TileAdjacency& adjacency = {});
 
 // ---------------------------------------------------------------------------------------------------------------
 // Printing helpers for the CLI.

@@ -33,6 +33,8 @@ const char* schemeName(Scheme scheme) {
     return "geomorph";
   case Scheme::PatchCenter:
     return "patch_center";
+  case Scheme::Constant:
+    return "constant";
   }
   return "";
 }

@@ -14,6 +14,13 @@ PatchLod nvidiaTile(const Patch& patch, const TileNeighbours& neighbours, const 
   return detail::fromGlsl(r, Scheme::NvidiaTile);
 }
 
+glm::vec3 rebuiltCorner(glm::vec3 start, glm::vec3 end, bool odd) { return glsl::rebuiltCorner(start, end, odd); }
+
+PatchLod constantTile(float factor, const TileNeighbours& neighbours, const TileAdjacency& adjacency) {
+  return detail::fromGlsl(glsl::constantTileLod(factor, detail::toGlsl(neighbours), detail::toGlsl(adjacency)),
+                          Scheme::Constant);
+}
+
 // The sample's AssignNeighbourSizes: a tile on the ring's outer border faces the next ring out (tiles twice the
 // size) unless this ring is the outermost; a tile bordering the hole faces the ring in (tiles half the size).
 TileSides assignNeighbourSizes(int tileX, int tileZ, int holeWidth, int outerWidth, bool outermost) {

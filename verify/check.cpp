@@ -95,7 +95,13 @@ Report checkTerrain(const TerrainData& t, const Camera& camera, const CheckOptio
   std::vector<lod::PatchLod> factors;
   computeFactors(t, camera, factors, rep.work);
   const lod::Camera lodCamera = toLodCamera(camera);
-  if (faultPatch) {
+  if (faultPatch && fault.kind == Fault::Kind::NeighbourSize && t.adjacency &&
+      t.scene.lod.scheme != LodScheme::Geomorph) {
+    const TerrainPatch& P = t.patches[static_cast<size_t>(fault.patch)];
+    lod::TileNeighbours wrong = P.tile;
+    wrong.size[fault.edge] = fault.size;
+    factors[static_cast<size_t>(fault.patch)] = patchLod(t, P, wrong, lodCamera);
+  } else if (faultPatch) {
     float& f = factors[static_cast<size_t>(fault.patch)].factors[fault.edge];
     f = perturbFactor(fault, f);
   }

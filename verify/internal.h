@@ -103,6 +103,11 @@ lod::Camera toLodCamera(const Camera& c);
 // Hull-shader factors and lod/'s record of every patch for a camera (lod.h order). Adds the lod/ calls to
 // work.lodEvaluations. Constant scheme: every factor lod.factor, an empty record.
 void computeFactors(const TerrainData& t, const Camera& camera, std::vector<lod::PatchLod>& out, WorkStats& work);
+// One patch's factors with the given tile neighbours (every scheme but geomorph, whose factors need its
+// neighbours' levels): what computeFactors runs per patch; the fault injection's NeighbourSize runs it with a
+// wrong size.
+lod::PatchLod patchLod(const TerrainData& t, const TerrainPatch& p, const lod::TileNeighbours& neighbours,
+                       const lod::Camera& cam);
 // The neighbour rule of edge e of patch p as the LOD applied it (EdgeLod's neighbourSize, clamp, reconstruction).
 void neighbourRule(const TerrainData& t, const TerrainPatch& p, int e, EdgeLod& out);
 // Per camera, per patch: what the domain shader reads besides the prepared terrain. Built by domainCamera from the

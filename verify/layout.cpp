@@ -273,7 +273,8 @@ void patchTexelRange(const Displacement& d, const TerrainPatch& p, float& lo, fl
 }
 
 // What lod/ sees of each patch: its corners raised to the heights the vertex shader samples (lod.displaced_corners)
-// and the culling box's height bounds; on tile rings with adjacency, the neighbour sizes, parity and far corners.
+// and the culling box's height bounds; on tile rings with adjacency, the neighbour sizes, parity, far corners and
+// (lod.reconstruction = "resampled" with raised corners) the heights at the rebuilt corners.
 void prepareLod(TerrainData& t) {
   const Scene& s = t.scene;
   const bool displaced = s.displacement.kind != DisplacementKind::None;
@@ -322,6 +323,9 @@ void prepareSurfaceBounds(TerrainData& t) {
 
 // Tile rings with size jumps: the neighbour sizes, parity and far corners lod::nvidiaTile needs.
 void prepareNeighbours(TerrainData& t) {
+  const Scene& s = t.scene;
+  const bool raise = s.lod.displacedCorners && s.displacement.kind != DisplacementKind::None;
+  const bool resample = raise && s.lod.screenSphere.reconstruction == lod::Reconstruction::Resampled;
   for (TerrainPatch& p : t.patches) {
     lod::TileNeighbours& tn = p.tile;
     tn.oddU = ((p.ux / p.size) & 1) != 0;
@@ -341,6 +345,14 @@ void prepareNeighbours(TerrainData& t) {
         const int64_t qlo = alongX ? q.ux : q.uz;
         const int farIdx = (qlo == lo) ? kEdgeCorners[oe][1] : kEdgeCorners[oe][0];
         tn.farCorner[e] = q.lod.corners[farIdx];
+        // lod.reconstruction = "resampled": the height the vertex shader would sample at the corner the small side
+        // rebuilds by the edge vector (lod::rebuiltCorner, the shader's own function, so the x/z bits agree).
+        if (resample) {
+          const bool odd = alongX ? tn.oddU : tn.oddV;
+          const glm::vec3 c =
+              lod::rebuiltCorner(p.lod.corners[kEdgeCorners[e][0]], p.lod.corners[kEdgeCorners[e][1]], odd);
+          tn.rebuiltHeight[e] = heightAt(t, c.x, c.z, t.work);
+        }
       }
     }
   }

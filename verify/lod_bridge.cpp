@@ -12,11 +12,51 @@ lod::Camera toLodCamera(const Camera& c) {
                          glm::vec2(static_cast<float>(c.width), static_cast<float>(c.height)));
 }
 
+lod::PatchLod patchLod(const TerrainData& t, const TerrainPatch& p, const lod::TileNeighbours& neighbours,
+                       const lod::Camera& cam) {
+  const Lod& L = t.scene.lod;
+  const bool tile = t.adjacency;
+  const lod::TileAdjacency adj{L.screenSphere.clamp, L.screenSphere.reconstruction};
+  switch (L.scheme) {
+  case LodScheme::ScreenSphere:
+    return tile ? lod::nvidiaTile(p.lod, neighbours, cam, L.screenSphere) : lod::screenSphere(p.lod, cam, L.screenSphere.sphere);
+  case LodScheme::PatchCenter: return lod::patchCenter(p.lod, cam, L.screenSphere.sphere);
+  case LodScheme::DistancePow2:
+    return tile ? lod::distancePow2Tile(p.lod, neighbours, cam, L.distancePow2, adj)
+                : lod::distancePow2(p.lod, cam, L.distancePow2);
+  case LodScheme::Bonaventura:
+    return tile ? lod::bonaventuraTile(p.lod, neighbours, cam, L.bonaventura, adj)
+                : lod::bonaventura(p.lod, cam, L.bonaventura);
+  case LodScheme::ClipDiameter:
+    return tile ? lod::clipDiameterTile(p.lod, neighbours, cam, L.clipDiameter, adj)
+                : lod::clipDiameter(p.lod, cam, L.clipDiameter);
+  case LodScheme::Constant:
+    if (tile) return lod::constantTile(L.factor, neighbours, adj);
+    {
+      lod::PatchLod r;
+      for (float& x : r.factors) x = L.factor;
+      return r;
+    }
+  case LodScheme::Geomorph: break; // levels need the neighbours' levels: computeFactors
+  }
+  return lod::PatchLod{};
+}
+
 void computeFactors(const TerrainData& t, const Camera& camera, std::vector<lod::PatchLod>& out, WorkStats& work) {
   const Lod& L = t.scene.lod;
   out.resize(t.patches.size());
+  // The tile-ring neighbour rule runs for every scheme but patch_center (a negative control, left as it is) where
+  // patches of different sizes meet; the clamp and the reconstruction are the scene's lod.adjacency_clamp and
+  // lod.reconstruction (held in L.screenSphere for every scheme).
+  const bool tile = t.adjacency;
+  const lod::TileAdjacency adj{L.screenSphere.clamp, L.screenSphere.reconstruction};
   if (L.scheme == LodScheme::Constant) {
-    for (lod::PatchLod& r : out) {
+    for (size_t i = 0; i < t.patches.size(); ++i) {
+      lod::PatchLod& r = out[i];
+      if (tile) {
+        r = lod::constantTile(L.factor, t.patches[i].tile, adj);
+        continue;
+      }
       r = lod::PatchLod{};
       for (float& x : r.factors) x = L.factor;
     }
@@ -39,21 +79,7 @@ void computeFactors(const TerrainData& t, const Camera& camera, std::vector<lod:
     work.lodEvaluations += static_cast<int64_t>(t.patches.size());
     return;
   }
-  for (size_t i = 0; i < t.patches.size(); ++i) {
-    const TerrainPatch& p = t.patches[i];
-    switch (L.scheme) {
-    case LodScheme::ScreenSphere:
-      out[i] = t.adjacency ? lod::nvidiaTile(p.lod, p.tile, cam, L.screenSphere)
-                           : lod::screenSphere(p.lod, cam, L.screenSphere.sphere);
-      break;
-    case LodScheme::PatchCenter: out[i] = lod::patchCenter(p.lod, cam, L.screenSphere.sphere); break;
-    case LodScheme::DistancePow2: out[i] = lod::distancePow2(p.lod, cam, L.distancePow2); break;
-    case LodScheme::Bonaventura: out[i] = lod::bonaventura(p.lod, cam, L.bonaventura); break;
-    case LodScheme::ClipDiameter: out[i] = lod::clipDiameter(p.lod, cam, L.clipDiameter); break;
-    case LodScheme::Constant:
-    case LodScheme::Geomorph: break;
-    }
-  }
+  for (size_t i = 0; i < t.patches.size(); ++i) out[i] = patchLod(t, t.patches[i], t.patches[i].tile, cam);
   work.lodEvaluations += static_cast<int64_t>(t.patches.size());
 }
 
@@ -96,7 +122,7 @@ DomainCamera domainCamera(const TerrainData& t, const std::vector<lod::PatchLod>
 
 void neighbourRule(const TerrainData& t, const TerrainPatch& p, int e, EdgeLod& out) {
   out.scheme = t.scene.lod.scheme;
-  const bool tileCode = t.adjacency && out.scheme == LodScheme::ScreenSphere;
+  const bool tileCode = t.adjacency && out.scheme != LodScheme::PatchCenter;
   out.neighbourSize = tileCode ? p.tile.size[e] : 1.0f;
   out.clamp = tileCode && out.neighbourSize != 1.0f ? t.scene.lod.screenSphere.clamp : AdjacencyClamp::None;
   out.reconstruction = t.scene.lod.screenSphere.reconstruction;
@@ -125,7 +151,7 @@ std::string lodWords(const EdgeSide& side) {
     if (!out.empty()) out += ", ";
     out += w;
   };
-  if (l.scheme == LodScheme::Constant) return out;
+  if (l.scheme == LodScheme::Constant && l.neighbourSize == 1.0f) return out; // lod/ did not run
   for (uint32_t bit = 1; bit <= lod::FixLiteralSource; bit <<= 1)
     if (l.why.fixes & bit) add(lod::fixName(static_cast<lod::Fix>(bit)));
   if (l.neighbourSize == 2.0f)

@@ -48,7 +48,8 @@ const Enum kClamps[] = {{"none", int(AdjacencyClamp::None)},
                         {"integer", int(AdjacencyClamp::Integer)},
                         {"pow2", int(AdjacencyClamp::Pow2)}};
 const Enum kReconstructions[] = {{"edge_vector", int(lod::Reconstruction::EdgeVector)},
-                                 {"far_corner", int(lod::Reconstruction::FarCorner)}};
+                                 {"far_corner", int(lod::Reconstruction::FarCorner)},
+                                 {"resampled", int(lod::Reconstruction::Resampled)}};
 const Enum kPartitionings[] = {{"integer", int(Partitioning::Integer)},
                                {"pow2", int(Partitioning::Pow2)},
                                {"fractional_odd", int(Partitioning::FractionalOdd)},
@@ -413,6 +414,19 @@ void readScene(Reader& r, const toml::table& root, Scene& s, const std::string& 
     r.enumeration(t, p, "height_bounds", kHeightBounds, L.heightBounds);
     lod::InsideRule inside = L.screenSphere.sphere.inside;
     if (r.enumeration(t, p, "inside", kInsideRules, inside)) L.screenSphere.sphere.inside = L.clipDiameter.inside = inside;
+    // The neighbour rule's keys, set explicitly where no neighbour rule runs, are refused (the defaults never are):
+    // only tile rings with more than one ring have size jumps, and patch_center never gets the rule.
+    for (const char* key : {"adjacency_clamp", "reconstruction"}) {
+      const toml::node* at = t.get(key);
+      if (!at) continue;
+      if (s.layout.kind != LayoutKind::TileRings || s.layout.rings < 2)
+        r.fail(p + key, at,
+               std::string("cannot apply: the layout has no size jumps (layout.kind = \"") + toString(s.layout.kind) +
+                   "\"" + (s.layout.kind == LayoutKind::TileRings ? " with layout.rings = 1" : "") +
+                   "); the neighbour rule runs only on tile_rings with rings >= 2");
+      if (L.scheme == LodScheme::PatchCenter)
+        r.fail(p + key, at, "cannot apply: lod.scheme = \"patch_center\" (a negative control) never gets the neighbour rule");
+    }
   }
 
   // [tessellation]

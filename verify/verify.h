@@ -125,13 +125,15 @@ struct Displacement {
 
 enum class LodScheme : uint8_t {
   Constant,       // "constant": every edge gets lod.factor (no camera, no lod/ call)
-  ScreenSphere,   // "screen_sphere": NVIDIA (lod::screenSphere; on tile rings lod::nvidiaTile with the adjacency
-                  // fix and lod.adjacency_clamp)
-  DistancePow2,   // "distance_pow2": Luna/Richards (lod::distancePow2)
-  Bonaventura,    // "bonaventura": rounded-exponent pow2 with camera-angle correction (lod::bonaventura)
-  ClipDiameter,   // "clip_diameter": clip-space sphere diameter (lod::clipDiameter)
+  ScreenSphere,   // "screen_sphere": NVIDIA (lod::screenSphere; on tile rings with size jumps lod::nvidiaTile)
+  DistancePow2,   // "distance_pow2": Luna/Richards (lod::distancePow2; with size jumps lod::distancePow2Tile)
+  Bonaventura,    // "bonaventura": rounded-exponent pow2 with camera-angle correction (lod::bonaventura; with size
+                  // jumps lod::bonaventuraTile)
+  ClipDiameter,   // "clip_diameter": clip-space sphere diameter (lod::clipDiameter; with size jumps
+                  // lod::clipDiameterTile)
   PatchCenter,    // "patch_center": deliberately broken (lod::patchCenter): screen_sphere, but every edge's sphere
-                  // sits at the patch centre instead of the edge midpoint (neighbours disagree)
+                  // sits at the patch centre instead of the edge midpoint (neighbours disagree); never gets the
+                  // tile-ring neighbour rule (lod.adjacency_clamp / lod.reconstruction are refused with it)
   Geomorph,       // "geomorph": geomorphing (lod::geomorphLevel, lod::geomorph): float level per patch, integer
                   // partitioning at 2^(floor(L) + 1), borders at the coarser level, inserted vertices morphed by the
                   // domain shader (needs tessellation.partitioning = "integer" and patches of one size)
@@ -143,9 +145,12 @@ enum class HeightBounds : uint8_t {
   PerPatch, // "per_patch": Luna's BoundsY: min/max of the texels the patch's bilinear samples can reach (all mip
             // levels when displacement.mip is set), times height_scale
 };
+// Every scheme but patch_center gets the tile-ring neighbour rule (lod.h section 2 and 7: the smaller side
+// rebuilds the larger neighbour's edge, takes the scheme's own factor of it and halves it; the clamp rounds both
+// sides) on tile rings with more than one ring; "constant" through lod::constantTile.
 
 // Clamp applied where a patch meets a neighbour of a different size (lod.adjacency_clamp = "none" | "integer" |
-// "pow2"; tile rings with screen_sphere only). See lod.h.
+// "pow2"; tile rings with size jumps, every scheme but patch_center). See lod.h.
 using AdjacencyClamp = lod::AdjacencyClamp;
 
 // The scene's LOD: lod/'s own parameter structs, handed to lod/ as they are (no copies in between). A TOML key that
@@ -156,9 +161,12 @@ struct Lod {
   float factor = 8;                           // lod.factor: constant
   // screen_sphere, patch_center. sphere.tessellatedTriWidth = lod.target_pixels (> 0); sphere.minFactor,
   // sphere.maxFactor = lod.min_factor, lod.max_factor (min <= max); sphere.frustumCull = lod.frustum_cull;
-  // clamp = lod.adjacency_clamp; reconstruction = lod.reconstruction ("edge_vector" | "far_corner": how the small
-  // side rebuilds its big neighbour's edge). clamp and reconstruction apply on tile rings only (lod::nvidiaTile).
-  lod::NvidiaTileParams screenSphere{};
+  // clamp = lod.adjacency_clamp; reconstruction = lod.reconstruction ("edge_vector" | "far_corner" | "resampled":
+  // how the small side rebuilds its big neighbour's edge). clamp and reconstruction are the neighbour rule's for
+  // every scheme (handed to the other schemes' lod::*Tile as a lod::TileAdjacency); they apply on tile rings with
+  // size jumps only, and setting either key anywhere else is a scene error. reconstruction defaults to Resampled
+  // here (lod.h's default for nvidiaTile alone is EdgeVector, which needs no heights).
+  lod::NvidiaTileParams screenSphere = sceneTile();
   // distance_pow2: minDistance, maxDistance = lod.min_distance, lod.max_distance (max > min); minTessExponent,
   // maxTessExponent = lod.min_tess, lod.max_tess; frustumCull = lod.frustum_cull.
   lod::DistancePow2Params distancePow2{};
@@ -178,6 +186,11 @@ struct Lod {
   static lod::BonaventuraParams sceneBonaventura() {
     lod::BonaventuraParams p;
     p.rank = 0.4f;
+    return p;
+  }
+  static lod::NvidiaTileParams sceneTile() {
+    lod::NvidiaTileParams p;
+    p.reconstruction = lod::Reconstruction::Resampled;
     return p;
   }
   static lod::ClipDiameterParams sceneClipDiameter() {
@@ -317,7 +330,8 @@ public:
   const std::vector<PatchGeometry>& patches() const; // patches()[i] is patch i
   const Extent& extent() const;
   // The work of building it: terrainBuilds = 1, heightSamples = the corner heights sampled (4 per patch when
-  // displaced, else 0). Checking never adds to it.
+  // displaced, else 0; plus one per rebuilt corner with lod.reconstruction = "resampled" and raised corners).
+  // Checking never adds to it.
   const WorkStats& stats() const;
   bool empty() const { return !data_; }
   const detail::TerrainData& data() const { return *data_; } // for verify's .cpp files
@@ -400,8 +414,9 @@ struct EdgeLod {
   LodScheme scheme = LodScheme::Constant; // the scene's scheme (Constant: lod/ did not run; why is empty)
   lod::FactorWhy why{};        // metric, unclamped factor, exponent and the fix bits (lod::Fix) of this edge
   bool culled = false;         // lod/ culled the patch (lod::Why::culled)
-  // The neighbour rule: the neighbour's size relative to this patch as handed to lod::nvidiaTile (0.5: this is
-  // the larger side, 2: the smaller side, which rebuilt the larger edge; 1: same size, or no adjacency code ran),
+  // The neighbour rule: the neighbour's size relative to this patch as handed to lod::nvidiaTile / lod::*Tile (0.5:
+  // this is the larger side, 2: the smaller side, which rebuilt the larger edge; 1: same size, or no adjacency code
+  // ran),
   // the clamp applied at the jump and how the larger edge was rebuilt (both meaningful only when size != 1).
   float neighbourSize = 1;
   AdjacencyClamp clamp = AdjacencyClamp::None;

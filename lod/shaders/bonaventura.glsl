@@ -1,5 +1,6 @@
 // fftess lod, scheme 4: rounded-exponent power of two with camera-angle correction (Bonaventura, "Terrain and
-// Ocean Rendering with Hardware Tessellation"). Needs common.glsl.
+// Ocean Rendering with Hardware Tessellation"). Needs common.glsl, and nvidia_tile.glsl for
+// bonaventuraTileLod (the tile-ring neighbour rule).
 //
 // At a point p: e0 = lerp(maxExp, minExp, s) as in distance_pow2.glsl; a = ((pi/2 - acos|c.e|) / (pi/2)) * rank
 // + 1 - rank/2 with c = (p - eye) / |p - eye| and e = up; exponent = e0 * a; factor = exp2(floor(exponent + 0.5)),
@@ -73,5 +74,26 @@ LodResult bonaventuraLod(vec3 c0, vec3 c1, vec3 c2, vec3 c3, bool useHeightBound
   r.cornerLevel[1] = bonaventuraExponent(c1, cam, s, false);
   r.cornerLevel[2] = bonaventuraExponent(c2, cam, s, false);
   r.cornerLevel[3] = bonaventuraExponent(c3, cam, s, s.literalFourthCornerAngle);
+  return r;
+}
+
+// With the tile-ring neighbour rule (nvidia_tile.glsl): the rebuilt edge's factor is bonaventuraAt of its midpoint
+// (angle correction, rounding and clamps included). Corner levels stay the patch's own.
+LodResult bonaventuraTileLod(vec3 c0, vec3 c1, vec3 c2, vec3 c3, bool useHeightBounds, float minHeight,
+                             float maxHeight, TileNeighbourInfo n, LodCamera cam, BonaventuraSettings s,
+                             AdjacencySettings adj) {
+  LodResult own = bonaventuraLod(c0, c1, c2, c3, useHeightBounds, minHeight, maxHeight, cam, s);
+  if (own.culled) {
+    return own;
+  }
+  LodResult r = own;
+  for (int e = 0; e < 4; ++e) {
+    EdgeLod rebuilt = own.e[e];
+    if (n.size[e] == 2.0f) {
+      RebuiltEdge big = largerNeighbourEdgeOf(e, c0, c1, c2, c3, n, adj.rebuild);
+      rebuilt = bonaventuraAt(midpoint(big.a, big.b), cam, s);
+    }
+    r.e[e] = neighbourRuleEdge(own.e[e], rebuilt, n.size[e], adj.clampMode);
+  }
   return r;
 }

@@ -1,5 +1,6 @@
 // fftess lod, scheme 5: clip-space sphere diameter (the "recommended method" of the tessellation-basics
-// article). Needs common.glsl.
+// article). Needs common.glsl, and nvidia_tile.glsl for
+// clipDiameterTileLod (the tile-ring neighbour rule).
 //
 // Per edge: clip = P * (V * (midpoint, 1)); metric = diameter * P[1][1] / clip.w (the sphere's diameter in NDC
 // units); factor = max(minFactor, metric * edgesPerScreenHeight), then min(maxFactor, ..). A midpoint on or behind
@@ -37,4 +38,24 @@ LodResult clipDiameterLod(vec3 c0, vec3 c1, vec3 c2, vec3 c3, bool useHeightBoun
   r.e[2] = clipDiameterEdge(c1, c3, cam, s);
   r.e[3] = clipDiameterEdge(c2, c3, cam, s);
   return withInsideFromEdges(r, s.insideRule);
+}
+
+// With the tile-ring neighbour rule (nvidia_tile.glsl): the rebuilt edge's factor is clipDiameterEdge of its ends.
+LodResult clipDiameterTileLod(vec3 c0, vec3 c1, vec3 c2, vec3 c3, bool useHeightBounds, float minHeight,
+                              float maxHeight, TileNeighbourInfo n, LodCamera cam, ClipDiameterSettings s,
+                              AdjacencySettings adj) {
+  LodResult own = clipDiameterLod(c0, c1, c2, c3, useHeightBounds, minHeight, maxHeight, cam, s);
+  if (own.culled) {
+    return own;
+  }
+  LodResult r = own;
+  for (int e = 0; e < 4; ++e) {
+    EdgeLod rebuilt = own.e[e];
+    if (n.size[e] == 2.0f) {
+      RebuiltEdge big = largerNeighbourEdgeOf(e, c0, c1, c2, c3, n, adj.rebuild);
+      rebuilt = clipDiameterEdge(big.a, big.b, cam, s);
+    }
+    r.e[e] = neighbourRuleEdge(own.e[e], rebuilt, n.size[e], adj.clampMode);
+  }
+  return r;
 }

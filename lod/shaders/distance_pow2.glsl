@@ -1,5 +1,6 @@
 // fftess lod, scheme 3: distance-based power of two (Luna, "3D Game Programming with DirectX 11", terrain
-// chapter; Richards). Needs common.glsl.
+// chapter; Richards). Needs common.glsl, and nvidia_tile.glsl for
+// distancePow2TileLod (the tile-ring neighbour rule).
 //
 // factor = exp2(lerp(maxExp, minExp, s)), s = clamp01((d - minDist) / (maxDist - minDist)), d = distance from
 // the edge midpoint (edges) or the patch centre (inside) to the eye. Culled patches get 0.
@@ -32,5 +33,25 @@ LodResult distancePow2Lod(vec3 c0, vec3 c1, vec3 c2, vec3 c3, bool useHeightBoun
   EdgeLod inside = distancePow2At(patchCentre(c0, c1, c2, c3), cam, s);
   r.e[4] = inside;
   r.e[5] = inside;
+  return r;
+}
+
+// With the tile-ring neighbour rule (nvidia_tile.glsl): the rebuilt edge's factor is distancePow2At of its midpoint.
+LodResult distancePow2TileLod(vec3 c0, vec3 c1, vec3 c2, vec3 c3, bool useHeightBounds, float minHeight,
+                              float maxHeight, TileNeighbourInfo n, LodCamera cam, DistancePow2Settings s,
+                              AdjacencySettings adj) {
+  LodResult own = distancePow2Lod(c0, c1, c2, c3, useHeightBounds, minHeight, maxHeight, cam, s);
+  if (own.culled) {
+    return own;
+  }
+  LodResult r = own;
+  for (int e = 0; e < 4; ++e) {
+    EdgeLod rebuilt = own.e[e];
+    if (n.size[e] == 2.0f) {
+      RebuiltEdge big = largerNeighbourEdgeOf(e, c0, c1, c2, c3, n, adj.rebuild);
+      rebuilt = distancePow2At(midpoint(big.a, big.b), cam, s);
+    }
+    r.e[e] = neighbourRuleEdge(own.e[e], rebuilt, n.size[e], adj.clampMode);
+  }
   return r;
 }

@@ -130,7 +130,8 @@ TEST_CASE("check: the bundled scene is watertight with the pow2 workaround, crac
   CHECK(svgOk(svg).find("id=\"inset\"") != std::string::npos);
 
   // The integer clamp alone still cracks from this camera, and only where the 16.16 model says it must: at 2x jumps
-  // whose factors nest as integers (big = 2 * small) but whose big factor is not a power of two.
+  // whose factors nest as integers (big = 2 * small, big >= 4: the sample's recipe, so never "2 beside 2 x 1") but
+  // whose big factor is not a power of two (tests/verify/adjacency_test.cpp checks every jump against the model).
   r = run({"check", kScene, "--set", "lod.adjacency_clamp=integer", "--json", js, "-q"});
   CHECK(r.status == 1);
   CHECK(r.out.empty());
@@ -147,6 +148,7 @@ TEST_CASE("check: the bundled scene is watertight with the pow2 workaround, crac
     const double small = (aBig ? b : a).at("processed_factor").get<double>();
     REQUIRE(a.at("patch").at("level").get<int>() != b.at("patch").at("level").get<int>());
     CHECK(big == 2 * small);
+    CHECK(big >= 4);
     CHECK(big == std::floor(big));
     const auto n = static_cast<uint64_t>(big);
     CHECK((n & (n - 1)) != 0); // not a power of two
@@ -160,7 +162,7 @@ TEST_CASE("check: the bundled scene is watertight with the pow2 workaround, crac
     }
     CHECK(smallSide.at("lod").at("neighbour_size") == 2.0);
     CHECK(bigSide.at("lod").at("neighbour_size") == 0.5);
-    CHECK(f.at("cause").get<std::string>().find("(lod integer clamp, rebuilt edge_vector)") != std::string::npos);
+    CHECK(f.at("cause").get<std::string>().find("(lod integer clamp, rebuilt resampled)") != std::string::npos);
   }
 }
 
@@ -228,6 +230,10 @@ TEST_CASE("check/sweep: bad scenes and overrides exit 2 with one line naming the
       {{"check", bad, "--json", report}, "rings"},
       {{"check", kScene, "--set", "lod.adjacency_clamp=sometimes", "--json", report}, "adjacency_clamp"},
       {{"check", kScene, "--set", "lod.no_such_key=1"}, "no_such_key"},
+      // A neighbour-rule key where no size jump exists: refused, naming the key and the file position.
+      {{"check", clitest::source("docs/examples/grid.toml"), "--set", "lod.adjacency_clamp=pow2"},
+       "--set lod.adjacency_clamp: cannot apply"},
+      {{"sweep", kScene, "--set", "layout.rings=1"}, "terrain.toml:26:19: lod.adjacency_clamp: cannot apply"},
       {{"check", kScene, "--set", "novalue"}, "novalue"},
       {{"check", kScene, "--kernel", "exactish"}, "--kernel"},
       {{"check", kScene, "--path-camera", "3"}, "--path-camera"},

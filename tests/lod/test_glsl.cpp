@@ -136,6 +136,7 @@ void main() {
   tn.oddV = true;
   for (int i = 0; i < 4; ++i) {
     tn.farCorner[i] = vec3(0.0f);
+    tn.rebuiltHeight[i] = 0.0f;
   }
   LodResult t = nvidiaTileLod(inPos[0], inPos[1], inPos[2], inPos[3], false, 0.0f, 0.0f, tn, cam, ts);
   DistancePow2Settings ds;
@@ -152,6 +153,15 @@ void main() {
   cs.edgesPerScreenHeight = 16.0f; cs.minFactor = 1.0f; cs.maxFactor = 64.0f; cs.insideRule = kInsideMax;
   cs.frustumCull = false; cs.culledFactor = 0.0f;
   LodResult c = clipDiameterLod(inPos[0], inPos[1], inPos[2], inPos[3], false, 0.0f, 0.0f, cam, cs);
+  // The neighbour rule for the other schemes (and the constant factor).
+  AdjacencySettings adj;
+  adj.clampMode = kClampInteger;
+  adj.rebuild = kRebuildResampled;
+  LodResult dt = distancePow2TileLod(inPos[0], inPos[1], inPos[2], inPos[3], true, -10.0f, 10.0f, tn, cam, ds, adj);
+  LodResult bt = bonaventuraTileLod(inPos[0], inPos[1], inPos[2], inPos[3], false, 0.0f, 0.0f, tn, cam, bs, adj);
+  LodResult ct = clipDiameterTileLod(inPos[0], inPos[1], inPos[2], inPos[3], false, 0.0f, 0.0f, tn, cam, cs, adj);
+  LodResult kt = constantTileLod(8.0f, tn, adj);
+  vec3 rebuilt = rebuiltCorner(inPos[0], inPos[2], tn.oddV);
   GeomorphSettings gs;
   gs.minDistance = 20.0f; gs.maxDistance = 500.0f; gs.finestLevel = 5.0f; gs.coarsestLevel = 0.0f;
   gs.literalArticleWeight = false;
@@ -166,7 +176,8 @@ void main() {
     // D3D Ueq0 Veq0 Ueq1 Veq1 = GL outer[0..3]; insideU insideV = inner[0..1].
     for (int i = 0; i < 4; ++i) {
       gl_TessLevelOuter[i] = max(max(r.e[i].factor, t.e[i].factor), max(d.e[i].factor, b.e[i].factor)) +
-                             c.e[i].factor * 0.0f + g.e[i].factor * 0.0f + pc.e[i].factor * 0.0f + border.heights[i] * 0.0f;
+                             c.e[i].factor * 0.0f + g.e[i].factor * 0.0f + pc.e[i].factor * 0.0f + border.heights[i] * 0.0f +
+                             (dt.e[i].factor + bt.e[i].factor + ct.e[i].factor + kt.e[i].factor + rebuilt.x) * 0.0f;
     }
     gl_TessLevelInner[0] = r.e[4].factor;
     gl_TessLevelInner[1] = r.e[5].factor;

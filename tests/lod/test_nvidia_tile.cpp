@@ -67,11 +67,11 @@ TEST_CASE("nvidiaTile: larger side rounds its own factor", "[lod][nvidia_tile]")
                  .factors[2]) == bits(32.0f));
   CHECK(bits(nvidiaTile(patch, n, cam, tileParams(14.0f, AdjacencyClamp::None, Reconstruction::EdgeVector))
                  .factors[2]) == bits(240.0f / 14.0f));
-  // 240 / 120 = 2 -> pow2 lower bound 4; integer 2.
+  // 240 / 120 = 2 -> pow2 lower bound 4; integer lower bound 4 too (the sample's recipe: larger side >= 4).
   CHECK(bits(nvidiaTile(patch, n, cam, tileParams(120.0f, AdjacencyClamp::Pow2, Reconstruction::EdgeVector))
                  .factors[2]) == bits(4.0f));
   CHECK(bits(nvidiaTile(patch, n, cam, tileParams(120.0f, AdjacencyClamp::Integer, Reconstruction::EdgeVector))
-                 .factors[2]) == bits(2.0f));
+                 .factors[2]) == bits(4.0f));
   const PatchLod r = nvidiaTile(patch, n, cam, tileParams(14.0f, AdjacencyClamp::Pow2, Reconstruction::EdgeVector));
   CHECK(r.why.factor[2].fixes == (FixSmallerNeighbour | FixPow2Clamp));
 }
@@ -110,7 +110,7 @@ TEST_CASE("nvidiaTile: clamp ranges over a camera sweep", "[lod][nvidia_tile]") 
       }
       if (clamp == AdjacencyClamp::Integer) {
         CHECK(std::fmod(L, 2.0f) == 0.0f);
-        CHECK(L >= 2.0f);
+        CHECK(L >= 4.0f);
         CHECK(L <= 64.0f);
         CHECK(std::floor(s0) == s0);
       }
@@ -183,4 +183,181 @@ TEST_CASE("assignNeighbourSizes and patchNeighbours", "[lod][nvidia_tile]") {
   CHECK((n.size[0] == 1.0f && n.size[3] == 1.0f));
   CHECK(n.oddU);
   CHECK_FALSE(n.oddV);
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// The neighbour rule for every scheme (lod.h section 7) and the integer clamp's recipe.
+
+namespace {
+
+enum class Base { Sphere, Distance, Bonaventura, Clip };
+const char* baseName(Base b) {
+  switch (b) {
+  case Base::Sphere: return "screen_sphere";
+  case Base::Distance: return "distance_pow2";
+  case Base::Bonaventura: return "bonaventura";
+  case Base::Clip: return "clip_diameter";
+  }
+  return "?";
+}
+
+PatchLod tileLod(Base b, const Patch& p, const TileNeighbours& n, const Camera& cam, TileAdjacency adj) {
+  switch (b) {
+  case Base::Sphere: {
+    NvidiaTileParams t = tileParams(60.0f, adj.clamp, adj.reconstruction); // 60 px: mostly below the 64 clamp
+    t.sphere.frustumCull = false;
+    return nvidiaTile(p, n, cam, t);
+  }
+  case Base::Distance: {
+    DistancePow2Params d;
+    d.frustumCull = false;
+    return distancePow2Tile(p, n, cam, d, adj);
+  }
+  case Base::Bonaventura: {
+    BonaventuraParams d;
+    d.frustumCull = false;
+    return bonaventuraTile(p, n, cam, d, adj);
+  }
+  case Base::Clip: return clipDiameterTile(p, n, cam, ClipDiameterParams{}, adj);
+  }
+  return {};
+}
+
+PatchLod ownLod(Base b, const Patch& p, const Camera& cam) {
+  switch (b) {
+  case Base::Sphere: {
+    ScreenSphereParams s;
+    s.tessellatedTriWidth = 60.0f;
+    s.frustumCull = false;
+    return screenSphere(p, cam, s);
+  }
+  case Base::Distance: {
+    DistancePow2Params d;
+    d.frustumCull = false;
+    return distancePow2(p, cam, d);
+  }
+  case Base::Bonaventura: {
+    BonaventuraParams d;
+    d.frustumCull = false;
+    return bonaventura(p, cam, d);
+  }
+  case Base::Clip: return clipDiameter(p, cam, ClipDiameterParams{});
+  }
+  return {};
+}
+
+float largerOf(float f, AdjacencyClamp c) {
+  if (c == AdjacencyClamp::Pow2) return f <= 4.0f ? 4.0f : f <= 8.0f ? 8.0f : f <= 16.0f ? 16.0f : f <= 32.0f ? 32.0f : 64.0f;
+  if (c == AdjacencyClamp::Integer) return std::fmin(std::fmax(std::ceil(f * 0.5f) * 2.0f, 4.0f), 64.0f);
+  return f;
+}
+
+} // namespace
+
+TEST_CASE("tile rule, every scheme: the smaller side takes the scheme's factor of the rebuilt edge, halved",
+          "[lod][nvidia_tile][tile_rule]") {
+  // big (16 x 16 at x = 3) and its two half-size neighbours across its Ueq0 (x = 3; heights vary along it):
+  // small0 covers z 0..8 (even), small1 z 8..16 (odd). Displaced corners (terrainHeight). With Resampled the small
+  // sides are handed the height at rebuiltCorner's x/z, computed by lod::rebuiltCorner as verify's layout does;
+  // FarCorner the big patch's corner.
+  const Patch big = lodtest::terrainPatch(3.0f, 0.0f, 16.0f, true);
+  const Patch small0 = lodtest::terrainPatch(-5.0f, 0.0f, 8.0f, true);
+  const Patch small1 = lodtest::terrainPatch(-5.0f, 8.0f, 8.0f, true);
+  TileNeighbours nb;
+  nb.size[0] = 0.5f;
+  auto smallSide = [](const Patch& p, bool odd, const glm::vec3& far) {
+    TileNeighbours n;
+    n.size[2] = 2.0f; // Ueq1 = corners 1-3
+    n.oddV = odd;
+    n.farCorner[2] = far;
+    const glm::vec3 c = rebuiltCorner(p.corners[1], p.corners[3], odd);
+    n.rebuiltHeight[2] = lodtest::terrainHeight(c.x, c.z);
+    return n;
+  };
+  const TileNeighbours n0 = smallSide(small0, false, big.corners[2]);
+  const TileNeighbours n1 = smallSide(small1, true, big.corners[0]);
+  // The rebuilt corner's x/z are the far corner's here (exact coordinates).
+  CHECK(rebuiltCorner(small0.corners[1], small0.corners[3], false).z == big.corners[2].z);
+  CHECK(rebuiltCorner(small1.corners[1], small1.corners[3], true).z == big.corners[0].z);
+  CHECK(bits(rebuiltCorner(small0.corners[1], small0.corners[3], false).y) == bits(small0.corners[3].y));
+
+  for (Base b : {Base::Sphere, Base::Distance, Base::Bonaventura, Base::Clip}) {
+    for (AdjacencyClamp clamp : {AdjacencyClamp::None, AdjacencyClamp::Integer, AdjacencyClamp::Pow2}) {
+      const uint32_t clampBit = clamp == AdjacencyClamp::Pow2      ? FixPow2Clamp
+                                : clamp == AdjacencyClamp::Integer ? FixIntegerClamp
+                                                                   : FixNone;
+      int edgeVectorMisses = 0;
+      for (Reconstruction rec : {Reconstruction::Resampled, Reconstruction::FarCorner, Reconstruction::EdgeVector}) {
+        for (int i = 0; i < 120; ++i) {
+          const Camera cam = lodtest::sweepCamera(i);
+          const TileAdjacency adj{clamp, rec};
+          const PatchLod own = ownLod(b, big, cam);
+          const PatchLod L = tileLod(b, big, nb, cam, adj);
+          const PatchLod s0 = tileLod(b, small0, n0, cam, adj);
+          const PatchLod s1 = tileLod(b, small1, n1, cam, adj);
+          INFO(baseName(b) << " clamp " << int(clamp) << " rec " << int(rec) << " camera " << i << " L "
+                           << hex(L.factors[0]) << " s0 " << hex(s0.factors[2]) << " s1 " << hex(s1.factors[2]));
+          // Larger side: larger(own factor), fixes recorded.
+          CHECK(bits(L.factors[0]) == bits(largerOf(own.factors[0], clamp)));
+          CHECK(L.why.factor[0].fixes == (own.why.factor[0].fixes | FixSmallerNeighbour | clampBit));
+          // Everything else is the scheme's own (edges without a jump, inside factors).
+          for (int k = 1; k < 6; ++k) CHECK(bits(L.factors[k]) == bits(own.factors[k]));
+          CHECK(bits(s0.factors[5]) == bits(ownLod(b, small0, cam).factors[5]));
+          CHECK((s0.why.factor[2].fixes & (FixLargerNeighbour | clampBit)) == (FixLargerNeighbour | clampBit));
+          const bool agree = bits(s0.factors[2]) == bits(L.factors[0] * 0.5f) &&
+                             bits(s1.factors[2]) == bits(L.factors[0] * 0.5f);
+          if (rec == Reconstruction::EdgeVector) {
+            edgeVectorMisses += agree ? 0 : 1;
+          } else {
+            CHECK(agree);
+          }
+        }
+      }
+      // The literal edge vector keeps the moved-from corner's height: on displaced corners it misses somewhere
+      // (except where the scheme's factor does not depend on the height there).
+      INFO(baseName(b) << " clamp " << int(clamp) << " edge_vector misses " << edgeVectorMisses);
+      if (b != Base::Bonaventura && clamp == AdjacencyClamp::None) CHECK(edgeVectorMisses > 0);
+    }
+  }
+}
+
+TEST_CASE("tile rule: the integer clamp is the sample's recipe, NaN stays visible", "[lod][nvidia_tile][tile_rule]") {
+  TileNeighbours n;
+  n.size[0] = 2.0f; // Ueq0: smaller side
+  n.size[2] = 0.5f; // Ueq1: larger side
+  struct Case {
+    float factor, larger;
+  } cases[] = {{1.0f, 4.0f},   {2.0f, 4.0f},   {3.0f, 4.0f},   {4.0f, 4.0f},   {4.5f, 6.0f},  {6.0f, 6.0f},
+               {11.0f, 12.0f}, {12.0f, 12.0f}, {63.5f, 64.0f}, {64.0f, 64.0f}, {100.0f, 64.0f}};
+  for (const Case& c : cases) {
+    const PatchLod r = constantTile(c.factor, n, {AdjacencyClamp::Integer, Reconstruction::EdgeVector});
+    INFO("factor " << c.factor << " larger " << hex(r.factors[2]) << " smaller " << hex(r.factors[0]));
+    CHECK(bits(r.factors[2]) == bits(c.larger));
+    CHECK(bits(r.factors[0]) == bits(c.larger * 0.5f));
+    CHECK(r.factors[0] >= 2.0f);
+    CHECK(r.factors[0] <= 32.0f);
+    CHECK(r.why.factor[0].fixes == (FixLargerNeighbour | FixIntegerClamp));
+    CHECK(r.why.factor[2].fixes == (FixSmallerNeighbour | FixIntegerClamp));
+    CHECK(bits(r.factors[1]) == bits(c.factor)); // no jump: the constant itself
+    CHECK(r.why.scheme == Scheme::Constant);
+  }
+  // NaN: none and integer keep NaN on both sides of the jump (the tessellator then culls the patch); pow2 maps it
+  // to 4 and 2 by its comparisons (the existing rule, unchanged).
+  const float nan = std::nanf("");
+  for (AdjacencyClamp c : {AdjacencyClamp::None, AdjacencyClamp::Integer}) {
+    const PatchLod r = constantTile(nan, n, {c, Reconstruction::EdgeVector});
+    CHECK(std::isnan(r.factors[0]));
+    CHECK(std::isnan(r.factors[2]));
+  }
+  const PatchLod p = constantTile(nan, n, {AdjacencyClamp::Pow2, Reconstruction::EdgeVector});
+  CHECK(bits(p.factors[2]) == bits(4.0f));
+  CHECK(bits(p.factors[0]) == bits(2.0f));
+  CHECK(std::isnan(p.factors[1]));
+  // The same through a camera scheme: a NaN corner gives NaN factors; integer keeps them NaN at the jump.
+  Patch bad = lodtest::terrainPatch(0.0f, 0.0f, 8.0f, false);
+  bad.corners[0].y = nan;
+  DistancePow2Params d;
+  d.frustumCull = false;
+  const PatchLod r = distancePow2Tile(bad, n, lodtest::sweepCamera(3), d, {AdjacencyClamp::Integer, Reconstruction::EdgeVector});
+  CHECK(std::isnan(r.factors[0]));
 }

@@ -9,6 +9,7 @@
 #include "tests/common/splitmix.h"
 
 #include "lod/lod.h"
+#include "verify/internal.h" // the prepared patches' tile neighbours (NeighbourSize faults)
 
 #include <cmath>
 #include <cstdio>
@@ -95,8 +96,22 @@ struct Harness {
   Terrain terrain;
   Camera camera;
   bool flat;
+  bool tileRings;             // screen_sphere on tile rings: NeighbourSize faults
   std::vector<Finding> pairs; // baseline: every shared edge pair, all matches
   std::map<Kind, Tally>& tally;
+
+  // The factor lod/ gives edge f.edge of patch f.patch when told the neighbour there has size f.size (the scene's
+  // scheme is screen_sphere on tile rings: lod::nvidiaTile).
+  float wrongSizeFactor(const Fault& f) const {
+    const detail::TerrainPatch& p = terrain.data().patches[static_cast<size_t>(f.patch)];
+    lod::TileNeighbours wrong = p.tile;
+    wrong.size[f.edge] = f.size;
+    const lod::Camera cam =
+        lod::makeCamera(camera.eye, camera.target, camera.up, camera.fovY * (3.14159265358979323846f / 180.0f),
+                        camera.nearZ, camera.farZ,
+                        glm::vec2(static_cast<float>(camera.width), static_cast<float>(camera.height)));
+    return lod::nvidiaTile(p.lod, wrong, cam, scene.lod.screenSphere).factors[f.edge];
+  }
 
   Report run(const Fault& f) const {
     CheckOptions o;
@@ -120,6 +135,8 @@ struct Harness {
         bool changes = false;
         if (f.kind == Kind::FactorUlp || f.kind == Kind::FactorStep)
           changes = !sameBits(paramsIn(s.hullFactor, scene, lo, hi), paramsIn(perturbed(f, s.hullFactor), scene, lo, hi));
+        else if (f.kind == Kind::NeighbourSize)
+          changes = !sameBits(paramsIn(s.hullFactor, scene, lo, hi), paramsIn(wrongSizeFactor(f), scene, lo, hi));
         else if (f.kind == Kind::MirrorEdge)
           changes = !sameBits(paramsIn(s.hullFactor, scene, lo, hi), paramsIn(s.hullFactor, scene, lo, hi, true));
         else if (f.kind == Kind::PointUlp) {
@@ -191,7 +208,7 @@ Harness makeHarness(const char* name, const char* example, const std::vector<std
                     std::map<Kind, Tally>& tally) {
   Scene s = loadExample(example, overrides);
   Terrain t = prepared(s);
-  Harness h{name, s, t, s.camera, flat, {}, tally};
+  Harness h{name, s, t, s.camera, flat, s.layout.kind == LayoutKind::TileRings && s.lod.scheme == LodScheme::ScreenSphere, {}, tally};
   CheckOptions o;
   o.keepMatches = true;
   o.maxFindings = 1u << 20;
@@ -221,7 +238,14 @@ void runFaults(Harness& h, int count, uint64_t seed) {
       const EdgePoints e = edgePoints(side.hullFactor, h.scene.partitioning, h.scene.stage);
       f.point = static_cast<int>(rng.next() % static_cast<uint64_t>(e.count));
       f.axis = static_cast<int>(rng.next() % 3);
-    } else if (pick < 80) f.kind = Kind::MirrorEdge;
+    } else if (pick < 80) {
+      f.kind = Kind::MirrorEdge;
+      if (h.tileRings && (rng.next() & 1)) { // half of these on tile rings: a wrong neighbour size instead
+        f.kind = Kind::NeighbourSize;
+        const float now = h.terrain.data().patches[static_cast<size_t>(f.patch)].tile.size[f.edge];
+        f.size = now != 1.0f ? 1.0f : ((rng.next() & 1) ? 2.0f : 0.5f);
+      }
+    }
     else if (pick < 90) f.kind = Kind::DropPatch;
     else f.kind = Kind::NanFactor;
     uint64_t state = rng.next();
@@ -273,6 +297,7 @@ TEST_CASE("fault_injection_every_fault_is_found_and_nothing_else", "[verify][fau
   CHECK(tally[Kind::FactorStep].changed > 0);
   CHECK(tally[Kind::PointUlp].changed > 0);
   CHECK(tally[Kind::MirrorEdge].unchanged > 0);
+  CHECK(tally[Kind::NeighbourSize].changed > 0);
   CHECK(tally[Kind::DropPatch].changed > 0);
   CHECK(tally[Kind::NanFactor].changed > 0);
 }

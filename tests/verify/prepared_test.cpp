@@ -49,7 +49,11 @@ TEST_CASE("prepared terrain: corner heights are sampled once, never per camera",
   REQUIRE(s.lod.displacedCorners);
   const Terrain t = prepared(s);
   const WorkStats built = t.stats();
-  CHECK(built.heightSamples == 4 * static_cast<int64_t>(t.patchCount())); // the vertex shader's corner heights
+  // The vertex shader's corner heights, plus (lod.reconstruction = "resampled", the default) one height per rebuilt
+  // corner: every small-side edge at a ring border, 4 x 32 around ring 0 and 4 x 32 around ring 1.
+  CHECK(built.heightSamples == 4 * static_cast<int64_t>(t.patchCount()) + 256);
+  const Scene literal = loadExample("rings_small.toml", {"lod.displaced_corners=true", "lod.reconstruction=edge_vector"});
+  CHECK(prepared(literal).stats().heightSamples == 4 * static_cast<int64_t>(t.patchCount()));
 
   const Report a = checkScene(t, s.camera);
   const Report b = checkScene(t, s.camera);

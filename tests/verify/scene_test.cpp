@@ -212,3 +212,30 @@ TEST_CASE("prepared terrain: every patch's ref and corners, as the domain shader
   CHECK(none.error.find("displacement") != std::string::npos);
   CHECK(none.terrain.empty());
 }
+
+TEST_CASE("a neighbour-rule key that cannot apply is refused, naming the key and its position", "[verify][scene]") {
+  // kBase: tile rings, 2 rings, lod.adjacency_clamp on line 12. Fine as it is; refused where no size jump exists.
+  REQUIRE(parseScene(kBase, "t.toml").ok);
+  requireError(parseScene(replaced(kBase, "rings = 2", "rings = 1"), "t.toml"),
+               {"t.toml:12:", "lod.adjacency_clamp: cannot apply", "no size jumps", "tile_rings\" with layout.rings = 1"});
+  requireError(parseScene(replaced(kBase, "kind = \"tile_rings\"", "kind = \"grid\""), "t.toml"),
+               {"t.toml:12:", "lod.adjacency_clamp: cannot apply", "layout.kind = \"grid\""});
+  const std::string noClamp = replaced(kBase, "adjacency_clamp = \"pow2\"\n", "");
+  requireError(parseScene(replaced(noClamp, "scheme = \"screen_sphere\"", "scheme = \"screen_sphere\"\nreconstruction = \"resampled\""),
+                          "t.toml", {"layout.rings=1"}),
+               {"t.toml:12:", "lod.reconstruction: cannot apply"});
+  requireError(parseScene(replaced(kBase, "scheme = \"screen_sphere\"", "scheme = \"patch_center\""), "t.toml"),
+               {"t.toml:12:", "lod.adjacency_clamp: cannot apply", "patch_center"});
+  // Overrides name --set KEY.
+  requireError(parseScene(noClamp, "t.toml", {"layout.kind=grid", "lod.reconstruction=far_corner"}),
+               {"--set lod.reconstruction: cannot apply", "grid"});
+  // Defaults never error: the same scenes without the keys load.
+  CHECK(parseScene(noClamp, "t.toml", {"layout.rings=1"}).ok);
+  CHECK(parseScene(noClamp, "t.toml", {"layout.kind=grid"}).ok);
+  CHECK(parseScene(noClamp, "t.toml", {"lod.scheme=patch_center"}).ok);
+  // resampled is a value; the scene default is resampled, lod.h's nvidiaTile default stays edge_vector.
+  const SceneResult r = parseScene(noClamp, "t.toml");
+  REQUIRE(r.ok);
+  CHECK(r.scene.lod.screenSphere.reconstruction == fftess::lod::Reconstruction::Resampled);
+  CHECK(fftess::lod::NvidiaTileParams{}.reconstruction == fftess::lod::Reconstruction::EdgeVector);
+}
