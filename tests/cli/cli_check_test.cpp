@@ -350,3 +350,37 @@ TEST_CASE("sweep: causes count every finding, so a cause that is no camera's wor
   }
   CHECK(notHalf);
 }
+
+TEST_CASE("check: an eye on a shared edge's midpoint plane gives holes, exit 1 (was a false watertight)",
+          "[cli][check][holes]") {
+  const std::string grid = clitest::source("docs/examples/grid.toml");
+  const std::string json = clitest::tmpDir() + "/holes.json";
+  const auto r = run({"check", grid, "--set", "displacement.kind=none", "--set", "lod.scheme=screen_sphere", "--set",
+                      "tessellation.partitioning=fractional_even", "--set", "lod.frustum_cull=false", "--eye", "0,0,2",
+                      "--target", "0,0,100", "--json", json});
+  CHECK(r.status == 1);
+  CHECK(r.out.find("verdict: HOLES") != std::string::npos);
+  CHECK(r.out.find("w = 0 in the projection") != std::string::npos);
+  const nlohmann::json j = nlohmann::json::parse(clitest::readFile(json));
+  CHECK(j.at("version") == 4);
+  CHECK(j.at("verdict") == "holes");
+  CHECK(j.at("stats").at("holes").get<int64_t>() >= 2);
+  REQUIRE(j.at("holes").size() >= 2);
+  for (const nlohmann::json& h : j.at("holes")) {
+    CHECK(h.at("kind") == "discarded");
+    CHECK(h.at("visibility") == "visible");
+    const std::string f = h.at("hull_factor");
+    CHECK((f == "nan" || f == "-nan"));
+    const std::string bits = h.at("factor_bits");
+    CHECK((bits == "0x7FC00000" || bits == "0xFFC00000"));
+    const std::string w = h.at("midpoint_w");
+    CHECK((w == "0" || w == "-0"));
+  }
+}
+
+TEST_CASE("check: a camera that sees no shared edge is not clean", "[cli][check][holes]") {
+  // Looking straight up from above the terrain: the LOD culls every patch, nothing is classified.
+  const auto r = run({"check", kScene, "--eye", "0,200,0", "--target", "0,400,1"});
+  CHECK(r.status == 1);
+  CHECK(r.out.find("verdict: NOTHING CHECKED") != std::string::npos);
+}

@@ -201,3 +201,40 @@ TEST_CASE("sweep onReport: cancelled sweeps report exactly the cameras done", "[
     CHECK(calls[i] == (r.cameras[i].done ? 1 : 0));
   }
 }
+
+TEST_CASE("sweep: an invalid camera is reported and the sweep is not clean", "[verify][sweep][verdict]") {
+  const Scene s = loadExample("rings_small.toml");
+  const Terrain t = prepared(s);
+  std::vector<Camera> cams = randomCameras(t, 3, 7);
+  Camera bad = cams[0];
+  bad.target = bad.eye; // nothing to look at
+  cams.insert(cams.begin() + 1, bad);
+  const SweepResult r = sweep(t, cams);
+  CHECK(r.camerasDone == 3);
+  CHECK(r.camerasInvalid == 1);
+  CHECK(!r.cameras[1].done);
+  CHECK(r.cameras[1].error.find("camera.target") != std::string::npos);
+  CHECK(verdictOf(r.total) == Verdict::Watertight); // what was checked is clean...
+  CHECK(verdictOf(r) == Verdict::Unchecked);        // ...but the sweep is not
+  // All cameras invalid: nothing checked at all.
+  const SweepResult none = sweep(t, {bad, bad});
+  CHECK(none.camerasDone == 0);
+  CHECK(verdictOf(none) == Verdict::Unchecked);
+}
+
+TEST_CASE("sweep: cameras that classify no shared edge make a not-clean verdict", "[verify][sweep][verdict]") {
+  const Scene s = loadExample("rings_small.toml");
+  const Terrain t = prepared(s);
+  Camera sky = s.camera;
+  sky.eye = {0.0f, 200.0f, 0.0f};
+  sky.target = {0.0f, 400.0f, 1.0f};
+  const SweepResult r = sweep(t, {sky});
+  CHECK(r.camerasDone == 1);
+  CHECK(r.camerasNothingChecked == 1);
+  CHECK(r.total.edgesChecked == 0);
+  CHECK(verdictOf(r) == Verdict::NothingChecked);
+  // One camera that sees the terrain makes the sweep watertight again; the other is counted.
+  const SweepResult mixed = sweep(t, {sky, s.camera});
+  CHECK(mixed.camerasNothingChecked == 1);
+  CHECK(verdictOf(mixed) == Verdict::Watertight);
+}
