@@ -94,6 +94,7 @@ glsl::TileSettings toGlsl(const NvidiaTileParams& p) {
   s.sphere = toGlsl(p.sphere);
   s.clampMode = clampCode(p.clamp);
   s.rebuild = rebuildCode(p.reconstruction);
+  s.insideFromFixedEdges = p.insideFromFixedEdges;
   return s;
 }
 

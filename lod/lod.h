@@ -185,6 +185,10 @@ struct NvidiaTileParams {
   ScreenSphereParams sphere{};                  // the per-edge factor (the sample's own settings by default)
   AdjacencyClamp clamp = AdjacencyClamp::Pow2;  // the sample ships the power-of-two workaround
   Reconstruction reconstruction = Reconstruction::EdgeVector;
+  // Inside factors from the edge factors after the neighbour rule (the sample: Inside[1] = 0.5 * (Edges[0] +
+  // Edges[2]), Inside[0] = 0.5 * (Edges[1] + Edges[3]) with sphere.inside = Average) instead of the patch's own
+  // edges before it. Changes interiors only, never an edge.
+  bool insideFromFixedEdges = false;
 };
 
 PatchLod nvidiaTile(const Patch& patch, const TileNeighbours& neighbours, const Camera& camera,

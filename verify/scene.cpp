@@ -44,6 +44,7 @@ const Enum kHeightBounds[] = {{"global", int(HeightBounds::Global)}, {"per_patch
 const Enum kInsideRules[] = {{"average", int(lod::InsideRule::Average)},
                              {"min", int(lod::InsideRule::Min)},
                              {"max", int(lod::InsideRule::Max)}};
+const Enum kInsideFrom[] = {{"own_edges", 0}, {"fixed_edges", 1}};
 const Enum kClamps[] = {{"none", int(AdjacencyClamp::None)},
                         {"integer", int(AdjacencyClamp::Integer)},
                         {"pow2", int(AdjacencyClamp::Pow2)}};
@@ -365,7 +366,7 @@ void readScene(Reader& r, const toml::table& root, Scene& s, const std::string& 
                   {"scheme", "target_pixels", "factor", "min_factor", "max_factor", "min_distance", "max_distance",
                    "min_tess", "max_tess", "angle_correction", "rank", "edges_per_screen_height", "frustum_cull",
                    "displaced_corners", "adjacency_clamp", "reconstruction", "finest_level", "coarsest_level",
-                   "literal_article_weight", "height_bounds", "inside"});
+                   "literal_article_weight", "height_bounds", "inside", "inside_from"});
     r.enumeration(t, p, "scheme", kSchemes, L.scheme, true);
     // Keys several schemes share are read once and set in every parameter struct that has the field.
     lod::ScreenSphereParams& sphere = L.screenSphere.sphere;
@@ -414,6 +415,10 @@ void readScene(Reader& r, const toml::table& root, Scene& s, const std::string& 
     r.enumeration(t, p, "height_bounds", kHeightBounds, L.heightBounds);
     lod::InsideRule inside = L.screenSphere.sphere.inside;
     if (r.enumeration(t, p, "inside", kInsideRules, inside)) L.screenSphere.sphere.inside = L.clipDiameter.inside = inside;
+    // "own_edges" (default): the patch's own edge factors before the neighbour rule; "fixed_edges": after it, as
+    // the NVIDIA sample's constant hull shader computes Inside[] (tile rings with screen_sphere).
+    int insideFrom = L.screenSphere.insideFromFixedEdges ? 1 : 0;
+    if (r.enumeration(t, p, "inside_from", kInsideFrom, insideFrom)) L.screenSphere.insideFromFixedEdges = insideFrom == 1;
     // The neighbour rule's keys, set explicitly where no neighbour rule runs, are refused (the defaults never are):
     // only tile rings with more than one ring have size jumps, and patch_center never gets the rule.
     for (const char* key : {"adjacency_clamp", "reconstruction"}) {

@@ -21,6 +21,7 @@ struct TileSettings {
   ScreenSphereSettings sphere;
   int clampMode;      // kClampNone / kClampInteger / kClampPow2
   int rebuild;        // kRebuildEdgeVector / kRebuildFarCorner / kRebuildResampled
+  bool insideFromFixedEdges; // inside factors from the edges after the neighbour rule (the sample's own order)
 };
 
 // The neighbour rule's own settings, for the base schemes other than the screen-space sphere.
@@ -203,6 +204,9 @@ LodResult nvidiaTileLod(vec3 c0, vec3 c1, vec3 c2, vec3 c3, bool useHeightBounds
       rebuilt = screenSphereEdge(big.a, big.b, cam, s.sphere);
     }
     r.e[e] = neighbourRuleEdge(own.e[e], rebuilt, n.size[e], s.clampMode);
+  }
+  if (s.insideFromFixedEdges) {
+    r = withInsideFromEdges(r, s.sphere.insideRule);
   }
   return r;
 }

@@ -345,3 +345,33 @@ TEST_CASE("effects: scenes that do not opt in do no extra work", "[verify][effec
   CHECK(rg.work.heightSamples > rg.work.domainEvaluations);
   CHECK(rg.work.lodEvaluations == tg.patchCount());
 }
+
+TEST_CASE("effects: lod.inside_from = fixed_edges averages the edges after the neighbour rule (the sample's order)",
+          "[verify][effects]") {
+  const Scene own = loadExample("rings_small.toml");
+  const Scene fixed = loadExample("rings_small.toml", {"lod.inside_from=fixed_edges"});
+  CHECK(!own.lod.screenSphere.insideFromFixedEdges);
+  REQUIRE(fixed.lod.screenSphere.insideFromFixedEdges);
+  const Terrain a = prepared(own), b = prepared(fixed);
+  std::vector<lod::PatchLod> fa, fb;
+  WorkStats w;
+  detail::computeFactors(a.data(), own.camera, fa, w);
+  detail::computeFactors(b.data(), fixed.camera, fb, w);
+  int differ = 0, jumps = 0;
+  for (size_t i = 0; i < fa.size(); ++i) {
+    INFO("patch " << i);
+    for (int e = 0; e < 4; ++e) CHECK(fa[i].factors[e] == fb[i].factors[e]); // edges never change
+    if (fb[i].why.culled) continue;
+    // fixed_edges: exactly the average of the (fixed) edge factors, in the sample's order.
+    CHECK(fb[i].factors[4] == (fb[i].factors[1] + fb[i].factors[3]) * 0.5f);
+    CHECK(fb[i].factors[5] == (fb[i].factors[0] + fb[i].factors[2]) * 0.5f);
+    bool jump = false;
+    for (float s : a.data().patches[i].tile.size) jump = jump || s != 1.0f;
+    jumps += jump;
+    differ += fa[i].factors[4] != fb[i].factors[4] || fa[i].factors[5] != fb[i].factors[5];
+  }
+  CHECK(jumps > 0);
+  CHECK(differ > 0); // patches at a size jump get other inside factors
+  // Edge verdicts are the same.
+  CHECK(checkScene(a, own.camera).stats.matches == checkScene(b, fixed.camera).stats.matches);
+}
