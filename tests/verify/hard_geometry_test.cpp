@@ -3,7 +3,10 @@
 // watertight, and nothing may turn into NaN.
 #include "verify_test_util.h"
 
+#include "tessellator/edge_analysis.h"
+
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 
@@ -307,4 +310,64 @@ TEST_CASE("hard_geometry_non_finite_inputs_never_reach_the_lod_silently", "[veri
       CHECK(!r.ok);
       CHECK(r.error.find(key) != std::string::npos);
     }
+}
+
+TEST_CASE("hard_geometry_factors_one_ulp_around_powers_of_two_through_each_clamp", "[verify][hard]") {
+  // lod.scheme = constant on tile rings: every edge's factor is f, the neighbour rule makes the jump's sides
+  // big = clamp(f) and small = big / 2. For f one ulp below, at and one ulp above 2, 4, .., 64 and each clamp, the
+  // hull factors at every jump are what the clamp's recipe says (computed here, not by lod/), and a jump cracks
+  // exactly when the 16.16 model (compareHalfEdges) says the sides miss: never with pow2.
+  auto recipe = [](const std::string& clamp, float f) {
+    if (clamp == "pow2") {
+      float p = 4.0f;
+      while (p < 64.0f && p < f) p *= 2.0f;
+      return p;
+    }
+    if (clamp == "integer") {
+      float e = std::ceil(f * 0.5f) * 2.0f;
+      return e < 4.0f ? 4.0f : e > 64.0f ? 64.0f : e;
+    }
+    return f;
+  };
+  for (const char* clamp : {"none", "integer", "pow2"})
+    for (float p : {2.0f, 4.0f, 8.0f, 16.0f, 32.0f, 64.0f})
+      for (float f : {std::nextafter(p, 0.0f), p, std::nextafter(p, 100.0f)}) {
+        char value[64];
+        std::snprintf(value, sizeof value, "lod.factor=%.9g", static_cast<double>(f));
+        const Scene s = loadExample("rings_small.toml", {"lod.scheme=constant", value,
+                                                         std::string("lod.adjacency_clamp=") + clamp});
+        REQUIRE(s.lod.factor == f);
+        CheckOptions o;
+        o.keepMatches = true;
+        o.maxFindings = 1u << 20;
+        const Report r = checkScene(prepared(s), s.camera, o);
+        INFO(clamp << " f = " << value);
+        REQUIRE(r.error.empty());
+        CHECK(r.stats.holes == 0);
+        const float big = recipe(clamp, f), small = big * 0.5f;
+        const fftess::HalfEdgeComparison c = fftess::compareHalfEdges(big, small, s.partitioning, s.stage);
+        int jumps = 0;
+        for (const Finding& x : r.findings) {
+          if (x.a.patch.level == x.b.patch.level) {
+            CHECK(x.classification == Classification::Match); // same-size neighbours: both f
+            continue;
+          }
+          ++jumps;
+          CHECK(x.a.hullFactor == big);
+          CHECK(x.b.hullFactor == small);
+          CHECK(std::isfinite(x.a.hullFactor));
+          // The 16.16 model for this half of the big edge.
+          const bool second = x.a.paramLo == 0.5f;
+          bool miss = false;
+          for (const fftess::HalfEdgeRow& row : c.rows) {
+            if (row.match) continue;
+            const int64_t t = row.big >= 0 ? c.bigPoints[static_cast<size_t>(row.big)].t
+                                           : c.smallPoints[static_cast<size_t>(row.small)].t;
+            miss = miss || (second ? t >= 65536 : t <= 65536);
+          }
+          CHECK((x.classification != Classification::Match) == miss);
+        }
+        CHECK(jumps > 0);
+        if (std::string(clamp) == "pow2") CHECK(verdictOf(r.stats) == Verdict::Watertight);
+      }
 }
