@@ -357,9 +357,13 @@ TEST_CASE("check: an eye on a shared edge's midpoint plane gives holes, exit 1 (
   const std::string json = clitest::tmpDir() + "/holes.json";
   const auto r = run({"check", grid, "--set", "displacement.kind=none", "--set", "lod.scheme=screen_sphere", "--set",
                       "tessellation.partitioning=fractional_even", "--set", "lod.frustum_cull=false", "--eye", "0,0,2",
-                      "--target", "0,0,100", "--json", json});
+                      "--target", "0,0,100", "--json", json, "--svg", json + ".svg"});
   CHECK(r.status == 1);
   CHECK(r.out.find("verdict: HOLES") != std::string::npos);
+  const std::string svg = clitest::readFile(json + ".svg");
+  std::string why;
+  CHECK(clitest::wellFormedXml(svg, why));
+  CHECK(svg.find("<path class=\"hole\"") != std::string::npos); // the holes are filled on the map
   CHECK(r.out.find("w = 0 in the projection") != std::string::npos);
   const nlohmann::json j = nlohmann::json::parse(clitest::readFile(json));
   CHECK(j.at("version") == 4);
