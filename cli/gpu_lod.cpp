@@ -23,17 +23,22 @@ void attachGpuLod(const vf::Terrain& terrain, const SceneArgs& a, vf::CheckOptio
   gpulod::GpuLodError kind = gpulod::GpuLodError::None;
   auto p = gpulod::createGpuLod(vf::LodPatches(terrain), o, error, kind);
   if (!p) {
-    // Multi-line logs stay multi-line (printable() escapes control bytes; keep the newlines of the driver's log).
+    // One line (the cli's rule for bad input): the log's lines first, as the driver or glslang names file and line,
+    // then what failed. createGpuLod's message is "WHAT:\nLOG".
+    std::string head = error, log;
+    const size_t nl = error.find('\n');
+    if (nl != std::string::npos) head = error.substr(0, nl), log = error.substr(nl + 1);
+    while (!head.empty() && head.back() == ':') head.pop_back();
     std::string msg;
     size_t start = 0;
-    while (start <= error.size()) {
-      const size_t end = std::min(error.find('\n', start), error.size());
-      msg += (start ? "\n" : "") + printable(error.substr(start, end - start), 2000);
+    while (start < log.size()) {
+      const size_t end = std::min(log.find('\n', start), log.size());
+      std::string line = log.substr(start, end - start);
+      if (line.find_first_not_of(" \t") != std::string::npos) msg += (msg.empty() ? "" : "; ") + line;
       start = end + 1;
     }
-    const char* what = kind == gpulod::GpuLodError::NoContext ? "no OpenGL context for the GPU LOD: "
-                       : kind == gpulod::GpuLodError::Tools   ? ""
-                                                              : "";
+    msg = msg.empty() ? head : msg + " [" + head + "]";
+    const char* what = kind == gpulod::GpuLodError::NoContext ? "no OpenGL context for the GPU LOD: " : "";
     throw UsageError(what + msg);
   }
   opt.factors = p;

@@ -370,7 +370,7 @@ void readScene(Reader& r, const toml::table& root, Scene& s, const std::string& 
                    "literal_article_weight", "height_bounds", "inside", "shader", "evaluate"});
     // lod.shader: the user's shader on the GPU (docs/gpu_lod.md); lod.scheme is then optional ("shader": no C++
     // reference) or a built-in scheme the shader's factors are compared with.
-    if (r.string(t, p, "shader", L.shader)) {
+    if (r.string(t, p, "shader", L.shader) && !L.shader.empty()) { // "" = none (--set lod.shader='')
       const toml::node* at = t.get("shader");
       const std::string& f = L.shader;
       auto endsWith = [&](const char* ext) {

@@ -403,7 +403,7 @@ bool onPath(const char* tool) {
 
 bool hasEntryPoint(const std::string& src) { return std::regex_search(src, std::regex(R"(\blodMain\s*\()")); }
 
-const char* kSignatureGlsl = "LodFactors lodMain(LodPatch patch, TileNeighbourInfo neighbours, LodCamera camera, "
+const char* kSignatureGlsl = "LodFactors lodMain(LodPatch quad, TileNeighbourInfo neighbours, LodCamera camera, "
                              "LodSettings settings)";
 
 // The driver's log with source string 1 (the user's file) named by its path: Mesa "1:12(5): error: ...",
@@ -484,7 +484,7 @@ std::shared_ptr<GpuLodProvider> createGpuLod(const vf::LodPatches& patches, cons
     if (!hasEntryPoint(user)) {
       kind = GpuLodError::Shader;
       error = file + ": no entry point lodMain: the file must define " +
-              (hlsl ? std::string("LodFactors lodMain(LodPatch patch, TileNeighbourInfo neighbours, LodCamera "
+              (hlsl ? std::string("LodFactors lodMain(LodPatch quad, TileNeighbourInfo neighbours, LodCamera "
                                   "camera, LodSettings settings) (HLSL)")
                     : std::string(kSignatureGlsl)) +
               " (docs/gpu_lod.md)";
@@ -530,7 +530,7 @@ std::shared_ptr<GpuLodProvider> createGpuLod(const vf::LodPatches& patches, cons
       const size_t firstLine = msg.find('\n');
       if (firstLine != std::string::npos && msg.compare(0, firstLine, wrapper) == 0) msg.erase(0, firstLine + 1);
       if (msg.find(wrapper) != std::string::npos && msg.find(base + ":") == std::string::npos)
-        error = file + ": lodMain has the wrong signature or return type: expected LodFactors lodMain(LodPatch patch, "
+        error = file + ": lodMain has the wrong signature or return type: expected LodFactors lodMain(LodPatch quad, "
                        "TileNeighbourInfo neighbours, LodCamera camera, LodSettings settings) (docs/gpu_lod.md); "
                        "glslang says:\n" + msg;
       else
