@@ -406,15 +406,59 @@ bool hasEntryPoint(const std::string& src) { return std::regex_search(src, std::
 const char* kSignatureGlsl = "LodFactors lodMain(LodPatch quad, TileNeighbourInfo neighbours, LodCamera camera, "
                              "LodSettings settings)";
 
-// The driver's log with source string 1 (the user's file) named by its path: Mesa "1:12(5): error: ...",
-// NVIDIA "1(12) : error ...". Source string 0 is fftess's prelude (lod/shaders/*.glsl), 2 its wrapper.
-std::string nameSourceStrings(const std::string& log, const std::string& file) {
-  std::string out = std::regex_replace(log, std::regex(R"((^|\n)1:(\d+)\((\d+)\))"), "$1" + file + ":$2:$3");
-  out = std::regex_replace(out, std::regex(R"((^|\n)1\((\d+)\))"), "$1" + file + ":$2");
+// Lines of the compute source: the user's file keeps its own numbers (#line 1); fftess's prelude (lod/shaders/*.glsl
+// and the interface types) is numbered from kPreludeLine, the wrapper from kWrapperLine, so a log line names its
+// origin whatever the driver prints as the source-string number (Mesa "0:12(5): error: ...", NVIDIA
+// "0(12) : error ...").
+constexpr int kWrapperLine = 100001;
+constexpr int kPreludeLine = 200001;
+
+struct LogLine {
+  int line = 0; // 0: no position
+  int column = 0;
+  std::string text; // after the position
+};
+LogLine parseLogLine(const std::string& l) {
+  LogLine out;
+  out.text = l;
+  std::smatch m;
+  if (std::regex_search(l, m, std::regex(R"(^(?:ERROR: |WARNING: )?\d+:(\d+)\((\d+)\):?\s*)"))) {
+    out.line = std::stoi(m[1]);
+    out.column = std::stoi(m[2]);
+    out.text = m.suffix();
+  } else if (std::regex_search(l, m, std::regex(R"(^\d+\((\d+)\)\s*:?\s*)"))) {
+    out.line = std::stoi(m[1]);
+    out.text = m.suffix();
+  }
   return out;
 }
-bool wrapperError(const std::string& log) {
-  return std::regex_search(log, std::regex(R"((^|\n)2(:\d+\(\d+\)|\(\d+\)))"));
+bool isWarning(const std::string& text) {
+  return text.find("warning") != std::string::npos && text.find("error") == std::string::npos;
+}
+
+// The driver's log: errors only (warnings dropped), user lines as FILE:LINE:COLUMN. wrapper: set when an error lies
+// in fftess's wrapper (the call of lodMain: a wrong signature).
+std::string driverLog(const std::string& log, const std::string& file, bool& wrapper) {
+  std::string out;
+  std::istringstream in(log);
+  std::string l;
+  wrapper = false;
+  while (std::getline(in, l)) {
+    if (l.empty()) continue;
+    const LogLine p = parseLogLine(l);
+    if (isWarning(p.text)) continue;
+    std::string where;
+    if (p.line > 0 && p.line < kWrapperLine && !file.empty()) {
+      where = file + ":" + std::to_string(p.line) + (p.column > 0 ? ":" + std::to_string(p.column) : "") + ": ";
+    } else if (p.line >= kPreludeLine) {
+      where = "(fftess prelude, lod/shaders/*.glsl and the interface types) ";
+    } else if (p.line >= kWrapperLine) {
+      where = "(fftess wrapper) ";
+      wrapper = true;
+    }
+    out += (out.empty() ? "" : "\n") + (p.line > 0 ? where + p.text : l);
+  }
+  return out.empty() ? log : out;
 }
 
 std::string trimLog(std::string s) {
@@ -526,10 +570,26 @@ std::shared_ptr<GpuLodProvider> createGpuLod(const vf::LodPatches& patches, cons
       kind = rc < 0 ? GpuLodError::Tools : GpuLodError::Shader;
       // glslang names the included file by the path it found ("DIR/FILE:LINE"); errors in the wrapper are a wrong
       // signature of lodMain (its only contact with your code).
-      std::string msg = trimLog(log);
-      const size_t firstLine = msg.find('\n');
-      if (firstLine != std::string::npos && msg.compare(0, firstLine, wrapper) == 0) msg.erase(0, firstLine + 1);
-      if (msg.find(wrapper) != std::string::npos && msg.find(base + ":") == std::string::npos)
+      // Errors only, the wrapper's temporary path as "(fftess wrapper)", glslang's summary lines dropped.
+      std::string msg;
+      bool inWrapper = false, inUser = false;
+      {
+        std::istringstream in(log);
+        std::string l;
+        while (std::getline(in, l)) {
+          if (l.empty() || l == wrapper || l.find("compilation errors") != std::string::npos ||
+              l.find("SPIR-V is not generated") != std::string::npos || isWarning(l))
+            continue;
+          for (size_t at; (at = l.find(wrapper)) != std::string::npos;) {
+            l.replace(at, wrapper.size(), "(fftess wrapper)");
+            inWrapper = true;
+          }
+          if (l.find(base + ":") != std::string::npos) inUser = true;
+          msg += (msg.empty() ? "" : "\n") + l;
+        }
+      }
+      if (msg.empty()) msg = trimLog(log);
+      if (inWrapper && !inUser)
         error = file + ": lodMain has the wrong signature or return type: expected LodFactors lodMain(LodPatch quad, "
                        "TileNeighbourInfo neighbours, LodCamera camera, LodSettings settings) (docs/gpu_lod.md); "
                        "glslang says:\n" + msg;
@@ -548,13 +608,17 @@ std::shared_ptr<GpuLodProvider> createGpuLod(const vf::LodPatches& patches, cons
     }
     cleanup();
   } else {
-    source = glslHeader() + glslSettings(L);
+    const std::string header = glslHeader();
+    const size_t firstNewline = header.find('\n');
+    source = header.substr(0, firstNewline + 1) + "#line " + std::to_string(kPreludeLine) + "\n" +
+             header.substr(firstNewline + 1) + glslSettings(L);
+    const std::string wrapperLine = "#line " + std::to_string(kWrapperLine) + "\n";
     if (!file.empty()) {
       impl->description = "lod.shader " + file + " (GLSL)";
-      source += "#line 1 1\n" + user + "\n#line 1 2\n" + kGlslUserEvaluate;
+      source += "#line 1\n" + user + "\n" + wrapperLine + kGlslUserEvaluate;
     } else {
       impl->description = std::string("built-in ") + vf::toString(L.scheme) + " (lod/shaders/*.glsl)";
-      source += "#line 1 2\n" + glslBuiltin(L, patches.sizeJumps());
+      source += wrapperLine + glslBuiltin(L, patches.sizeJumps());
     }
     source += kGlslMain;
   }
@@ -580,12 +644,13 @@ std::shared_ptr<GpuLodProvider> createGpuLod(const vf::LodPatches& patches, cons
     log = trimLog(log.c_str());
     kind = GpuLodError::Shader;
     const std::string where = file.empty() ? std::string("built-in ") + vf::toString(L.scheme) : file;
-    if (!hlsl && !file.empty() && wrapperError(log) && nameSourceStrings(log, file) == log)
+    bool wrapper = false;
+    const std::string named = hlsl ? log : driverLog(log, file, wrapper);
+    if (!hlsl && !file.empty() && wrapper)
       error = file + ": lodMain has the wrong signature or return type: expected " + kSignatureGlsl +
-              " (docs/gpu_lod.md); the driver (" + impl->ctx.renderer() + ") says:\n" + log;
+              " (docs/gpu_lod.md); the driver (" + impl->ctx.renderer() + ") says:\n" + named;
     else
-      error = where + ": GLSL compile failed on " + impl->ctx.renderer() + ":\n" +
-              (hlsl ? log : nameSourceStrings(log, file));
+      error = where + ": GLSL compile failed on " + impl->ctx.renderer() + ":\n" + named;
     gl.glDeleteShader(sh);
     impl->ctx.releaseCurrent();
     return nullptr;
