@@ -75,6 +75,11 @@ std::string FactorDiffTally::text(const vf::Scene& scene, const vf::CheckOptions
                   static_cast<long long>(p->dispatches()), per * 1e3, p->uploadSeconds() * 1e3,
                   p->compileSeconds() * 1e3);
     out += buf;
+    if (p->cpuCameras() > 0) {
+      std::snprintf(buf, sizeof buf, "                 the C++ build of the same factors: %.3f ms per camera (one thread)\n",
+                    p->cpuSeconds() / static_cast<double>(p->cpuCameras()) * 1e3);
+      out += buf;
+    }
   }
 #else
   (void)opt;

@@ -109,7 +109,9 @@ bool computeFactorsFor(const TerrainData& t, const Camera& camera, FactorProvide
   work.lodEvaluations += static_cast<int64_t>(t.patches.size());
   if (cpu && s.lod.scheme != LodScheme::Shader) {
     WorkStats ignored; // the C++ reference is not the checked evaluation
+    const auto t0 = std::chrono::steady_clock::now();
     computeFactors(t, camera, *cpu, ignored);
+    gpu->noteCpuSeconds(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   }
   return true;
 }

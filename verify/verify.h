@@ -445,6 +445,9 @@ public:
   // camera is reported as not checked (Report::error).
   virtual bool evaluate(const LodPatches& patches, const lod::Camera& camera, std::vector<lod::PatchLod>& out,
                         std::string& error) = 0;
+  // Called after each camera whose C++ reference ran (the factor comparison), with its time on the calling thread:
+  // for a cost report next to the provider's own. Default: ignored.
+  virtual void noteCpuSeconds(double seconds) { (void)seconds; }
 };
 
 // One factor where the GPU's value is not the C++ build's (lod.evaluate = "gpu", or lod.shader with a built-in

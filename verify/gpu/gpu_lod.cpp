@@ -480,6 +480,9 @@ struct GpuLodProvider::Impl {
   vf::LodScheme scheme = vf::LodScheme::Shader;
   int64_t dispatches = 0;
   double dispatchSeconds = 0, uploadSeconds = 0, compileSeconds = 0;
+  std::mutex cpuMutex;
+  int64_t cpuCameras = 0;
+  double cpuSeconds = 0;
   std::vector<uint32_t> words;
 };
 
@@ -492,6 +495,13 @@ GpuLodProvider::~GpuLodProvider() {
     impl_->ctx.releaseCurrent();
   }
 }
+void GpuLodProvider::noteCpuSeconds(double seconds) {
+  std::lock_guard<std::mutex> lock(impl_->cpuMutex);
+  ++impl_->cpuCameras;
+  impl_->cpuSeconds += seconds;
+}
+int64_t GpuLodProvider::cpuCameras() const { return impl_->cpuCameras; }
+double GpuLodProvider::cpuSeconds() const { return impl_->cpuSeconds; }
 const std::string& GpuLodProvider::renderer() const { return impl_->ctx.renderer(); }
 const std::string& GpuLodProvider::version() const { return impl_->ctx.version(); }
 const std::string& GpuLodProvider::description() const { return impl_->description; }

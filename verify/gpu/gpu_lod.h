@@ -44,6 +44,11 @@ public:
   bool evaluate(const verify::LodPatches& patches, const lod::Camera& camera, std::vector<lod::PatchLod>& out,
                 std::string& error) override;
 
+  void noteCpuSeconds(double seconds) override;
+  // The C++ reference of the same cameras (verify's computeFactors, one thread each): cameras and seconds.
+  int64_t cpuCameras() const;
+  double cpuSeconds() const;
+
   const std::string& renderer() const;     // GL_RENDERER
   const std::string& version() const;      // GL_VERSION
   const std::string& description() const; // what runs: "lod.shader FILE (GLSL)", "built-in distance_pow2 (GLSL)"
