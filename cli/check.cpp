@@ -3,6 +3,7 @@
 #include "check.h"
 #include "common.h"
 #include "findings.h"
+#include "gpu_lod.h"
 #include "report_json.h"
 #include "report_svg.h"
 
@@ -38,7 +39,7 @@ int runCheck(const CheckArgs& a) {
                        std::to_string(scene.cameraPath.size()) + " cameras");
     cam = scene.cameraPath[static_cast<size_t>(a.pathCamera)];
   }
-  vf::CheckOptions opt = checkOptions(a);
+  vf::CheckOptions opt = checkOptions(a, terrain);
   const size_t keep = opt.maxFindings;
   if (a.mesh) opt.maxFindings = static_cast<size_t>(-1); // the mesh comparison needs every finding
   vf::Report full = vf::checkScene(terrain, cam, opt); // the one edge check of this camera
@@ -60,6 +61,11 @@ int runCheck(const CheckArgs& a) {
                   static_cast<double>(cam.target.y), static_cast<double>(cam.target.z), cam.width, cam.height);
     text += buf;
     text += statsText(r.stats);
+    {
+      FactorDiffTally gpuDiffs; // lod.evaluate = "gpu" / lod.shader (cli/gpu_lod.h)
+      gpuDiffs.add(0, full);
+      text += gpuDiffs.text(scene, opt, r.stats);
+    }
     int shown = 0;
     for (const vf::Hole& h : r.holes) {
       if (shown++ >= a.show) break;

@@ -19,6 +19,7 @@ struct SceneArgs {
   std::string json, svg;
   bool quiet = false;
   bool failOnTJunctions = false;
+  bool gpuHardware = false; // --gpu-hardware: the GPU LOD path on a GPU's EGL device instead of llvmpipe
 };
 
 struct CheckArgs : SceneArgs {

@@ -1,6 +1,7 @@
 // Findings in words and the scene options shared by check and sweep (findings.h).
 #include "findings.h"
 #include "common.h"
+#include "gpu_lod.h"
 
 #include <algorithm>
 #include <cmath>
@@ -43,6 +44,12 @@ vf::CheckOptions checkOptions(const SceneArgs& a) {
   if (!vf::parseKernel(a.kernel.c_str(), o.kernel))
     throw UsageError("--kernel " + quoteToken(a.kernel) + ": expected epick|epeck|float");
   o.tessellator.flushDenormals = a.flushDenormals;
+  return o;
+}
+
+vf::CheckOptions checkOptions(const SceneArgs& a, const vf::Terrain& terrain) {
+  vf::CheckOptions o = checkOptions(a);
+  attachGpuLod(terrain, a, o);
   return o;
 }
 
@@ -233,6 +240,8 @@ void addSceneOptions(CLI::App* sub, SceneArgs& a) {
   sub->add_option("--svg", a.svg, "Write an SVG picture to FILE");
   sub->add_flag("-q,--quiet", a.quiet, "Print nothing but errors; the exit status tells the verdict");
   sub->add_flag("--fail-on-tjunctions", a.failOnTJunctions, "Exit 1 on T-junctions too (default: cracks only)");
+  sub->add_flag("--gpu-hardware", a.gpuHardware,
+                "lod.shader / lod.evaluate = \"gpu\": use a GPU's EGL device (default: Mesa's llvmpipe first)");
 }
 
 } // namespace fftess::cli

@@ -41,6 +41,8 @@ std::vector<std::string> overridesOf(const SceneArgs& a); // --eye/--target as o
 // with the loader's message.
 vf::Terrain load(const SceneArgs& a);
 vf::CheckOptions checkOptions(const SceneArgs& a);        // --kernel, --flush-denormals
+// The same, plus the GPU LOD provider the scene asks for (lod.shader, lod.evaluate = "gpu"; cli/gpu_lod.h).
+vf::CheckOptions checkOptions(const SceneArgs& a, const vf::Terrain& terrain);
 void addSceneOptions(CLI::App* sub, SceneArgs& a);
 // kExitFindings on cracks, holes, nothing checked, unchecked cameras (and T-junctions if asked); else kExitClean.
 int verdictStatus(const SceneArgs& a, vf::Verdict v);

@@ -3,6 +3,7 @@
 #include "check.h"
 #include "common.h"
 #include "findings.h"
+#include "gpu_lod.h"
 #include "progress.h"
 #include "report_json.h"
 #include "report_svg.h"
@@ -123,7 +124,7 @@ int runSweep(const SweepArgs& a) {
   ReportFiles reports(a); // output paths are checked before the work
   const vf::Terrain terrain = load(a); // the one terrain build of this command
   const vf::Scene& scene = terrain.scene();
-  vf::CheckOptions opt = checkOptions(a);
+  vf::CheckOptions opt = checkOptions(a, terrain);
   opt.maxFindings = static_cast<size_t>(-1); // every finding reaches onReport, so the cause counts are complete
   // Ctrl-C from here on (camera generation, the sweep, the reports) stops the work; the summary and reports of what
   // was done are still written. A second Ctrl-C kills the process.
@@ -150,7 +151,11 @@ int runSweep(const SweepArgs& a) {
   so.cancel = cancel;
   if (talk) so.progress = [&progress](size_t done, size_t total) { progress.report(done, total); };
   CauseTally tally;
-  so.onReport = [&tally](size_t camera, const vf::Report& r) { tally.add(camera, r); };
+  FactorDiffTally gpuDiffs; // lod.evaluate = "gpu" / lod.shader: GPU vs C++ factors (cli/gpu_lod.h)
+  so.onReport = [&tally, &gpuDiffs](size_t camera, const vf::Report& r) {
+    tally.add(camera, r);
+    gpuDiffs.add(camera, r);
+  };
   if (talk)
     std::fprintf(stderr, "fftess sweep %s: %s, %zu cameras (%s)\n", a.scene.c_str(), label.c_str(), requested,
                  how.c_str());
@@ -186,6 +191,7 @@ int runSweep(const SweepArgs& a) {
     text += "  adjacency      " + std::string(vf::toString(scene.lod.screenSphere.clamp)) + " clamp, " +
             toString(scene.partitioning) + " partitioning\n";
     text += statsText(res.total);
+    text += gpuDiffs.text(scene, opt, res.total);
     std::snprintf(buf, sizeof buf, "  cameras with cracks %zu, with T-junctions only %zu, with holes %zu\n", crackCameras,
                   tjCameras, holeCameras);
     text += buf;

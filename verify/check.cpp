@@ -92,9 +92,35 @@ Report checkTerrain(const TerrainData& t, const Camera& camera, const CheckOptio
   const bool faultPatch = fault.kind != Fault::Kind::None && fault.patch >= 0 && static_cast<size_t>(fault.patch) < n &&
                           fault.edge >= 0 && fault.edge < 4;
 
-  std::vector<lod::PatchLod> factors;
-  computeFactors(t, camera, factors, rep.work);
+  std::vector<lod::PatchLod> factors, cpuFactors;
+  if (!computeFactorsFor(t, camera, options.factors.get(), factors, &cpuFactors, rep.work, rep.error)) return rep;
   const lod::Camera lodCamera = toLodCamera(camera);
+  // The GPU path with a C++ reference: every factor whose bits differ (before any fault injection).
+  if (!cpuFactors.empty()) {
+    for (size_t i = 0; i < n; ++i)
+      for (int k = 0; k < 6; ++k) {
+        const float g = factors[i].factors[k], c = cpuFactors[i].factors[k];
+        ++rep.stats.factorsCompared;
+        uint32_t gb, cb;
+        std::memcpy(&gb, &g, 4);
+        std::memcpy(&cb, &c, 4);
+        if (gb == cb) continue;
+        FactorDiff d;
+        d.patch = t.patches[i].ref;
+        d.factor = k;
+        d.gpu = g;
+        d.cpu = c;
+        d.gpuBits = gb;
+        d.cpuBits = cb;
+        const EdgePoints& pg = cache.get(g, rep.work);
+        const EdgePoints& pc = cache.get(c, rep.work);
+        d.changesTessellation = pg.culled != pc.culled || pg.count != pc.count ||
+                                !std::equal(pg.fixed, pg.fixed + pg.count, pc.fixed);
+        ++rep.stats.factorDiffs;
+        if (d.changesTessellation) ++rep.stats.factorDiffsTessellation;
+        if (rep.factorDiffs.size() < options.maxFindings) rep.factorDiffs.push_back(d);
+      }
+  }
   if (faultPatch && fault.kind == Fault::Kind::NeighbourSize && t.adjacency &&
       t.scene.lod.scheme != LodScheme::Geomorph) {
     const TerrainPatch& P = t.patches[static_cast<size_t>(fault.patch)];

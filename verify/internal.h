@@ -103,6 +103,14 @@ lod::Camera toLodCamera(const Camera& c);
 // Hull-shader factors and lod/'s record of every patch for a camera (lod.h order). Adds the lod/ calls to
 // work.lodEvaluations. Constant scheme: every factor lod.factor, an empty record.
 void computeFactors(const TerrainData& t, const Camera& camera, std::vector<lod::PatchLod>& out, WorkStats& work);
+// The scene asks for the GPU path (lod.shader, or lod.evaluate = "gpu").
+bool usesGpu(const Scene& s);
+// The factors the check uses: computeFactors, or (usesGpu) the provider's, and then, when cpu is given and
+// lod.scheme is a built-in scheme, the C++ build's into *cpu (not counted in work). False with error when the GPU
+// path is asked for without a provider or the provider fails.
+bool computeFactorsFor(const TerrainData& t, const Camera& camera, FactorProvider* gpu,
+                       std::vector<lod::PatchLod>& out, std::vector<lod::PatchLod>* cpu, WorkStats& work,
+                       std::string& error);
 // One patch's factors with the given tile neighbours (every scheme but geomorph, whose factors need its
 // neighbours' levels): what computeFactors runs per patch; the fault injection's NeighbourSize runs it with a
 // wrong size.

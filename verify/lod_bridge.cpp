@@ -2,6 +2,7 @@
 // neighbour sizes, far corners) was prepared with the terrain (layout.cpp); this file only calls lod/.
 #include "verify/internal.h"
 
+#include <chrono>
 #include <cstring>
 
 namespace fftess::verify::detail {
@@ -38,6 +39,7 @@ lod::PatchLod patchLod(const TerrainData& t, const TerrainPatch& p, const lod::T
       return r;
     }
   case LodScheme::Geomorph: break; // levels need the neighbours' levels: computeFactors
+  case LodScheme::Shader: break;   // only on the GPU (computeFactorsFor)
   }
   return lod::PatchLod{};
 }
@@ -81,6 +83,37 @@ void computeFactors(const TerrainData& t, const Camera& camera, std::vector<lod:
   }
   for (size_t i = 0; i < t.patches.size(); ++i) out[i] = patchLod(t, t.patches[i], t.patches[i].tile, cam);
   work.lodEvaluations += static_cast<int64_t>(t.patches.size());
+}
+
+bool usesGpu(const Scene& s) { return !s.lod.shader.empty() || s.lod.evaluate == LodEvaluate::Gpu; }
+
+bool computeFactorsFor(const TerrainData& t, const Camera& camera, FactorProvider* gpu,
+                       std::vector<lod::PatchLod>& out, std::vector<lod::PatchLod>* cpu, WorkStats& work,
+                       std::string& error) {
+  const Scene& s = t.scene;
+  if (!usesGpu(s)) {
+    computeFactors(t, camera, out, work);
+    return true;
+  }
+  if (!gpu) {
+    error = std::string(s.lod.shader.empty() ? "lod.evaluate = \"gpu\"" : "lod.shader") +
+            " needs a GPU factor provider (CheckOptions::factors; the fftess command line builds one)";
+    return false;
+  }
+  if (!gpu->evaluate(LodPatches(t), toLodCamera(camera), out, error)) return false;
+  if (out.size() != t.patches.size()) {
+    error = "the GPU factor provider returned " + std::to_string(out.size()) + " patches, the terrain has " +
+            std::to_string(t.patches.size());
+    return false;
+  }
+  work.lodEvaluations += static_cast<int64_t>(t.patches.size());
+  if (cpu && s.lod.scheme != LodScheme::Shader) {
+    WorkStats ignored; // the C++ reference is not the checked evaluation
+    const auto t0 = std::chrono::steady_clock::now();
+    computeFactors(t, camera, *cpu, ignored);
+    gpu->noteCpuSeconds(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  }
+  return true;
 }
 
 // Geomorph: the level lod::geomorph recorded as the inside factors' metric (FactorWhy::metric = L); segments are
@@ -142,6 +175,15 @@ double pixelsAt(const lod::Camera& camera, const glm::vec3& at, double world) {
 } // namespace fftess::verify::detail
 
 namespace fftess::verify {
+
+LodPatches::LodPatches(const Terrain& terrain) : t_(&terrain.data()) {}
+size_t LodPatches::size() const { return t_->patches.size(); }
+LodInput LodPatches::operator[](size_t i) const {
+  const detail::TerrainPatch& p = t_->patches[i];
+  return LodInput{p.lod, p.tile};
+}
+bool LodPatches::sizeJumps() const { return t_->adjacency; }
+const Scene& LodPatches::scene() const { return t_->scene; }
 
 std::string lodWords(const EdgeSide& side) {
   const EdgeLod& l = side.lod;

@@ -51,7 +51,7 @@ MeshReport checkSceneMesh(const Terrain& terrain, const Camera& camera, const Ch
   const Scene& scene = t.scene;
   if (!detail::validateCamera(camera, rep.error)) return rep;
   std::vector<lod::PatchLod> factors;
-  detail::computeFactors(t, camera, factors, rep.work);
+  if (!detail::computeFactorsFor(t, camera, options.factors.get(), factors, nullptr, rep.work, rep.error)) return rep;
   const detail::DomainCamera domainCam = detail::domainCamera(t, factors);
 
   const size_t n = t.patches.size();

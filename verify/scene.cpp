@@ -35,7 +35,9 @@ const Enum kSchemes[] = {{"constant", int(LodScheme::Constant)},
                          {"bonaventura", int(LodScheme::Bonaventura)},
                          {"clip_diameter", int(LodScheme::ClipDiameter)},
                          {"patch_center", int(LodScheme::PatchCenter)},
-                         {"geomorph", int(LodScheme::Geomorph)}};
+                         {"geomorph", int(LodScheme::Geomorph)},
+                         {"shader", int(LodScheme::Shader)}};
+const Enum kEvaluates[] = {{"cpu", int(LodEvaluate::Cpu)}, {"gpu", int(LodEvaluate::Gpu)}};
 const Enum kMipModes[] = {{"none", int(MipMode::None)},
                           {"per_patch", int(MipMode::PerPatch)},
                           {"per_vertex", int(MipMode::PerVertex)}};
@@ -366,8 +368,36 @@ void readScene(Reader& r, const toml::table& root, Scene& s, const std::string& 
                   {"scheme", "target_pixels", "factor", "min_factor", "max_factor", "min_distance", "max_distance",
                    "min_tess", "max_tess", "angle_correction", "rank", "edges_per_screen_height", "frustum_cull",
                    "displaced_corners", "adjacency_clamp", "reconstruction", "finest_level", "coarsest_level",
-                   "literal_article_weight", "height_bounds", "inside", "inside_from"});
-    r.enumeration(t, p, "scheme", kSchemes, L.scheme, true);
+                   "literal_article_weight", "height_bounds", "inside", "inside_from", "shader", "evaluate"});
+    // lod.shader: the user's shader on the GPU (docs/gpu_lod.md); lod.scheme is then optional ("shader": no C++
+    // reference) or a built-in scheme the shader's factors are compared with.
+    if (r.string(t, p, "shader", L.shader) && !L.shader.empty()) { // "" = none (--set lod.shader='')
+      const toml::node* at = t.get("shader");
+      const std::string& f = L.shader;
+      auto endsWith = [&](const char* ext) {
+        const size_t n = std::strlen(ext);
+        return f.size() > n && f.compare(f.size() - n, n, ext) == 0;
+      };
+      if (!endsWith(".glsl") && !endsWith(".hlsl"))
+        r.fail(p + "shader", at, "\"" + f + "\": expected a file name ending in .glsl (GLSL 4.50) or .hlsl (HLSL)");
+      if (f[0] != '/') L.shader = baseDir + "/" + f;
+      struct stat st;
+      if (::stat(L.shader.c_str(), &st) != 0 || !S_ISREG(st.st_mode))
+        r.fail(p + "shader", at, "cannot read \"" + L.shader + "\" (the path is relative to the scene file)");
+      L.scheme = LodScheme::Shader;
+      L.evaluate = LodEvaluate::Gpu;
+    }
+    r.enumeration(t, p, "scheme", kSchemes, L.scheme, L.shader.empty());
+    if (L.scheme == LodScheme::Shader && L.shader.empty())
+      r.fail(p + "scheme", t.get("scheme"), "\"shader\" needs lod.shader (the file with the entry point lodMain)");
+    if (r.enumeration(t, p, "evaluate", kEvaluates, L.evaluate)) {
+      if (!L.shader.empty() && L.evaluate != LodEvaluate::Gpu)
+        r.fail(p + "evaluate", t.get("evaluate"), "lod.shader runs on the GPU only (lod.evaluate = \"gpu\")");
+    }
+    if (L.evaluate == LodEvaluate::Gpu && L.scheme == LodScheme::Geomorph)
+      r.fail(p + "scheme", t.get("scheme"),
+             "\"geomorph\" has no GPU path (lod.evaluate = \"gpu\" or lod.shader): its factors need the "
+             "neighbours' levels and its domain shader the levels themselves");
     // Keys several schemes share are read once and set in every parameter struct that has the field.
     lod::ScreenSphereParams& sphere = L.screenSphere.sphere;
     if (r.number(t, p, "target_pixels", sphere.tessellatedTriWidth) && !(sphere.tessellatedTriWidth > 0))
@@ -459,6 +489,11 @@ void readScene(Reader& r, const toml::table& root, Scene& s, const std::string& 
       if (s.layout.kind == LayoutKind::TileRings && s.layout.rings > 1)
         r.fail("lod.scheme", lt.get("scheme"),
                "\"geomorph\" needs patches of one size (tile_rings with more than one ring has size jumps)");
+    }
+    if (s.displacement.mip != MipMode::None && !s.lod.shader.empty()) {
+      const toml::table& dt = *root.get("displacement")->as_table();
+      r.fail("displacement.mip", dt.get("mip"),
+             "cannot apply with lod.shader (the mip levels are bonaventura's C++ record, which a shader does not return)");
     }
     if (s.displacement.mip != MipMode::None && s.lod.scheme != LodScheme::Bonaventura) {
       const toml::table& dt = *root.get("displacement")->as_table();
@@ -639,6 +674,7 @@ const char* toString(Kernel k) { return nameOf(kKernels, int(k)); }
 const char* toString(MipMode m) { return nameOf(kMipModes, int(m)); }
 const char* toString(TexelFormat f) { return nameOf(kTexelFormats, int(f)); }
 const char* toString(HeightBounds b) { return nameOf(kHeightBounds, int(b)); }
+const char* toString(LodEvaluate e) { return nameOf(kEvaluates, int(e)); }
 bool parseKernel(const char* s, Kernel& out) {
   for (const Enum& e : kKernels)
     if (std::strcmp(s, e.name) == 0) {

@@ -78,6 +78,9 @@ SweepResult sweep(const Terrain& terrain, const std::vector<Camera>& cameras, co
     s.holes += cr.stats.holes;
     s.holesDiscarded += cr.stats.holesDiscarded;
     s.holesCulledVisible += cr.stats.holesCulledVisible;
+    s.factorsCompared += cr.stats.factorsCompared;
+    s.factorDiffs += cr.stats.factorDiffs;
+    s.factorDiffsTessellation += cr.stats.factorDiffsTessellation;
     s.culledUndecided += cr.stats.culledUndecided;
     s.visibilityTests += cr.stats.visibilityTests;
     s.worstGapWorld = std::max(s.worstGapWorld, cr.stats.worstGapWorld);

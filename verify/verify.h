@@ -137,6 +137,17 @@ enum class LodScheme : uint8_t {
   Geomorph,       // "geomorph": geomorphing (lod::geomorphLevel, lod::geomorph): float level per patch, integer
                   // partitioning at 2^(floor(L) + 1), borders at the coarser level, inserted vertices morphed by the
                   // domain shader (needs tessellation.partitioning = "integer" and patches of one size)
+  Shader,         // "shader": the factors come from the user's shader (lod.shader) on the GPU, and nothing else;
+                  // the default scheme when lod.shader is given (set lod.scheme to a built-in scheme instead to have
+                  // a sweep compare the shader's factors with that scheme's C++ build)
+};
+
+// Where the hull factors are evaluated (lod.evaluate).
+enum class LodEvaluate : uint8_t {
+  Cpu, // "cpu" (default): lod/'s C++ build
+  Gpu, // "gpu": the scheme's own lod/shaders/*.glsl (or lod.shader) on the local OpenGL driver, one compute dispatch
+       // per camera (CheckOptions::factors provides them; the cli builds the provider, verify/gpu/gpu_lod.h); the
+       // C++ build runs too, and where the two differ Report::factorDiffs says so. Not for "geomorph".
 };
 
 // Height bounds of each patch's culling box (lod.height_bounds).
@@ -180,6 +191,11 @@ struct Lod {
   // geomorph: minDistance, maxDistance = lod.min_distance, lod.max_distance; finestLevel, coarsestLevel =
   // lod.finest_level, lod.coarsest_level (each in [0, 5]); literalArticleWeight = lod.literal_article_weight.
   lod::GeomorphParams geomorph{};
+  // lod.shader: the user's LOD shader (docs/gpu_lod.md), the path as written resolved against the scene file's
+  // folder; "" = none. Ends in .glsl (GLSL 4.50) or .hlsl (HLSL, through glslang and spirv-cross). Implies
+  // evaluate = Gpu.
+  std::string shader;
+  LodEvaluate evaluate = LodEvaluate::Cpu; // lod.evaluate
   bool displacedCorners = true;  // lod.displaced_corners: corners raised to their height for the LOD (NVIDIA VS)
   HeightBounds heightBounds = HeightBounds::Global; // lod.height_bounds
 
@@ -392,6 +408,61 @@ struct Fault {
   float size = 1;       // NeighbourSize: 0.5, 1 or 2
 };
 
+// ---------------------------------------------------------------------------------------------------------------
+// Factors from somewhere else than lod/'s C++ build: the GPU path (lod.evaluate = "gpu", lod.shader). verify itself
+// links no GL; verify/gpu/gpu_lod.h implements FactorProvider on an OpenGL driver and the cli hands it in
+// CheckOptions::factors.
+
+// What lod/ gets for one patch: its corners (displaced as lod.displaced_corners says), the culling box's height
+// bounds and, on tile rings, the sizes across its edges, its parity, the far corners and the rebuilt heights.
+struct LodInput {
+  lod::Patch patch;
+  lod::TileNeighbours neighbours;
+};
+
+// A view of a prepared terrain's LOD inputs (cheap; valid while the terrain lives).
+class LodPatches {
+public:
+  explicit LodPatches(const Terrain& terrain);
+  explicit LodPatches(const detail::TerrainData& data) : t_(&data) {}
+  size_t size() const;
+  LodInput operator[](size_t i) const;
+  // The same for every view of one prepared terrain (a provider keys its uploaded inputs by it).
+  const void* key() const { return t_; }
+  // Patches of different sizes meet (tile rings with rings > 1): the built-in schemes run their *Tile variant.
+  bool sizeJumps() const;
+  const Scene& scene() const;
+
+private:
+  const detail::TerrainData* t_;
+};
+
+class FactorProvider {
+public:
+  virtual ~FactorProvider() = default;
+  // Every patch's factors and record for one camera, in patch order (out.size() == patches.size()). Called from
+  // the sweep's worker threads, possibly at once (an implementation serialises what it must). False with error: the
+  // camera is reported as not checked (Report::error).
+  virtual bool evaluate(const LodPatches& patches, const lod::Camera& camera, std::vector<lod::PatchLod>& out,
+                        std::string& error) = 0;
+  // Called after each camera whose C++ reference ran (the factor comparison), with its time on the calling thread:
+  // for a cost report next to the provider's own. Default: ignored.
+  virtual void noteCpuSeconds(double seconds) { (void)seconds; }
+};
+
+// One factor where the GPU's value is not the C++ build's (lod.evaluate = "gpu", or lod.shader with a built-in
+// lod.scheme): the patch, the factor (FactorIndex: Ueq0 Veq0 Ueq1 Veq1 insideU insideV), both values and bits, and
+// whether the tessellation changes (fftess::edgePoints of the two differ: point count or any 16.16 position, under
+// the scene's partitioning and stage; inside factors judged by the same edge rule). The GPU's factor is the one
+// checked.
+struct FactorDiff {
+  PatchRef patch;
+  int factor = 0;
+  float gpu = 0, cpu = 0;
+  uint32_t gpuBits = 0, cpuBits = 0;
+  bool changesTessellation = false;
+};
+
 struct CheckOptions {
   Kernel kernel = Kernel::Epick;  // classification is exact with Epick and Epeck; they agree on every verdict
   size_t maxFindings = 1000;      // findings (and holes) kept in Report::findings / Report::holes (stats count all)
@@ -401,6 +472,9 @@ struct CheckOptions {
   // points (edges included) when its true surface box is not wholly outside the view frustum (see Hole).
   int visibilityGrid = 33;        // >= 2
   Fault fault{};                  // testing the checker only
+  // The GPU path: where the scene asks for it (lod.evaluate = "gpu" or lod.shader), the factors come from here.
+  // Null there: every camera gets Report::error (verify links no GL; the cli builds it, verify/gpu/gpu_lod.h).
+  std::shared_ptr<FactorProvider> factors;
 };
 
 enum class Classification : uint8_t {
@@ -518,12 +592,18 @@ struct Stats {
   int64_t cracks = 0;
   double worstGapWorld = 0;
   double worstGapPixels = 0;
+  // The GPU path with a C++ reference (lod.evaluate = "gpu", or lod.shader with a built-in lod.scheme): factors
+  // compared, those whose bits differ, and those of them that change the tessellation (FactorDiff).
+  int64_t factorsCompared = 0;
+  int64_t factorDiffs = 0;
+  int64_t factorDiffsTessellation = 0;
 };
 
 struct Report {
   std::string error;             // non-empty: the camera is invalid and nothing was checked
   std::vector<Finding> findings; // non-matching pairs (and matches with keepMatches), in layout order
   std::vector<Hole> holes;       // holes, in layout order (at most maxFindings; Stats::holes counts all)
+  std::vector<FactorDiff> factorDiffs; // GPU vs C++ build, in layout order (at most maxFindings; Stats counts all)
   bool truncated = false;        // more findings than maxFindings
   Stats stats;
   WorkStats work;                // this camera's work (camera-dependent only; see Terrain::stats())
@@ -650,6 +730,7 @@ const char* toString(LerpFormula f);
 const char* toString(MipMode m);
 const char* toString(TexelFormat f);
 const char* toString(HeightBounds b);
+const char* toString(LodEvaluate e); // "cpu", "gpu"
 const char* toString(Kernel k);
 bool parseKernel(const char* s, Kernel& out);
 

@@ -163,6 +163,15 @@ bool GlContext::create(const ContextOptions& options, std::string& error) {
   return true;
 }
 
+bool GlContext::makeCurrent() {
+  return egl_->context != EGL_NO_CONTEXT &&
+         eglMakeCurrent(egl_->display, EGL_NO_SURFACE, EGL_NO_SURFACE, egl_->context) == EGL_TRUE;
+}
+
+void GlContext::releaseCurrent() {
+  if (egl_->display != EGL_NO_DISPLAY) eglMakeCurrent(egl_->display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+}
+
 bool GlContext::isLlvmpipe() const { return renderer_.find("llvmpipe") != std::string::npos; }
 
 bool GlContext::isSoftware() const { return isLlvmpipe() || renderer_.find("softpipe") != std::string::npos; }

@@ -64,7 +64,8 @@ namespace gltest {
   X(PFNGLENDTRANSFORMFEEDBACKPROC, glEndTransformFeedback)                                                             \
   X(PFNGLDRAWARRAYSPROC, glDrawArrays)                                                                                 \
   X(PFNGLDISPATCHCOMPUTEPROC, glDispatchCompute)                                                                       \
-  X(PFNGLMEMORYBARRIERPROC, glMemoryBarrier)
+  X(PFNGLMEMORYBARRIERPROC, glMemoryBarrier)                                                                         \
+  X(PFNGLDETACHSHADERPROC, glDetachShader)
 
 struct GlFunctions {
 #define FFTESS_GL_DECLARE(type, name) type name = nullptr;
@@ -102,6 +103,11 @@ public:
   bool create(const ContextOptions& options, std::string& error);
 
   GlFunctions gl;
+
+  // Makes the context current on the calling thread / releases it from the calling thread (a context is current on
+  // one thread at a time: a caller that shares it between threads serialises and releases after each use).
+  bool makeCurrent();
+  void releaseCurrent();
 
   // GL_RENDERER, GL_VERSION, GL_VENDOR of the context; EGL_VENDOR of its display; "N EGL device(s), S software"
   // (empty when the devices could not be enumerated).

@@ -1,0 +1,119 @@
+// The GPU path of the LOD in the cli. See gpu_lod.h.
+#include "gpu_lod.h"
+#include "common.h"
+#include "findings.h"
+
+#ifdef FFTESS_HAVE_GL
+#include "verify/gpu/gpu_lod.h"
+#endif
+
+#include <cstdio>
+
+namespace fftess::cli {
+
+static bool usesGpu(const vf::Scene& s) { return !s.lod.shader.empty() || s.lod.evaluate == vf::LodEvaluate::Gpu; }
+
+void attachGpuLod(const vf::Terrain& terrain, const SceneArgs& a, vf::CheckOptions& opt) {
+  const vf::Scene& scene = terrain.scene();
+  if (!usesGpu(scene)) return;
+#ifdef FFTESS_HAVE_GL
+  gpulod::GpuLodOptions o;
+  o.hardware = a.gpuHardware;
+  std::string error;
+  gpulod::GpuLodError kind = gpulod::GpuLodError::None;
+  auto p = gpulod::createGpuLod(vf::LodPatches(terrain), o, error, kind);
+  if (!p) {
+    // One line (the cli's rule for bad input): the log's lines first, as the driver or glslang names file and line,
+    // then what failed. createGpuLod's message is "WHAT:\nLOG".
+    std::string head = error, log;
+    const size_t nl = error.find('\n');
+    if (nl != std::string::npos) head = error.substr(0, nl), log = error.substr(nl + 1);
+    while (!head.empty() && head.back() == ':') head.pop_back();
+    std::string msg;
+    size_t start = 0;
+    while (start < log.size()) {
+      const size_t end = std::min(log.find('\n', start), log.size());
+      std::string line = log.substr(start, end - start);
+      if (line.find_first_not_of(" \t") != std::string::npos) msg += (msg.empty() ? "" : "; ") + line;
+      start = end + 1;
+    }
+    msg = msg.empty() ? head : msg + " [" + head + "]";
+    const char* what = kind == gpulod::GpuLodError::NoContext ? "no OpenGL context for the GPU LOD: " : "";
+    throw UsageError(what + msg);
+  }
+  opt.factors = p;
+#else
+  (void)opt;
+  (void)a;
+  throw UsageError(a.scene + ": " + (scene.lod.shader.empty() ? "lod.evaluate = \"gpu\"" : "lod.shader") +
+                   " needs the GPU path, and this fftess was built without OpenGL (EGL or GL/glcorearb.h not found; "
+                   "install libegl-dev libgl-dev and rebuild)");
+#endif
+}
+
+void FactorDiffTally::add(size_t camera, const vf::Report& r) {
+  for (const vf::FactorDiff& d : r.factorDiffs) {
+    if (examples_.size() < 3) examples_.push_back({camera, d});
+    if (d.changesTessellation && tessellation_.size() < 3) tessellation_.push_back({camera, d});
+    if (examples_.size() >= 3 && tessellation_.size() >= 3) break;
+  }
+}
+
+static const char* const kFactorNames[6] = {"Ueq0", "Veq0", "Ueq1", "Veq1", "insideU", "insideV"};
+
+std::string FactorDiffTally::text(const vf::Scene& scene, const vf::CheckOptions& opt, const vf::Stats& total) const {
+  if (!usesGpu(scene)) return "";
+  std::string out;
+  char buf[400];
+#ifdef FFTESS_HAVE_GL
+  if (auto* p = dynamic_cast<const gpulod::GpuLodProvider*>(opt.factors.get())) {
+    out += "  GPU LOD        " + p->description() + " on " + p->renderer() + "\n";
+    const double per = p->dispatches() > 0 ? p->dispatchSeconds() / static_cast<double>(p->dispatches()) : 0.0;
+    std::snprintf(buf, sizeof buf,
+                  "                 %lld dispatches, %.3f ms per camera (upload of the patches once: %.1f ms, "
+                  "program build: %.1f ms)\n",
+                  static_cast<long long>(p->dispatches()), per * 1e3, p->uploadSeconds() * 1e3,
+                  p->compileSeconds() * 1e3);
+    out += buf;
+    if (p->cpuCameras() > 0) {
+      std::snprintf(buf, sizeof buf, "                 the C++ build of the same factors: %.3f ms per camera (one thread)\n",
+                    p->cpuSeconds() / static_cast<double>(p->cpuCameras()) * 1e3);
+      out += buf;
+    }
+  }
+#else
+  (void)opt;
+#endif
+  if (scene.lod.scheme == vf::LodScheme::Shader) {
+    out += "  factor differs from the GPU build: not compared (lod.scheme = \"shader\": no C++ reference; set "
+           "lod.scheme to a built-in scheme to compare)\n";
+    return out;
+  }
+  const double share = total.factorsCompared > 0
+                           ? 100.0 * static_cast<double>(total.factorDiffs) / static_cast<double>(total.factorsCompared)
+                           : 0.0;
+  std::snprintf(buf, sizeof buf,
+                "  factor differs from the GPU build (C++ %s): %lld of %lld factors (%.4g %%), %lld of them change "
+                "the tessellation\n",
+                vf::toString(scene.lod.scheme), static_cast<long long>(total.factorDiffs),
+                static_cast<long long>(total.factorsCompared), share,
+                static_cast<long long>(total.factorDiffsTessellation));
+  out += buf;
+  auto line = [&](const Example& e) {
+    std::snprintf(buf, sizeof buf, "    camera #%zu %s %s: GPU %s (0x%s), C++ %s (0x%s)%s\n", e.camera,
+                  patchText(e.diff.patch).c_str(), kFactorNames[e.diff.factor], formatFloat(e.diff.gpu).c_str(),
+                  hex8(e.diff.gpuBits).c_str(), formatFloat(e.diff.cpu).c_str(), hex8(e.diff.cpuBits).c_str(),
+                  e.diff.changesTessellation ? ", changes the tessellation" : "");
+    out += buf;
+  };
+  for (const Example& e : examples_) line(e);
+  for (const Example& e : tessellation_) {
+    bool seen = false;
+    for (const Example& x : examples_) seen = seen || (x.camera == e.camera && x.diff.patch.index == e.diff.patch.index &&
+                                                       x.diff.factor == e.diff.factor);
+    if (!seen) line(e);
+  }
+  return out;
+}
+
+} // namespace fftess::cli

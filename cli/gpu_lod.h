@@ -1,0 +1,39 @@
+// The GPU path of the LOD in the cli (lod.shader, lod.evaluate = "gpu"; docs/gpu_lod.md): building the provider
+// (verify/gpu/gpu_lod.h, when fftess_gl is built) and the report section "factor differs from the GPU build".
+#pragma once
+
+#include "check.h"
+
+#include "verify/verify.h"
+
+#include <string>
+#include <vector>
+
+namespace fftess::cli {
+
+namespace vf = fftess::verify;
+
+// Attaches the GPU factor provider the scene asks for to opt.factors (nothing when it asks for none). UsageError
+// (exit 2) when the shader does not compile or link, lacks lodMain or has the wrong signature (the message names the
+// file and line from the driver's or glslang's log), when no OpenGL 4.5 context exists, when HLSL tools are
+// missing, or when fftess was built without EGL.
+void attachGpuLod(const vf::Terrain& terrain, const SceneArgs& a, vf::CheckOptions& opt);
+
+// The factor differences of a command, for the text report: counts from the summed stats, the first examples kept.
+class FactorDiffTally {
+public:
+  void add(size_t camera, const vf::Report& r);
+  // "" when the scene does not use the GPU path. Otherwise what ran, where, its cost per camera, and (with a C++
+  // reference) the section "factor differs from the GPU build".
+  std::string text(const vf::Scene& scene, const vf::CheckOptions& opt, const vf::Stats& total) const;
+
+private:
+  struct Example {
+    size_t camera;
+    vf::FactorDiff diff;
+  };
+  std::vector<Example> examples_;
+  std::vector<Example> tessellation_;
+};
+
+} // namespace fftess::cli

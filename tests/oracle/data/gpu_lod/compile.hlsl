@@ -1,0 +1,5 @@
+LodFactors lodMain(LodPatch quad, TileNeighbourInfo n, LodCamera c, LodSettings s) {
+  LodFactors r;
+  r.factor[0] = undefinedThing;
+  return r;
+}

@@ -1,0 +1,1 @@
+LodFactors somethingElse(LodPatch quad) { LodFactors r; return r; }

@@ -1,0 +1,5 @@
+LodFactors lodMain(LodPatch quad, LodCamera c) {
+  LodFactors r;
+  r.culled = false;
+  return r;
+}
