@@ -138,7 +138,8 @@ std::string glslBuiltin(const vf::Lod& L, bool tile) {
        std::to_string(rebuildCode(L.screenSphere.reconstruction)) + ");\n";
   switch (L.scheme) {
   case vf::LodScheme::ScreenSphere:
-    s += tile ? "  return nvidiaTileLod(" + corners + ", n, cam, TileSettings(ss, adj.clampMode, adj.rebuild));\n"
+    s += tile ? "  return nvidiaTileLod(" + corners + ", n, cam, TileSettings(ss, adj.clampMode, adj.rebuild, " +
+                     boolText(L.screenSphere.insideFromFixedEdges) + "));\n"
               : "  return screenSphereLod(" + corners + ", cam, ss);\n";
     break;
   case vf::LodScheme::PatchCenter: s += "  return patchCenterLod(" + corners + ", cam, ss);\n"; break;
