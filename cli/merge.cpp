@@ -131,11 +131,11 @@ int runMerge(const MergeArgs& a) {
   }
   // Causes: per key the sums, the lowest first camera and its example; ordered by first camera, then by the order
   // within the shard that holds it (the order of its first findings).
-  struct Cause {
+  struct MergedCause {
     CauseRow row;
     size_t position = 0;
   };
-  std::map<std::string, Cause> causes;
+  std::map<std::string, MergedCause> causes;
   for (const json& s : shards) {
     size_t position = 0;
     for (const json& c : s.at("causes")) {
@@ -154,13 +154,13 @@ int runMerge(const MergeArgs& a) {
       ++position;
     }
   }
-  std::vector<Cause> ordered;
+  std::vector<MergedCause> ordered;
   for (auto& kv : causes) ordered.push_back(kv.second);
-  std::stable_sort(ordered.begin(), ordered.end(), [](const Cause& x, const Cause& y) {
+  std::stable_sort(ordered.begin(), ordered.end(), [](const MergedCause& x, const MergedCause& y) {
     return x.row.firstCamera != y.row.firstCamera ? x.row.firstCamera < y.row.firstCamera : x.position < y.position;
   });
   std::vector<CauseRow> rows;
-  for (const Cause& c : ordered) rows.push_back(c.row);
+  for (const MergedCause& c : ordered) rows.push_back(c.row);
   // Work: each shard's camera work (work - terrain_work), plus one terrain build's work.
   const json& terrain0 = shards[0].at("terrain_work");
   json work = terrain0;
