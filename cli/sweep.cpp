@@ -213,10 +213,16 @@ int runSweep(const SweepArgs& a) {
   // The JSON report streams: header now, each camera as it finishes (in camera order, through a small reorder
   // buffer), the summary at the end. The SVG keeps only what it draws.
   std::string jsonError; // an I/O error while streaming (raised again when the report is finished)
+  // Into the temporary file (or stdout) now; a FIFO or device is opened only when the report is complete (it would
+  // block on its reader), so for those the text waits in the buffer.
+  auto emitJson = [&](const std::string& text) {
+    if (jsonFile->streamsNow()) jsonFile->stream(text);
+    else jsonFile->buffer() += text;
+  };
   if (jsonFile) {
     json header = sweepHeaderJson(a, scene, how);
     if (sharded) header["shard"] = {{"index", shardK + 1}, {"count", shardN}};
-    jsonFile->stream(sweepJsonBegin(header));
+    emitJson(sweepJsonBegin(header));
   }
   std::map<size_t, json> pending; // local index -> camera text, waiting for the cameras before it
   size_t nextLocal = 0;
@@ -240,7 +246,7 @@ int runSweep(const SweepArgs& a) {
     try {
       for (auto it = pending.begin(); it != pending.end() && (all || it->first == nextLocal); it = pending.erase(it)) {
         nextLocal = it->first + 1;
-        if (jsonError.empty()) jsonFile->stream(sweepJsonCamera(it->second, !anyCamera));
+        if (jsonError.empty()) emitJson(sweepJsonCamera(it->second, !anyCamera));
         anyCamera = true;
       }
     } catch (const std::exception& e) {
@@ -329,7 +335,7 @@ int runSweep(const SweepArgs& a) {
     }
     vf::WorkStats terrainWork = terrain.stats();
     terrainWork.terrainBuilds = vf::terrainBuildCount(); // every build in this process
-    jsonFile->buffer() = sweepJsonEnd(sweepSummaryJson(requested, res, rows, terrainWork), anyCamera);
+    jsonFile->buffer() += sweepJsonEnd(sweepSummaryJson(requested, res, rows, terrainWork), anyCamera);
   }
   if (svgFile) {
     std::vector<size_t> firsts;
