@@ -164,7 +164,7 @@ TEST_CASE("findings carry the LOD's own record", "[verify][prepared][causes]") {
   }
 }
 
-TEST_CASE("culled patches run no tessellation and no domain emulation; shared edge points are evaluated once",
+TEST_CASE("culled patches run no tessellation and no domain emulation, shared edge points are evaluated once",
           "[verify][prepared]") {
   const Scene s = loadExample("terrain.toml");
   const Terrain t = prepared(s);
