@@ -15,6 +15,7 @@ struct BenchReportArgs {
   uint64_t seed = 1;
   int meshCameras = 1;                // --mesh-cameras: cameras of the whole-mesh row (seconds each)
   std::string only;                   // --group: only this group's rows
+  int repeats = 3;                    // --repeats: each edge-check camera timed as the fastest of this many runs
 };
 
 struct BenchRow {
@@ -32,6 +33,7 @@ struct BenchTable {
   int patches = 0;
   std::vector<vf::Camera> cameras;
   size_t meshCameras = 0;
+  int repeats = 1;
   std::vector<BenchRow> rows;
 };
 

@@ -31,6 +31,8 @@ CLI::App* addBench(CLI::App& app, BenchArgs& a) {
   sub->add_option("--cameras", a.cameras, "Random cameras (every row runs on the same ones)")->capture_default_str();
   sub->add_option("--seed", a.seed, "Seed of the random cameras")->capture_default_str();
   sub->add_option("--mesh-cameras", a.meshCameras, "Cameras of the whole-mesh row (seconds each)")->capture_default_str();
+  sub->add_option("--repeats", a.repeats, "Each camera of an edge-check row is timed as the fastest of this many runs")
+      ->capture_default_str();
   sub->add_option("--group", a.group, "Only this group's rows (checker, domain formula, heights, mip, tessellator, scope)");
   sub->add_option("--markdown", a.markdown, "Write the table as Markdown");
   sub->add_option("--json", a.json, "Write the table as JSON");
@@ -55,6 +57,8 @@ static int runBenchReport(const BenchArgs& a) {
   r.overrides = a.overrides;
   r.cameras = a.cameras;
   r.meshCameras = a.meshCameras;
+  if (a.repeats < 1) throw UsageError("--repeats " + std::to_string(a.repeats) + ": must be >= 1");
+  r.repeats = a.repeats;
   r.only = a.group;
   try {
     r.seed = std::stoull(a.seed);

@@ -39,6 +39,7 @@ struct BenchArgs {
   int cameras = 16;
   std::string seed = "1";
   int meshCameras = 1;
+  int repeats = 3;
   std::string group;
   std::string markdown, json, svg;
   bool quiet = false;
