@@ -6,6 +6,9 @@
 #include "common.h"
 #include "findings.h"
 
+#include "lod/lod_double.h"
+#include "verify/internal.h" // the LOD's inputs per patch, for the float-vs-double row (bench only)
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -26,6 +29,7 @@ struct RowSpec {
   vf::Kernel kernel = vf::Kernel::Epick;
   bool flush = false;
   bool mesh = false;      // whole-mesh check instead of the edge check
+  int lodPrecision = 0;   // 1: lod/ in float (the hull shader), 2: the same shaders in double (screen_sphere only)
   bool reference = false; // the group's reference row
 };
 
@@ -53,6 +57,8 @@ std::vector<RowSpec> rowSpecs() {
       {"lod.scheme=bonaventura", "displacement.mip=per_patch"});
   add("mip", "bonaventura, per_vertex", "lod.scheme=bonaventura displacement.mip=per_vertex",
       {"lod.scheme=bonaventura", "displacement.mip=per_vertex"});
+  add("lod precision", "float", "lod/ as the hull shader computes it (screen_sphere: nvidiaTile)", {}, true)->lodPrecision = 1;
+  add("lod precision", "double", "the same .glsl compiled in double (lod_double.h), factors rounded to float", {})->lodPrecision = 2;
   add("tessellator", "denormals kept", "Options::flushDenormals=false (hardware)", {}, true);
   add("tessellator", "denormals flushed", "--flush-denormals (llvmpipe)", {})->flush = true;
   add("scope", "edges", "edge check: fftess::edgePoints per outer edge", {}, true);
@@ -72,6 +78,7 @@ struct Row {
   int64_t gained = 0, lost = 0;
   bool compared = false;
   std::string verdict;
+  int64_t lodFactorsDiffer = 0, lodJumpFactorsDiffer = 0, lodCullsDiffer = 0;
 };
 
 void runRow(Row& row, const BenchReportArgs& a, const std::vector<vf::Camera>& cams, size_t meshCameras) {
@@ -93,6 +100,46 @@ void runRow(Row& row, const BenchReportArgs& a, const std::vector<vf::Camera>& c
   opt.maxFindings = static_cast<size_t>(-1);
   const size_t n = row.spec.mesh ? std::min(meshCameras, cams.size()) : cams.size();
   vf::SweepResult sum;
+  if (row.spec.lodPrecision) {
+    // Only the LOD is run and timed. Both rows evaluate every patch; the double row also counts the outer factors of
+    // patches float does not cull whose bits differ from the float evaluation, and the patches culled differently.
+    const vf::detail::TerrainData& td = tr.terrain.data();
+    const vf::Lod& L = td.scene.lod;
+    if (L.scheme != vf::LodScheme::ScreenSphere) {
+      row.error = "only lod.scheme = \"screen_sphere\" has a double build (lod/lod_double.h)";
+      return;
+    }
+    for (size_t c = 0; c < n; ++c) {
+      const lod::Camera cam = vf::detail::toLodCamera(cams[c]);
+      std::vector<lod::PatchLod> f(td.patches.size());
+      const Clock::time_point t0 = Clock::now();
+      for (size_t i = 0; i < td.patches.size(); ++i) {
+        const vf::detail::TerrainPatch& p = td.patches[i];
+        f[i] = row.spec.lodPrecision == 1 ? vf::detail::patchLod(td, p, p.tile, cam)
+               : td.adjacency             ? lod::nvidiaTileDouble(p.lod, p.tile, cam, L.screenSphere)
+                                          : lod::screenSphereDouble(p.lod, cam, L.screenSphere.sphere);
+      }
+      row.seconds += std::chrono::duration<double>(Clock::now() - t0).count();
+      row.work.lodEvaluations += static_cast<int64_t>(td.patches.size());
+      if (row.spec.lodPrecision == 1) continue;
+      for (size_t i = 0; i < td.patches.size(); ++i) {
+        const vf::detail::TerrainPatch& p = td.patches[i];
+        const lod::PatchLod g = vf::detail::patchLod(td, p, p.tile, cam);
+        if (g.why.culled != f[i].why.culled) ++row.lodCullsDiffer;
+        if (g.why.culled) continue;
+        for (int e = 0; e < 4; ++e) {
+          if (floatBits(g.factors[e]) == floatBits(f[i].factors[e])) continue;
+          ++row.lodFactorsDiffer;
+          if (p.tile.size[e] != 1.0f) ++row.lodJumpFactorsDiffer;
+        }
+      }
+    }
+    row.cameras = n;
+    row.verdict = row.spec.lodPrecision == 1 ? "-" :
+        std::to_string(row.lodFactorsDiffer) + " factors differ (" + std::to_string(row.lodJumpFactorsDiffer) +
+        " at size jumps), " + std::to_string(row.lodCullsDiffer) + " culls differ; not re-checked";
+    return;
+  }
   for (size_t c = 0; c < n; ++c) {
     const Clock::time_point t0 = Clock::now();
     if (row.spec.mesh) {
@@ -183,8 +230,12 @@ BenchTable runBenchTable(const BenchReportArgs& a) {
   }
   auto perCam = [](const Row& r) { return r.seconds / static_cast<double>(r.cameras); };
   double cheapest = 0;
-  for (const Row& r : rows)
-    if (r.error.empty() && r.cameras > 0 && (cheapest == 0 || perCam(r) < cheapest)) cheapest = perCam(r);
+  double lodFloat = 0; // the LOD rows time the LOD alone: their cost is relative to the float LOD
+  for (const Row& r : rows) {
+    if (!r.error.empty() || r.cameras == 0) continue;
+    if (r.spec.lodPrecision == 1) lodFloat = perCam(r);
+    if (!r.spec.lodPrecision && (cheapest == 0 || perCam(r) < cheapest)) cheapest = perCam(r);
+  }
   for (const Row& r : rows) {
     BenchRow b;
     b.group = r.spec.group, b.name = r.spec.name, b.what = r.spec.what, b.reference = r.spec.reference;
@@ -193,7 +244,8 @@ BenchTable runBenchTable(const BenchReportArgs& a) {
     if (r.error.empty() && r.cameras > 0) {
       b.msPerCamera = 1e3 * perCam(r);
       b.usPerEdge = r.spec.mesh || r.stats.edgesChecked == 0 ? 0 : 1e6 * r.seconds / static_cast<double>(r.stats.edgesChecked);
-      b.relative = cheapest > 0 ? perCam(r) / cheapest : 0;
+      const double unit = r.spec.lodPrecision ? lodFloat : cheapest;
+      b.relative = unit > 0 ? perCam(r) / unit : 0;
     }
     b.findings = static_cast<int64_t>(r.findings.size());
     b.gained = r.gained, b.lost = r.lost, b.compared = r.compared;
@@ -233,7 +285,8 @@ std::string benchMarkdown(const BenchTable& t) {
          perCamera(r.work.fullTessellations, c) + " |\n";
   }
   o += "\nWork columns are per camera. Findings: cracks, T-junctions and holes over all cameras (whole mesh: patch "
-       "edges holding an inner border edge). cost: time per camera over the cheapest row's.\n";
+       "edges holding an inner border edge). cost: time per camera over the cheapest row's; the lod precision rows "
+       "time the LOD alone (every patch), their cost is relative to the float LOD.\n";
   return o;
 }
 

@@ -76,7 +76,7 @@ TEST_CASE("fftess bench prints the accuracy table and its work counters prove th
                            "domain formula/lerp_fma", "domain formula/blend", "domain formula/blend_fma",
                            "heights/8-bit subtexel", "heights/float bilinear", "heights/r16_float", "heights/flat",
                            "mip/bonaventura, no mip", "mip/bonaventura, per_patch", "mip/bonaventura, per_vertex",
-                           "tessellator/denormals kept", "tessellator/denormals flushed", "scope/edges",
+                           "lod precision/float", "lod precision/double", "tessellator/denormals kept", "tessellator/denormals flushed", "scope/edges",
                            "scope/whole mesh"}) {
     INFO(name);
     REQUIRE(rows.count(name));
@@ -98,6 +98,9 @@ TEST_CASE("fftess bench prints the accuracy table and its work counters prove th
   CHECK(e.at("stats").at("culled_patches").get<int64_t>() > 0);
   CHECK(work("scope/edges", "edge_queries") > 0);
   CHECK(work("scope/edges", "shared_edge_points") > 0);
+  // The double LOD row says how many factors differ and that it did not re-check.
+  CHECK(rows["lod precision/double"].at("verdict").get<std::string>().find("factors differ") != std::string::npos);
+  CHECK(work("lod precision/double", "lod_evaluations") == 2 * j.at("patches").get<int64_t>());
   // The exact-construction kernel is the checker group's reference; the float checker is the cheapest checker.
   CHECK(rows["checker/epeck"].at("reference") == true);
   CHECK(clitest::readFile(md).find("| checker | epeck (reference)") != std::string::npos);
