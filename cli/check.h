@@ -33,11 +33,21 @@ struct SweepArgs : SceneArgs {
   std::string seed = "1";                     // --seed: a decimal 0 .. 2^64-1, checked by runSweep
   int threads = 0;
   std::string label;   // --label TEXT: name printed in the summary (default: the scene name)
+  std::string shard;   // --shard K/N: only the cameras i with i % N == K - 1 (global indices kept)
+};
+
+struct MergeArgs {
+  std::vector<std::string> inputs; // shards' JSON reports
+  std::string json;                // --json FILE: the merged report ("-": stdout)
+  bool quiet = false;
+  bool failOnTJunctions = false;
 };
 
 CLI::App* addCheck(CLI::App& app, CheckArgs& a);
 CLI::App* addSweep(CLI::App& app, SweepArgs& a);
 int runCheck(const CheckArgs& a);
 int runSweep(const SweepArgs& a);
+CLI::App* addMerge(CLI::App& app, MergeArgs& a);
+int runMerge(const MergeArgs& a);
 
 } // namespace fftess::cli

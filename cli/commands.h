@@ -34,6 +34,15 @@ int runExplain(const ExplainArgs& a);
 
 struct BenchArgs {
   std::vector<std::string> passThrough;
+  std::string scene;                  // --scene FILE
+  std::vector<std::string> overrides; // --set KEY=VALUE
+  int cameras = 16;
+  std::string seed = "1";
+  int meshCameras = 1;
+  int repeats = 3;
+  std::string group;
+  std::string markdown, json, svg;
+  bool quiet = false;
 };
 CLI::App* addBench(CLI::App& app, BenchArgs& a);
 int runBench(const BenchArgs& a, const char* argv0);

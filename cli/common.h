@@ -46,6 +46,9 @@ public:
   // commit() then completes the file. std::runtime_error naming the path on failure.
   void stream(const std::string& s);
   const std::string& path() const { return path_; }
+  // Whether stream() writes now without blocking on a reader: a regular file (its temporary file) or stdout; false
+  // for a FIFO or a device, which is opened only at publish() (a streaming writer buffers for those instead).
+  bool streamsNow() const { return !direct_; }
 
 private:
   std::string path_;   // as given (messages)

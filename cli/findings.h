@@ -34,6 +34,9 @@ std::string findingLine(const vf::Finding& f);        // one line: classificatio
 Cause holeCause(const vf::Hole& h);
 std::string holeLine(const vf::Hole& h);              // one line: "hole", the patch, the cause
 std::string statsText(const vf::Stats& s);            // the indented stats block of check and sweep
+// The verdict line's words of a sweep (and of merged shards): cameras = the cameras asked for.
+std::string verdictWords(vf::Verdict verdict, const vf::SweepResult& res, size_t crackCameras, size_t holeCameras,
+                         size_t cameras);
 
 // Scene options shared by check and sweep.
 std::vector<std::string> overridesOf(const SceneArgs& a); // --eye/--target as overrides, then every --set

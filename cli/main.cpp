@@ -36,6 +36,8 @@ int main(int argc, char** argv) {
   SweepArgs sweepArgs;
   CLI::App* check = addCheck(app, checkArgs);
   CLI::App* sweep = addSweep(app, sweepArgs);
+  MergeArgs mergeArgs;
+  CLI::App* merge = addMerge(app, mergeArgs);
   CLI::App* bench = addBench(app, benchArgs);
   CompareArgs compareArgs;
   CLI::App* compare = addCompare(app, compareArgs);
@@ -71,6 +73,7 @@ int main(int argc, char** argv) {
     if (explain->parsed()) return runExplain(explainArgs);
     if (check->parsed()) return runCheck(checkArgs);
     if (sweep->parsed()) return runSweep(sweepArgs);
+    if (merge->parsed()) return runMerge(mergeArgs);
     if (compare->parsed()) return runCompare(compareArgs);
     if (driver->parsed()) return runDriverCheck(driverArgs);
     if (bench->parsed()) {

@@ -28,7 +28,9 @@ json lodJson(const vf::EdgeLod& l) {
 json workJson(const vf::WorkStats& w) {
   return {{"terrain_builds", w.terrainBuilds},   {"height_samples", w.heightSamples},
           {"domain_evaluations", w.domainEvaluations}, {"lod_evaluations", w.lodEvaluations},
-          {"edge_queries", w.edgeQueries},       {"cgal_calls", w.cgalCalls}};
+          {"edge_queries", w.edgeQueries},       {"cgal_calls", w.cgalCalls},
+          {"full_tessellations", w.fullTessellations}, {"shared_edge_points", w.sharedEdgePoints},
+          {"visibility_evaluations", w.visibilityEvaluations}};
 }
 
 static json sideJson(const vf::EdgeSide& s) {
@@ -157,11 +159,31 @@ json checkJson(const SceneArgs& a, const vf::Terrain& terrain, const vf::Camera&
   return j;
 }
 
-json sweepJson(const SceneArgs& a, const vf::Terrain& terrain, const std::string& camerasSource,
-               const std::vector<vf::Camera>& cams, size_t requested, const vf::SweepResult& res,
-               const std::vector<CauseRow>& causes) {
-  json j = reportHeader("sweep", a, terrain.scene());
+json sweepHeaderJson(const SceneArgs& a, const vf::Scene& scene, const std::string& camerasSource) {
+  json j = reportHeader("sweep", a, scene);
   j["cameras_source"] = camerasSource;
+  return j;
+}
+
+json sweepCameraJson(size_t globalIndex, const vf::Camera& cam, const vf::CameraResult& c) {
+  json jc;
+  jc["index"] = globalIndex;
+  jc["eye"] = vec3Json(cam.eye);
+  jc["target"] = vec3Json(cam.target);
+  jc["done"] = c.done;
+  if (!c.error.empty()) {
+    jc["error"] = c.error;
+    return jc;
+  }
+  jc["first_hole"] = c.hasHole ? holeJson(c.firstHole) : json(nullptr);
+  jc["stats"] = statsJson(c.stats);
+  jc["worst"] = c.hasFinding ? findingJson(c.worst) : json(nullptr);
+  return jc;
+}
+
+json sweepSummaryJson(size_t requested, const vf::SweepResult& res, const std::vector<CauseRow>& causes,
+                      const vf::WorkStats& terrainWork) {
+  json j;
   j["cameras_total"] = requested;
   j["cameras_done"] = res.camerasDone;
   j["cancelled"] = res.cancelled;
@@ -175,30 +197,43 @@ json sweepJson(const SceneArgs& a, const vf::Terrain& terrain, const std::string
     cs.push_back({{"cause", c.cause}, {"findings", c.findings}, {"cameras", c.cameras}, {"first_camera", c.firstCamera},
                   {"example", c.example}});
   j["causes"] = cs;
-  json cl = json::array();
-  for (const vf::CameraResult& c : res.cameras) {
-    if (!c.done && c.error.empty()) continue; // an interrupted sweep lists only the cameras it checked
-    json jc;
-    jc["index"] = c.cameraIndex;
-    jc["eye"] = vec3Json(cams[c.cameraIndex].eye);
-    jc["target"] = vec3Json(cams[c.cameraIndex].target);
-    jc["done"] = c.done;
-    if (!c.error.empty()) {
-      jc["error"] = c.error;
-      cl.push_back(jc);
-      continue;
-    }
-    jc["first_hole"] = c.hasHole ? holeJson(c.firstHole) : json(nullptr);
-    jc["stats"] = statsJson(c.stats);
-    jc["worst"] = c.hasFinding ? findingJson(c.worst) : json(nullptr);
-    cl.push_back(jc);
-  }
-  j["cameras"] = cl;
-  vf::WorkStats work = terrain.stats();
+  vf::WorkStats work = terrainWork;
   work += res.work;
-  work.terrainBuilds = vf::terrainBuildCount();
+  work.terrainBuilds = terrainWork.terrainBuilds;
   j["work"] = workJson(work);
+  j["terrain_work"] = workJson(terrainWork);
   return j;
+}
+
+// dump(2) of a value nested `depth` levels deep: its continuation lines indented by 2 * depth more.
+static std::string nested(const json& v, int depth) {
+  const std::string text = v.dump(2), pad(static_cast<size_t>(2 * depth), ' ');
+  std::string out;
+  out.reserve(text.size() + text.size() / 8);
+  for (char c : text) {
+    out += c;
+    if (c == '\n') out += pad;
+  }
+  return out;
+}
+
+static std::string members(const json& obj) {
+  std::string out;
+  bool first = true;
+  for (auto it = obj.begin(); it != obj.end(); ++it) {
+    out += first ? "" : ",\n";
+    first = false;
+    out += "  " + json(it.key()).dump() + ": " + nested(it.value(), 1);
+  }
+  return out;
+}
+
+std::string sweepJsonBegin(const json& header) { return "{\n" + members(header) + ",\n  \"cameras\": ["; }
+
+std::string sweepJsonCamera(const json& entry, bool first) { return (first ? "\n    " : ",\n    ") + nested(entry, 2); }
+
+std::string sweepJsonEnd(const json& summary, bool anyCamera) {
+  return std::string(anyCamera ? "\n  ]" : "]") + ",\n" + members(summary) + "\n}\n";
 }
 
 } // namespace fftess::cli

@@ -16,7 +16,11 @@ using json = nlohmann::ordered_json;
 // "version" of the check and sweep JSON reports; bumped on any change of their schema (docs/cli.md).
 // 2: the classification and cause keys spell T-junctions "t_junction" (version 1 wrote "t-junction").
 // 3: per side "factor_bits" and "lod" (the LOD's own record), and "work" (the command's work counters).
-constexpr int kReportVersion = 4; // 4: holes, verdicts nothing_checked / unchecked, invalid cameras
+// 4: holes, verdicts nothing_checked / unchecked, invalid cameras.
+// 5: sweep: "cameras" streamed before the summary (written as each camera finishes, in index order), "shard" (with
+//    --shard), "terrain_work" (the terrain build's part of "work", so shards merge); work counters
+//    full_tessellations, shared_edge_points, visibility_evaluations.
+constexpr int kReportVersion = 5;
 
 json vec3Json(const glm::vec3& v);
 json findingJson(const vf::Finding& f);
@@ -39,9 +43,19 @@ struct CauseRow {
 // The whole report of `fftess check` (mesh: null unless --mesh ran).
 json checkJson(const SceneArgs& a, const vf::Terrain& terrain, const vf::Camera& cam, const vf::Report& r,
                const vf::MeshReport* mesh);
-// The whole report of `fftess sweep`.
-json sweepJson(const SceneArgs& a, const vf::Terrain& terrain, const std::string& camerasSource,
-               const std::vector<vf::Camera>& cams, size_t requested, const vf::SweepResult& res,
-               const std::vector<CauseRow>& causes); // requested: cameras asked for (more than cams if interrupted)
+// The sweep report, written in three parts so that its cameras stream to the file as they finish (memory does not
+// grow with the camera count), and so that `fftess merge` writes exactly the text one run writes:
+//   sweepJsonBegin(header)   "{" and the header members, then the opening of "cameras";
+//   sweepJsonCamera(entry)   one camera (first: whether it is the first one written);
+//   sweepJsonEnd(summary)    the end of "cameras" and the summary members, "}" and a newline.
+// The concatenation equals ordered_json{header..., "cameras": [entries...], summary...}.dump(2) + "\n".
+json sweepHeaderJson(const SceneArgs& a, const vf::Scene& scene, const std::string& camerasSource);
+json sweepCameraJson(size_t globalIndex, const vf::Camera& cam, const vf::CameraResult& c);
+// The summary: cameras_total .. work (requested: cameras asked for, more than checked if interrupted).
+json sweepSummaryJson(size_t requested, const vf::SweepResult& res, const std::vector<CauseRow>& causes,
+                      const vf::WorkStats& terrainWork);
+std::string sweepJsonBegin(const json& header);
+std::string sweepJsonCamera(const json& entry, bool first);
+std::string sweepJsonEnd(const json& summary, bool anyCamera);
 
 } // namespace fftess::cli

@@ -181,8 +181,20 @@ std::string checkSvg(const vf::Terrain& terrain, const vf::Report& r, const std:
   return o;
 }
 
-std::string sweepSvg(const vf::Terrain& terrain, const std::vector<vf::Camera>& cams, const vf::SweepResult& res,
-                     const std::vector<size_t>& firstCameras, bool randomOrder, const std::string& title) {
+SvgCamera svgCamera(size_t globalIndex, const vf::Camera& cam, const vf::CameraResult& c) {
+  SvgCamera d;
+  d.index = globalIndex;
+  d.x = cam.eye.x, d.z = cam.eye.z;
+  d.cracks = c.stats.cracks;
+  d.verdict = c.stats.cracks > 0 || c.stats.holes > 0 ? 'b' : c.stats.tJunctions > 0 ? 'w' : 'o';
+  d.crackMark = c.hasFinding && c.stats.cracks > 0;
+  if (d.crackMark) d.gx = c.worst.gapVertex.x, d.gz = c.worst.gapVertex.z;
+  return d;
+}
+
+std::string sweepSvg(const vf::Terrain& terrain, const std::vector<vf::Camera>& cams, const std::vector<SvgCamera>& dots,
+                     const std::vector<SvgHole>& holes, const std::vector<size_t>& firstCameras, bool randomOrder,
+                     const std::string& title) {
   MapView v;
   vf::Extent ext = terrain.extent();
   for (const vf::Camera& c : cams) { // cameras off the terrain stay on the map
@@ -210,20 +222,19 @@ std::string sweepSvg(const vf::Terrain& terrain, const std::vector<vf::Camera>& 
     o += "\"/>\n";
   }
   o += "<g id=\"holes\">\n"; // the first hole of each camera
-  for (const vf::CameraResult& c : res.cameras)
-    if (c.done && c.hasHole)
-      svgHole(o, terrain, v, c.firstHole, "camera " + std::to_string(c.cameraIndex) + ": " + holeCause(c.firstHole).detail);
+  for (const SvgHole& h : holes) {
+    vf::Hole hole;
+    hole.patch.index = h.patch;
+    svgHole(o, terrain, v, hole, h.title);
+  }
   o += "</g>\n<g id=\"cameras\">\n";
-  for (const vf::CameraResult& c : res.cameras) {
-    if (!c.done) continue; // an interrupted sweep draws the cameras it checked
-    const vf::Camera& cam = cams[c.cameraIndex];
-    const char* cls = !c.done ? "p" : c.stats.cracks > 0 || c.stats.holes > 0 ? "bad" : c.stats.tJunctions > 0 ? "warn" : "ok";
+  for (const SvgCamera& c : dots) {
+    const char* cls = c.verdict == 'b' ? "bad" : c.verdict == 'w' ? "warn" : "ok";
     std::snprintf(buf, sizeof buf, "<circle class=\"%s\" cx=\"%.2f\" cy=\"%.2f\" r=\"3\"><title>camera %zu: %lld cracks</title></circle>\n",
-                  cls, v.x(cam.eye.x), v.y(cam.eye.z), c.cameraIndex, static_cast<long long>(c.stats.cracks));
+                  cls, v.x(c.x), v.y(c.z), c.index, static_cast<long long>(c.cracks));
     o += buf;
-    if (c.hasFinding && c.stats.cracks > 0) {
-      std::snprintf(buf, sizeof buf, "<circle class=\"mk\" cx=\"%.2f\" cy=\"%.2f\" r=\"4\"/>\n", v.x(c.worst.gapVertex.x),
-                    v.y(c.worst.gapVertex.z));
+    if (c.crackMark) {
+      std::snprintf(buf, sizeof buf, "<circle class=\"mk\" cx=\"%.2f\" cy=\"%.2f\" r=\"4\"/>\n", v.x(c.gx), v.y(c.gz));
       o += buf;
     }
   }
@@ -240,7 +251,7 @@ std::string sweepSvg(const vf::Terrain& terrain, const std::vector<vf::Camera>& 
                 "red cracks or holes.</text>\n<text class=\"t\" x=\"20\" y=\"%.0f\">Circles: worst crack of each camera; "
                 "filled patches: each camera's first hole. "
                 "Numbers: first camera of each cause (in summary order).</text>\n",
-                H + 20, res.camerasDone, H + 40);
+                H + 20, dots.size(), H + 40);
   o += buf;
   o += "</svg>\n";
   return o;

@@ -13,10 +13,27 @@ namespace fftess::cli {
 // edge zoomed in an inset.
 std::string checkSvg(const vf::Terrain& terrain, const vf::Report& r, const std::string& title);
 
-// The sweep picture: layout, every camera's eye as a dot coloured by its verdict (joined in order unless
-// randomOrder), each camera's worst crack circled, and the first camera of each cause numbered in the order of
-// firstCameras.
-std::string sweepSvg(const vf::Terrain& terrain, const std::vector<vf::Camera>& cams, const vf::SweepResult& res,
-                     const std::vector<size_t>& firstCameras, bool randomOrder, const std::string& title);
+// What the sweep picture draws of one camera checked (kept per camera instead of its CameraResult).
+struct SvgCamera {
+  size_t index = 0;          // global camera index
+  float x = 0, z = 0;        // eye
+  int64_t cracks = 0;
+  char verdict = 'o';        // 'o' clean, 'w' T-junctions, 'b' cracks or holes
+  bool crackMark = false;    // worst crack circled at (gx, gz)
+  float gx = 0, gz = 0;
+};
+// A camera's first hole: the patch filled, with a title.
+struct SvgHole {
+  int patch = -1;
+  std::string title;
+};
+SvgCamera svgCamera(size_t globalIndex, const vf::Camera& cam, const vf::CameraResult& c);
+
+// The sweep picture: layout, every checked camera's eye as a dot coloured by its verdict (all of `cams` joined in
+// order unless randomOrder), each camera's worst crack circled, each camera's first hole filled, and the first
+// camera of each cause numbered in the order of firstCameras (indices into cams).
+std::string sweepSvg(const vf::Terrain& terrain, const std::vector<vf::Camera>& cams, const std::vector<SvgCamera>& dots,
+                     const std::vector<SvgHole>& holes, const std::vector<size_t>& firstCameras, bool randomOrder,
+                     const std::string& title);
 
 } // namespace fftess::cli

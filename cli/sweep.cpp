@@ -12,6 +12,9 @@
 #include <cstdio>
 #include <map>
 #include <set>
+#include <stdexcept>
+#include <cstdint>
+#include <memory>
 
 namespace fftess::cli {
 namespace {
@@ -93,6 +96,9 @@ CLI::App* addSweep(CLI::App& app, SweepArgs& a) {
   sub->add_option("--seed", a.seed, "Seed for --random")->capture_default_str();
   sub->add_option("-j,--threads", a.threads, "Worker threads (default 0: all cores)")->capture_default_str();
   sub->add_option("--label", a.label, "Name for this run in the summary (default: the scene's name)");
+  sub->add_option("--shard", a.shard,
+                  "K/N: check only the cameras i with i % N == K - 1 (1 <= K <= N; indices stay global, so the "
+                  "shards' --json reports merge with 'fftess merge' into exactly the report of one run)");
   return sub;
 }
 
@@ -113,6 +119,52 @@ static uint64_t parseSeed(const std::string& text) {
   return v;
 }
 
+// The verdict line's words (sweep and merge).
+std::string verdictWords(vf::Verdict verdict, const vf::SweepResult& res, size_t crackCameras, size_t holeCameras,
+                         size_t cameras) {
+  const std::string holesText = "HOLES seen from " + std::to_string(holeCameras) + " of " +
+                                std::to_string(res.camerasDone) + " cameras (" + std::to_string(res.total.holes) +
+                                " patches not drawn while in view)";
+  switch (verdict) {
+  case vf::Verdict::Cracks:
+    return "CRACKS seen from " + std::to_string(crackCameras) + " of " + std::to_string(res.camerasDone) +
+           " cameras (worst gap " + fmtWorld(res.total.worstGapWorld) + " world units, " +
+           fmtWorld(res.total.worstGapPixels) + " px)" + (res.total.holes > 0 ? "; " + holesText : "");
+  case vf::Verdict::Holes: return holesText;
+  case vf::Verdict::NothingChecked:
+    return "NOTHING CHECKED: no camera classified a shared edge (" + std::to_string(res.camerasDone) +
+           " cameras checked, " + std::to_string(res.camerasInvalid) + " invalid); not a clean verdict";
+  case vf::Verdict::Unchecked:
+    return "NOT CLEAN: " + std::to_string(res.camerasInvalid) + " of " + std::to_string(cameras) +
+           " cameras could not be checked (the other " + std::to_string(res.camerasDone) + " found no crack or hole)";
+  case vf::Verdict::TJunctionsOnly: return res.cancelled ? "no cracks so far (interrupted)" : "no cracks (T-junctions only)";
+  case vf::Verdict::Watertight:
+    return res.cancelled ? "no cracks so far (interrupted)" : "WATERTIGHT from all " + std::to_string(res.camerasDone) + " cameras";
+  }
+  return "?";
+}
+
+// --shard K/N: 1 <= K <= N, both whole numbers.
+static void parseShard(const std::string& text, size_t& k, size_t& n) {
+  k = 0, n = 1;
+  if (text.empty()) return;
+  const size_t slash = text.find('/');
+  auto number = [&](const std::string& t, size_t& out) {
+    if (t.empty() || t.size() > 9) return false;
+    out = 0;
+    for (char c : t) {
+      if (c < '0' || c > '9') return false;
+      out = out * 10 + static_cast<size_t>(c - '0');
+    }
+    return true;
+  };
+  size_t kk = 0, nn = 0;
+  if (slash == std::string::npos || !number(text.substr(0, slash), kk) || !number(text.substr(slash + 1), nn) ||
+      kk < 1 || nn < 1 || kk > nn)
+    throw UsageError("--shard " + quoteToken(text) + ": expected K/N with 1 <= K <= N (e.g. 2/8)");
+  k = kk - 1, n = nn;
+}
+
 int runSweep(const SweepArgs& a) {
   const int generators = (a.orbit >= 0) + (a.flyover >= 0) + (a.random >= 0);
   if (generators > 1) throw UsageError("sweep: give only one of --orbit, --flyover, --random");
@@ -121,7 +173,15 @@ int runSweep(const SweepArgs& a) {
   if (a.random == 0 || a.random < -1) throw UsageError("--random " + std::to_string(a.random) + ": must be >= 1");
   if (a.threads < 0) throw UsageError("--threads " + std::to_string(a.threads) + ": must be >= 0");
   const uint64_t seed = parseSeed(a.seed);
-  ReportFiles reports(a); // output paths are checked before the work
+  size_t shardK = 0, shardN = 1;
+  parseShard(a.shard, shardK, shardN);
+  const bool sharded = !a.shard.empty();
+  // Output paths are checked before the work (as ReportFiles does; the JSON streams, so it is handled here).
+  if (!a.json.empty() && !a.svg.empty() && a.json == a.svg && a.json != "-")
+    throw UsageError("--json and --svg name the same file " + quoteToken(a.json));
+  std::unique_ptr<AtomicFile> jsonFile, svgFile;
+  if (!a.json.empty()) jsonFile = std::make_unique<AtomicFile>(a.json);
+  if (!a.svg.empty()) svgFile = std::make_unique<AtomicFile>(a.svg);
   const vf::Terrain terrain = load(a); // the one terrain build of this command
   const vf::Scene& scene = terrain.scene();
   vf::CheckOptions opt = checkOptions(a, terrain);
@@ -130,50 +190,102 @@ int runSweep(const SweepArgs& a) {
   // was done are still written. A second Ctrl-C kills the process.
   InterruptGuard interrupts;
   const std::atomic<bool>* cancel = InterruptGuard::flag();
-  std::vector<vf::Camera> cams;
+  std::vector<vf::Camera> cams; // every camera of the run (global indices), also when sharded
   std::string how;
-  size_t requested = 0;
-  if (a.orbit > 0) cams = vf::orbitCameras(terrain, a.orbit, 0, 0, cancel), how = "orbit of " + std::to_string(a.orbit), requested = size_t(a.orbit);
-  else if (a.flyover > 0) cams = vf::flyoverCameras(terrain, a.flyover, 0, cancel), how = "flyover of " + std::to_string(a.flyover), requested = size_t(a.flyover);
+  size_t requestedAll = 0;
+  if (a.orbit > 0) cams = vf::orbitCameras(terrain, a.orbit, 0, 0, cancel), how = "orbit of " + std::to_string(a.orbit), requestedAll = size_t(a.orbit);
+  else if (a.flyover > 0) cams = vf::flyoverCameras(terrain, a.flyover, 0, cancel), how = "flyover of " + std::to_string(a.flyover), requestedAll = size_t(a.flyover);
   else if (a.random > 0)
-    cams = vf::randomCameras(terrain, a.random, seed, cancel), how = std::to_string(a.random) + " random, seed " + std::to_string(seed), requested = size_t(a.random);
+    cams = vf::randomCameras(terrain, a.random, seed, cancel), how = std::to_string(a.random) + " random, seed " + std::to_string(seed), requestedAll = size_t(a.random);
   else if (!scene.cameraPath.empty()) cams = vf::pathCameras(terrain), how = "the scene's camera path";
   else cams = vf::flyoverCameras(terrain, kDefaultFlyover, 0, cancel), how = "flyover of " + std::to_string(kDefaultFlyover) + ", the scene has no camera path";
-  if (requested == 0) requested = cams.size();
+  if (requestedAll == 0) requestedAll = cams.size();
+  // This run's share: global index g = shardK + local * shardN.
+  auto shareOf = [&](size_t total) { return total > shardK ? (total - shardK + shardN - 1) / shardN : 0; };
+  const size_t requested = shareOf(requestedAll);
+  std::vector<vf::Camera> mine;
+  mine.reserve(shareOf(cams.size()));
+  for (size_t g = shardK; g < cams.size(); g += shardN) mine.push_back(cams[g]);
+  auto global = [&](size_t local) { return shardK + local * shardN; };
   const bool jsonToStdout = a.json == "-";
   const bool talk = !a.quiet && !jsonToStdout;
   const std::string label = a.label.empty() ? (scene.name.empty() ? a.scene : scene.name) : a.label;
+
+  // The JSON report streams: header now, each camera as it finishes (in camera order, through a small reorder
+  // buffer), the summary at the end. The SVG keeps only what it draws.
+  std::string jsonError; // an I/O error while streaming (raised again when the report is finished)
+  // Into the temporary file (or stdout) now; a FIFO or device is opened only when the report is complete (it would
+  // block on its reader), so for those the text waits in the buffer.
+  auto emitJson = [&](const std::string& text) {
+    if (jsonFile->streamsNow()) jsonFile->stream(text);
+    else jsonFile->buffer() += text;
+  };
+  if (jsonFile) {
+    json header = sweepHeaderJson(a, scene, how);
+    if (sharded) header["shard"] = {{"index", shardK + 1}, {"count", shardN}};
+    emitJson(sweepJsonBegin(header));
+  }
+  std::map<size_t, json> pending; // local index -> camera text, waiting for the cameras before it
+  size_t nextLocal = 0;
+  bool anyCamera = false;
+  std::vector<SvgCamera> dots;
+  std::vector<SvgHole> holes;
+  size_t crackCameras = 0, tjCameras = 0, holeCameras = 0;
+  size_t firstInvalid = SIZE_MAX;
+  std::string firstInvalidError;
 
   // Progress on stderr: a bar on a terminal, a plain line every few seconds otherwise, nothing with --quiet.
   Progress progress("cameras");
   vf::SweepOptions so;
   so.threads = a.threads;
   so.cancel = cancel;
+  so.keepCameras = false; // per camera: the tallies below and the streamed JSON entry, nothing else
   if (talk) so.progress = [&progress](size_t done, size_t total) { progress.report(done, total); };
+  // Writes the pending cameras that are next in order (all of them at the end: cameras skipped by Ctrl-C leave gaps).
+  // Never throws (called on worker threads): an I/O error is kept in jsonError.
+  auto flushPending = [&](bool all) {
+    try {
+      for (auto it = pending.begin(); it != pending.end() && (all || it->first == nextLocal); it = pending.erase(it)) {
+        nextLocal = it->first + 1;
+        if (jsonError.empty()) emitJson(sweepJsonCamera(it->second, !anyCamera));
+        anyCamera = true;
+      }
+    } catch (const std::exception& e) {
+      jsonError = e.what();
+    }
+  };
   CauseTally tally;
   FactorDiffTally gpuDiffs; // lod.evaluate = "gpu" / lod.shader: GPU vs C++ factors (cli/gpu_lod.h)
-  so.onReport = [&tally, &gpuDiffs](size_t camera, const vf::Report& r) {
-    tally.add(camera, r);
-    gpuDiffs.add(camera, r);
+  so.onReport = [&](size_t local, const vf::Report& r) {
+    tally.add(global(local), r);
+    gpuDiffs.add(global(local), r);
+  };
+  so.onCamera = [&](const vf::CameraResult& c) {
+    const size_t g = global(c.cameraIndex);
+    if (!c.error.empty() && g < firstInvalid) firstInvalid = g, firstInvalidError = c.error;
+    if (c.done) {
+      if (c.stats.holes > 0) ++holeCameras;
+      if (c.stats.cracks > 0) ++crackCameras;
+      else if (c.stats.tJunctions > 0) ++tjCameras;
+      if (!a.svg.empty()) {
+        dots.push_back(svgCamera(g, cams[g], c));
+        if (c.hasHole) holes.push_back({c.firstHole.patch.index, "camera " + std::to_string(g) + ": " + holeCause(c.firstHole).detail});
+      }
+    }
+    if (!jsonFile) return;
+    pending.emplace(c.cameraIndex, sweepCameraJson(g, cams[g], c));
+    flushPending(false);
   };
   if (talk)
-    std::fprintf(stderr, "fftess sweep %s: %s, %zu cameras (%s)\n", a.scene.c_str(), label.c_str(), requested,
-                 how.c_str());
+    std::fprintf(stderr, "fftess sweep %s: %s, %zu cameras (%s)%s\n", a.scene.c_str(), label.c_str(), requested,
+                 how.c_str(), sharded ? (", shard " + a.shard).c_str() : "");
   vf::SweepResult res;
-  if (!cancel->load()) res = vf::sweep(terrain, cams, opt, so); // else interrupted during camera generation
-  res.cancelled = res.cancelled || cams.size() < requested; // interrupted while the cameras were generated
+  if (!cancel->load()) res = vf::sweep(terrain, mine, opt, so); // else interrupted during camera generation
+  res.cancelled = res.cancelled || cams.size() < requestedAll; // interrupted while the cameras were generated
   progress.finish();
   const double elapsed = progress.elapsed();
-
   const std::vector<std::string> order = tally.order();
   const std::map<std::string, CauseInfo>& causes = tally.causes;
-  size_t crackCameras = 0, tjCameras = 0, holeCameras = 0;
-  for (const vf::CameraResult& c : res.cameras) {
-    if (!c.done) continue;
-    if (c.stats.holes > 0) ++holeCameras;
-    if (c.stats.cracks > 0) ++crackCameras;
-    else if (c.stats.tJunctions > 0) ++tjCameras;
-  }
   const vf::Verdict verdict = vf::verdictOf(res);
   const bool gaps = verdict == vf::Verdict::Cracks || verdict == vf::Verdict::Holes;
   const int status = res.cancelled && !gaps ? 130 : verdictStatus(a, verdict);
@@ -184,8 +296,9 @@ int runSweep(const SweepArgs& a) {
     text += "\n== " + label + ": lod.adjacency_clamp = " + vf::toString(scene.lod.screenSphere.clamp) +
             (scene.lod.screenSphere.clamp == vf::AdjacencyClamp::Pow2 ? " (the power-of-two workaround on)" : "") + " ==\n";
     for (const std::string& s : overridesOf(a)) text += "  --set " + s + "\n";
-    std::snprintf(buf, sizeof buf, "  cameras        %zu of %zu%s (%s, %.1f s, %s threads)\n", res.camerasDone,
-                  requested, res.cancelled ? " (interrupted)" : "", how.c_str(), elapsed,
+    std::snprintf(buf, sizeof buf, "  cameras        %zu of %zu%s (%s%s, %.1f s, %s threads)\n", res.camerasDone,
+                  requested, res.cancelled ? " (interrupted)" : "", how.c_str(),
+                  sharded ? (", shard " + a.shard).c_str() : "", elapsed,
                   a.threads > 0 ? std::to_string(a.threads).c_str() : "all");
     text += buf;
     text += "  adjacency      " + std::string(vf::toString(scene.lod.screenSphere.clamp)) + " clamp, " +
@@ -201,10 +314,8 @@ int runSweep(const SweepArgs& a) {
       text += buf;
     }
     if (res.camerasInvalid > 0) {
-      size_t first = 0;
-      while (first < res.cameras.size() && res.cameras[first].error.empty()) ++first;
-      std::snprintf(buf, sizeof buf, "  cameras NOT CHECKED (invalid): %zu, first #%zu: ", res.camerasInvalid, first);
-      text += buf + printable(res.cameras[first].error) + "\n";
+      std::snprintf(buf, sizeof buf, "  cameras NOT CHECKED (invalid): %zu, first #%zu: ", res.camerasInvalid, firstInvalid);
+      text += buf + printable(firstInvalidError) + "\n";
     }
     if (!order.empty()) {
       text += "  causes (findings of each cause, cameras where it appeared, the first camera where it appeared):\n";
@@ -218,47 +329,31 @@ int runSweep(const SweepArgs& a) {
         text += "      e.g. " + c.detail + "\n";
       }
     }
-    const std::string holesText = "HOLES seen from " + std::to_string(holeCameras) + " of " +
-                                  std::to_string(res.camerasDone) + " cameras (" + std::to_string(res.total.holes) +
-                                  " patches not drawn while in view)";
-    std::string words;
-    switch (verdict) {
-    case vf::Verdict::Cracks:
-      words = "CRACKS seen from " + std::to_string(crackCameras) + " of " + std::to_string(res.camerasDone) +
-              " cameras (worst gap " + fmtWorld(res.total.worstGapWorld) + " world units, " +
-              fmtWorld(res.total.worstGapPixels) + " px)" + (res.total.holes > 0 ? "; " + holesText : "");
-      break;
-    case vf::Verdict::Holes: words = holesText; break;
-    case vf::Verdict::NothingChecked:
-      words = "NOTHING CHECKED: no camera classified a shared edge (" + std::to_string(res.camerasDone) +
-              " cameras checked, " + std::to_string(res.camerasInvalid) + " invalid); not a clean verdict";
-      break;
-    case vf::Verdict::Unchecked:
-      words = "NOT CLEAN: " + std::to_string(res.camerasInvalid) + " of " + std::to_string(cams.size()) +
-              " cameras could not be checked (the other " + std::to_string(res.camerasDone) + " found no crack or hole)";
-      break;
-    case vf::Verdict::TJunctionsOnly: words = res.cancelled ? "no cracks so far (interrupted)" : "no cracks (T-junctions only)"; break;
-    case vf::Verdict::Watertight:
-      words = res.cancelled ? "no cracks so far (interrupted)"
-                            : "WATERTIGHT from all " + std::to_string(res.camerasDone) + " cameras";
-      break;
-    }
-    text += "verdict: " + words + "\n";
+    text += "verdict: " + verdictWords(verdict, res, crackCameras, holeCameras, mine.size()) + "\n";
   }
-  if (!a.json.empty()) {
+  if (jsonFile) {
+    flushPending(true);
+    if (!jsonError.empty()) throw std::runtime_error(jsonError);
     std::vector<CauseRow> rows;
     for (const std::string& k : order) {
       const CauseInfo& c = causes.at(k);
       rows.push_back({k, c.findings, c.cameras, c.first, c.detail});
     }
-    reports.setJson(sweepJson(a, terrain, how, cams, requested, res, rows).dump(2) + "\n");
+    vf::WorkStats terrainWork = terrain.stats();
+    terrainWork.terrainBuilds = vf::terrainBuildCount(); // every build in this process
+    jsonFile->buffer() += sweepJsonEnd(sweepSummaryJson(requested, res, rows, terrainWork), anyCamera);
   }
-  if (!a.svg.empty()) {
+  if (svgFile) {
     std::vector<size_t> firsts;
     for (const std::string& k : order) firsts.push_back(causes.at(k).first);
-    reports.setSvg(sweepSvg(terrain, cams, res, firsts, a.random > 0, "fftess sweep " + a.scene));
+    std::sort(dots.begin(), dots.end(), [](const SvgCamera& x, const SvgCamera& y) { return x.index < y.index; });
+    svgFile->buffer() = sweepSvg(terrain, cams, dots, holes, firsts, a.random > 0, "fftess sweep " + a.scene);
   }
-  reports.commit(); // all or nothing
+  AtomicFile* files[2];
+  size_t nFiles = 0;
+  if (jsonFile) files[nFiles++] = jsonFile.get();
+  if (svgFile) files[nFiles++] = svgFile.get();
+  commitAll(files, nFiles); // all or nothing
   writeStdout(text);
   flushStdout();
   return status;

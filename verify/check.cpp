@@ -17,13 +17,51 @@ bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y
 
 } // namespace
 
+EdgeCache::EdgeCache(Partitioning p, const Stage& s, const Options& o)
+    : partitioning_(p), stage_(s), options_(o), keys_(kSlots, 0), gen_(kSlots, 0), slot_(kSlots, -1) {}
+
+void EdgeCache::newCamera() {
+  used_ = 0;
+  if (++generation_ == 0) { // wrapped: forget every stamp
+    std::fill(gen_.begin(), gen_.end(), 0u);
+    generation_ = 1;
+  }
+}
+
+void EdgeCache::grow() {
+  const size_t n = keys_.size() * 2, mask = n - 1;
+  std::vector<uint32_t> keys(n, 0), gen(n, 0);
+  std::vector<int32_t> slot(n, -1);
+  for (size_t i = 0; i < keys_.size(); ++i) {
+    if (gen_[i] != generation_) continue;
+    size_t h = (static_cast<size_t>(keys_[i]) * 0x9E3779B1u) & mask;
+    while (gen[h] == generation_) h = (h + 1) & mask;
+    keys[h] = keys_[i];
+    gen[h] = generation_;
+    slot[h] = slot_[i];
+  }
+  keys_.swap(keys);
+  gen_.swap(gen);
+  slot_.swap(slot);
+}
+
 const EdgePoints& EdgeCache::get(float factor, WorkStats& work) {
   uint32_t bits;
   std::memcpy(&bits, &factor, sizeof bits);
-  auto it = map_.find(bits);
-  if (it != map_.end()) return it->second;
+  // Linear probing in a table kept at most half full: it grows (entries keep their addresses) within a camera.
+  if (used_ * 2 >= keys_.size()) grow();
+  const size_t mask = keys_.size() - 1;
+  size_t h = (static_cast<size_t>(bits) * 0x9E3779B1u) & mask;
+  for (; gen_[h] == generation_; h = (h + 1) & mask)
+    if (keys_[h] == bits) return entries_[static_cast<size_t>(slot_[h])];
   ++work.edgeQueries;
-  return map_.emplace(bits, edgePoints(factor, partitioning_, stage_, options_)).first->second;
+  keys_[h] = bits;
+  gen_[h] = generation_;
+  slot_[h] = static_cast<int32_t>(used_);
+  if (used_ == entries_.size()) entries_.emplace_back();
+  EdgePoints& e = entries_[used_++];
+  e = edgePoints(factor, partitioning_, stage_, options_);
+  return e;
 }
 
 static bool allFinite(const glm::vec3* p, int n) {
@@ -84,7 +122,7 @@ float midpointW(const lod::Camera& cam, const TerrainPatch& p, int e) {
 
 Report checkTerrain(const TerrainData& t, const Camera& camera, const CheckOptions& options, EdgeCache& cache) {
   Report rep;
-  cache.trim(); // no EdgePoints reference outlives a camera
+  cache.newCamera(); // no EdgePoints reference outlives a camera
   if (!validateCamera(camera, rep.error)) return rep;
   const size_t n = t.patches.size();
   rep.stats.patches = static_cast<int64_t>(n);
@@ -92,7 +130,8 @@ Report checkTerrain(const TerrainData& t, const Camera& camera, const CheckOptio
   const bool faultPatch = fault.kind != Fault::Kind::None && fault.patch >= 0 && static_cast<size_t>(fault.patch) < n &&
                           fault.edge >= 0 && fault.edge < 4;
 
-  std::vector<lod::PatchLod> factors, cpuFactors;
+  std::vector<lod::PatchLod>& factors = cache.factors; // per-thread scratch, reused camera to camera
+  std::vector<lod::PatchLod> cpuFactors;                // lod.evaluate = "gpu": the C++ build's, for comparison
   if (!computeFactorsFor(t, camera, options.factors.get(), factors, &cpuFactors, rep.work, rep.error)) return rep;
   const lod::Camera lodCamera = toLodCamera(camera);
   // The GPU path with a C++ reference: every factor whose bits differ (before any fault injection).
@@ -135,17 +174,21 @@ Report checkTerrain(const TerrainData& t, const Camera& camera, const CheckOptio
 
   // Which patches are drawn. lod/ culls some on purpose; the tessellator discards every patch with an outer factor
   // NaN, <= 0 or -Inf (D3D11.3 11.7.6). A patch not drawn is a hole when it would be on screen (verify.h, Hole).
-  std::vector<std::array<const EdgePoints*, 4>> ep(n);
-  std::vector<char> culled(n, 0);
+  std::vector<std::array<const EdgePoints*, 4>>& ep = cache.ep;
+  ep.assign(n, {nullptr, nullptr, nullptr, nullptr});
+  std::vector<char>& culled = cache.culled;
+  culled.assign(n, 0);
   const FrustumTest frustum(lodCamera);
   for (size_t i = 0; i < n; ++i) {
+    const bool lodCulled = factors[i].why.culled;
+    // A patch lod/ culled is not drawn whatever its factors: no edge query, no domain point (only the hole check's
+    // grid below, when its box touches the frustum).
     int discardEdge = -1;
-    for (int e = 0; e < 4; ++e) {
+    for (int e = 0; e < 4 && !lodCulled; ++e) {
       ep[i][e] = &cache.get(factors[i].factors[e], rep.work);
       if (ep[i][e]->culled && discardEdge < 0) discardEdge = e;
     }
     const bool dropped = faultPatch && fault.kind == Fault::Kind::DropPatch && static_cast<size_t>(fault.patch) == i;
-    const bool lodCulled = factors[i].why.culled;
     if (!lodCulled && discardEdge < 0 && !dropped) continue;
     culled[i] = 1;
     ++rep.stats.culledPatches;
@@ -192,8 +235,20 @@ Report checkTerrain(const TerrainData& t, const Camera& camera, const CheckOptio
     else rep.truncated = true;
   }
 
+  // Shared edge points are evaluated once: where the height is a function of the flat x/z alone (domain.height_uv =
+  // "world", no per-camera domain state: no geomorph, no mip level) a point of side b whose flat x and z have the
+  // same bits as side a's point at the same place takes a's height instead of sampling again (the same inputs give
+  // the same float result). Counted in WorkStats::sharedEdgePoints, not in domainEvaluations / heightSamples.
+  // Never with a fault (its perturbations of side a must not leak into side b).
+  const bool shareHeights = t.scene.domain.heightUv == HeightUv::World && domainCam.patches.empty() && !faultPatch &&
+                            t.scene.displacement.kind != DisplacementKind::None;
+  auto sameXZBits = [](const glm::vec3& p, const glm::vec3& q) {
+    return bitsOf(p.x) == bitsOf(q.x) && bitsOf(p.z) == bitsOf(q.z);
+  };
   // World positions of the points of edge e of patch i, with the fault's edge perturbations (MirrorEdge, PointUlp).
-  auto edgeWorld = [&](size_t i, int e, const EdgePoints& E, std::vector<glm::vec3>& out, std::vector<DomainPoint>* dom) {
+  // donor: side a's points at the same parameters (donor[j] is where out[j] should be), or nullptr.
+  auto edgeWorld = [&](size_t i, int e, const EdgePoints& E, std::vector<glm::vec3>& out, std::vector<DomainPoint>* dom,
+                       const glm::vec3* donor = nullptr, int donorCount = 0) {
     const bool here = faultPatch && static_cast<size_t>(fault.patch) == i && fault.edge == e;
     const bool mirror = here && fault.kind == Fault::Kind::MirrorEdge;
     out.resize(static_cast<size_t>(E.count));
@@ -202,6 +257,15 @@ Report checkTerrain(const TerrainData& t, const Camera& camera, const CheckOptio
       const float param = mirror ? 1.0f - E.param[E.count - 1 - j] : E.param[j];
       const DomainPoint d = edgeDomain(e, param);
       if (dom) (*dom)[static_cast<size_t>(j)] = d;
+      if (donor && j < donorCount) {
+        glm::vec3 w = flatDomain(t, t.patches[i], d.u, d.v);
+        if (sameXZBits(w, donor[j])) {
+          w.y = donor[j].y;
+          out[static_cast<size_t>(j)] = w;
+          ++rep.work.sharedEdgePoints;
+          continue;
+        }
+      }
       out[static_cast<size_t>(j)] = evalDomain(t, t.patches[i], d.u, d.v, domainCam.at(i), rep.work);
     }
     if (here && fault.kind == Fault::Kind::PointUlp && fault.point >= 0 && fault.point < E.count && fault.axis >= 0 &&
@@ -260,8 +324,8 @@ Report checkTerrain(const TerrainData& t, const Camera& camera, const CheckOptio
         while (first < pa.count && paramA(first) < lo) ++first;
         while (last > first && paramA(last - 1) > hi) --last;
         const int na = last - first;
-        edgeWorld(static_cast<size_t>(ib), eb, pbp, pb, &domB);
         const glm::vec3* a = fullA.data() + first;
+        edgeWorld(static_cast<size_t>(ib), eb, pbp, pb, &domB, shareHeights ? a : nullptr, na);
         bool match = na == pbp.count;
         for (int j = 0; match && j < na; ++j) match = sameBits(a[j], pb[j]);
 

@@ -135,6 +135,8 @@ float geomorphY(const TerrainData& t, const TerrainPatch& p, float u, float v, f
 
 } // namespace
 
+glm::vec3 flatDomain(const TerrainData& t, const TerrainPatch& p, float u, float v) { return flatPosition(t, p, u, v); }
+
 glm::vec3 evalDomain(const TerrainData& t, const TerrainPatch& p, float u, float v, const PatchDomain* camera,
                      WorkStats& work) {
   const Scene& s = t.scene;

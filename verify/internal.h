@@ -6,7 +6,7 @@
 #include <array>
 #include <cstdint>
 #include <string>
-#include <unordered_map>
+#include <deque>
 #include <vector>
 
 namespace fftess::verify::detail {
@@ -93,6 +93,8 @@ float heightAt(const TerrainData& t, float x, float z, WorkStats& work);
 // camera: this camera's state of patch p (DomainCamera::at), nullptr for the camera-independent position (no
 // geomorph, mip level 0). Geomorph adds the two heights an inserted vertex morphs between to work.heightSamples.
 struct PatchDomain;
+// The flat x/z of (u, v) as evalDomain computes them (y = 0), without the height; counts no work.
+glm::vec3 flatDomain(const TerrainData& t, const TerrainPatch& p, float u, float v);
 glm::vec3 evalDomain(const TerrainData& t, const TerrainPatch& p, float u, float v, const PatchDomain* camera,
                      WorkStats& work);
 
@@ -139,24 +141,36 @@ DomainCamera domainCamera(const TerrainData& t, const std::vector<lod::PatchLod>
 // A world length at a point in pixels, with lod's projection (see Finding::gapPixels).
 double pixelsAt(const lod::Camera& camera, const glm::vec3& at, double world);
 
-// Edge points cache (per thread): edgePoints() keyed by the factor's bits.
+// Per-thread state of the edge check, reused from camera to camera: the edge points cache (edgePoints() keyed by
+// the factor's bits; an open-addressing table, no allocation per lookup once warm) and the per-camera scratch
+// vectors (one entry per patch), so a sweep allocates nothing per camera once its first cameras are done.
+// The cache lives for one camera (newCamera() forgets it in O(1)): a camera's edgeQueries are its distinct factors,
+// the same whatever thread or shard checks it, and memory is bounded by the largest camera, not the camera count.
 class EdgeCache {
 public:
-  EdgeCache(Partitioning p, const Stage& s, const Options& o) : partitioning_(p), stage_(s), options_(o) {}
-  // Adds a miss to work.edgeQueries. The reference stays valid until the next trim().
+  EdgeCache(Partitioning p, const Stage& s, const Options& o);
+  // Adds a miss to work.edgeQueries. The reference stays valid until the next newCamera().
   const EdgePoints& get(float factor, WorkStats& work);
-  // Called between cameras: forgets every entry once there are more than kMaxEntries, so a sweep's memory does not
-  // grow with its camera count (fractional factors seldom repeat across cameras).
-  void trim() {
-    if (map_.size() > kMaxEntries) map_.clear();
-  }
-  static constexpr size_t kMaxEntries = 1 << 15;
+  void newCamera();
+  size_t size() const { return used_; }
+
+  // Scratch of checkTerrain (contents meaningless between calls).
+  std::vector<lod::PatchLod> factors;
+  std::vector<std::array<const EdgePoints*, 4>> ep;
+  std::vector<char> culled;
 
 private:
+  void grow();
+  static constexpr size_t kSlots = 1 << 15; // initial table size (a power of two); grows within a large camera
   Partitioning partitioning_;
   Stage stage_;
   Options options_;
-  std::unordered_map<uint32_t, EdgePoints> map_;
+  uint32_t generation_ = 1;          // a slot is in use when gen_[slot] == generation_
+  std::vector<uint32_t> keys_;       // factor bits (size a power of two)
+  std::vector<uint32_t> gen_;
+  std::vector<int32_t> slot_;        // index into entries_
+  std::deque<EdgePoints> entries_;   // stable addresses; the first used_ are this camera's
+  size_t used_ = 0;
 };
 
 // Domain coordinates of parameter t on edge e of a quad.

@@ -371,6 +371,9 @@ WorkStats& WorkStats::operator+=(const WorkStats& o) {
   lodEvaluations += o.lodEvaluations;
   edgeQueries += o.edgeQueries;
   cgalCalls += o.cgalCalls;
+  fullTessellations += o.fullTessellations;
+  sharedEdgePoints += o.sharedEdgePoints;
+  visibilityEvaluations += o.visibilityEvaluations;
   return *this;
 }
 

@@ -68,6 +68,7 @@ MeshReport checkSceneMesh(const Terrain& terrain, const Camera& camera, const Ch
     p.stage = scene.stage;
     std::memcpy(p.factors, factors[i].factors, sizeof p.factors);
     const int count = tess.tessellate(p, options.tessellator);
+    ++rep.work.fullTessellations;
     if (count == 0) continue;
     drawn[i] = 1;
     ++rep.patchesDrawn;

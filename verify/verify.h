@@ -296,6 +296,12 @@ struct WorkStats {
   int64_t lodEvaluations = 0;    // lod/ calls (one per patch and camera; none for lod.scheme = "constant")
   int64_t edgeQueries = 0;       // fftess::edgePoints calls (the per-thread cache's misses)
   int64_t cgalCalls = 0;         // exact classifications of an edge pair, plus one per whole-mesh CGAL pipeline
+  int64_t fullTessellations = 0; // whole patches tessellated (fftess::Tessellator; the whole-mesh check only)
+  int64_t sharedEdgePoints = 0;  // edge points of a shared edge's second side that took the first side's height
+                                 // (same flat x/z bits, height a function of x/z alone): neither a domain
+                                 // evaluation nor a height sample
+  int64_t visibilityEvaluations = 0; // domain evaluations of the hole check's grid (part of domainEvaluations):
+                                 // culled or discarded patches whose box touches the view frustum (verify.h, Hole)
   WorkStats& operator+=(const WorkStats& o);
 };
 
@@ -664,6 +670,18 @@ std::vector<Camera> flyoverCameras(const Terrain& terrain, int count, float heig
 std::vector<Camera> randomCameras(const Terrain& terrain, int count, uint64_t seed,
                                   const std::atomic<bool>* cancel = nullptr);
 
+
+struct CameraResult {
+  size_t cameraIndex = 0;
+  bool done = false;             // false: skipped because of cancel, or invalid (error set)
+  std::string error;             // the camera could not be checked (Report::error); done is false
+  Stats stats;
+  bool hasFinding = false;
+  Finding worst;                 // the finding with the largest gap (first crack or T-junction if no gap)
+  bool hasHole = false;
+  Hole firstHole;                // the first hole in layout order
+};
+
 struct SweepOptions {
   int threads = 0;               // 0: std::thread::hardware_concurrency()
   // Called after each camera from a worker thread (serialised by the driver): cameras done, cameras total.
@@ -678,21 +696,16 @@ struct SweepOptions {
   // Cameras skipped because of cancel are not reported. The report is only valid during the call. Must not throw
   // (an exception on a worker thread ends the process).
   std::function<void(size_t cameraIndex, const Report& report)> onReport;
-};
-
-struct CameraResult {
-  size_t cameraIndex = 0;
-  bool done = false;             // false: skipped because of cancel, or invalid (error set)
-  std::string error;             // the camera could not be checked (Report::error); done is false
-  Stats stats;
-  bool hasFinding = false;
-  Finding worst;                 // the finding with the largest gap (first crack or T-junction if no gap)
-  bool hasHole = false;
-  Hole firstHole;                // the first hole in layout order
+  // Called right after onReport for the same camera, under the same lock, with the camera's summary (what
+  // SweepResult::cameras keeps). Same rules as onReport.
+  std::function<void(const CameraResult& camera)> onCamera;
+  // Keep one CameraResult per camera in SweepResult::cameras (default). false: SweepResult::cameras stays empty and
+  // the sweep's memory does not grow with the camera count (the aggregates are kept; onCamera sees each camera).
+  bool keepCameras = true;
 };
 
 struct SweepResult {
-  std::vector<CameraResult> cameras; // one per input camera, in input order
+  std::vector<CameraResult> cameras; // one per input camera, in input order (empty unless SweepOptions::keepCameras)
   std::vector<Report> reports;       // keepReports: one per camera (empty reports for skipped cameras)
   Stats total;                       // summed over cameras done; worst gaps are maxima
   WorkStats work;                    // summed over cameras done (the terrain's own work is terrain.stats())
@@ -713,6 +726,10 @@ enum class Verdict : uint8_t {
 };
 Verdict verdictOf(const Stats& s);
 Verdict verdictOf(const SweepResult& r);
+
+// Adds one camera's (or one shard's) stats to a total: every count summed, the worst gaps the maxima. What sweep
+// does per camera; merging shards does it per shard.
+void accumulate(Stats& total, const Stats& s);
 const char* toString(Verdict v); // "watertight", "t_junctions", "cracks", "holes", "nothing_checked", "unchecked"
 
 // Checks every camera against the one prepared terrain (shared read-only by the threads).

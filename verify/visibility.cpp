@@ -59,6 +59,7 @@ Visibility patchVisibility(const TerrainData& t, const TerrainPatch& p, const Pa
       const float u = static_cast<float>(i) / static_cast<float>(n - 1);
       const float v = static_cast<float>(j) / static_cast<float>(n - 1);
       const glm::vec3 w = evalDomain(t, p, u, v, domain, work);
+      ++work.visibilityEvaluations;
       if (frustum.inside(w)) {
         if (point) *point = w;
         return Visibility::Visible;

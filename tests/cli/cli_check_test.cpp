@@ -111,7 +111,7 @@ TEST_CASE("check: the bundled scene is watertight with the pow2 workaround, crac
   CHECK(r.status == 0);
   CHECK(r.out.find("verdict: watertight") != std::string::npos);
   json j = json::parse(clitest::readFile(js));
-  CHECK(j.at("version") == 4);
+  CHECK(j.at("version") == 5);
   CHECK(j.at("kind") == "check");
   checkStatsShape(j.at("stats"));
   CHECK(j.at("stats").at("cracks") == 0);
@@ -272,7 +272,7 @@ TEST_CASE("sweep: workaround on is clean, off cracks; summary names causes; JSON
   CHECK(r.out.find("causes") != std::string::npos);
   CHECK(r.out.find("not a power of two") != std::string::npos);
   const json j = json::parse(clitest::readFile(js));
-  CHECK(j.at("version") == 4);
+  CHECK(j.at("version") == 5);
   CHECK(j.at("kind") == "sweep");
   CHECK(j.at("cameras_total") == 16);
   CHECK(j.at("cameras_done") == 16);

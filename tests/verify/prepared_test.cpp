@@ -163,3 +163,44 @@ TEST_CASE("findings carry the LOD's own record", "[verify][prepared][causes]") {
     CHECK(lodWords(r.findings[0].a).empty());
   }
 }
+
+TEST_CASE("culled patches run no tessellation and no domain emulation, shared edge points are evaluated once",
+          "[verify][prepared]") {
+  const Scene s = loadExample("terrain.toml");
+  const Terrain t = prepared(s);
+  // Looking up into the sky: lod/ culls every patch (its frustum test runs first in the hull shader), and no
+  // patch's box touches the frustum, so nothing is tessellated, evaluated or sampled.
+  Camera sky = s.camera;
+  sky.eye = {0, 50, 0};
+  sky.target = {0, 100, 1};
+  const Report up = checkScene(t, sky);
+  REQUIRE(up.error.empty());
+  CHECK(up.stats.culledPatches == up.stats.patches);
+  CHECK(up.work.lodEvaluations == up.stats.patches);
+  CHECK(up.work.edgeQueries == 0);
+  CHECK(up.work.domainEvaluations == up.work.visibilityEvaluations);
+  CHECK(up.work.heightSamples == up.work.domainEvaluations);
+  CHECK(up.work.fullTessellations == 0);
+
+  // The scene's camera: part of the terrain culled. Every domain evaluation is an edge point of a drawn patch or a
+  // point of the hole check's grid: at most two per edge point of the pairs checked, and with the shared points taken
+  // from the first side, fewer evaluations than points.
+  const Report r = checkScene(t, s.camera);
+  REQUIRE(r.stats.culledPatches > 0);
+  REQUIRE(r.stats.edgesChecked > 0);
+  CHECK(r.work.sharedEdgePoints > 0);
+  CHECK(r.work.heightSamples == r.work.domainEvaluations);
+  // Without sharing (a fault that changes nothing: a factor's ulp of a culled patch disables it) the same verdicts.
+  CheckOptions o;
+  o.fault.kind = Fault::Kind::PointUlp;
+  o.fault.patch = 0;
+  o.fault.point = 1000; // out of range: no perturbation, but sharing is off while a fault is set
+  const Report plain = checkScene(t, s.camera, o);
+  CHECK(plain.work.sharedEdgePoints == 0);
+  CHECK(plain.stats.matches == r.stats.matches);
+  CHECK(plain.stats.cracks == r.stats.cracks);
+  CHECK(plain.stats.tJunctions == r.stats.tJunctions);
+  CHECK(plain.work.domainEvaluations - plain.work.visibilityEvaluations ==
+        r.work.domainEvaluations - r.work.visibilityEvaluations + r.work.sharedEdgePoints);
+  CHECK(plain.work.edgeQueries == r.work.edgeQueries);
+}

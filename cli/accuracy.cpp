@@ -1,0 +1,388 @@
+// fftess bench (without --micro): what accuracy costs in time, as a table. Each row is one accuracy level or one
+// simulated GPU effect, run on the same cameras of one scene: time per camera and per checked edge, cost relative
+// to the cheapest row, the work done (WorkStats per camera), and what the level changes: findings gained or lost
+// against its group's reference row on the same cameras. docs/accuracy.md holds the table for the default scene.
+#include "accuracy.h"
+#include "common.h"
+#include "findings.h"
+
+#include "lod/lod_double.h"
+#include "verify/internal.h" // the LOD's inputs per patch, for the float-vs-double row (bench only)
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <set>
+#include <tuple>
+
+namespace fftess::cli {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// A finding's identity across rows: camera, the patch edge of each side, what it is. Holes: camera, patch, kind.
+using Key = std::tuple<size_t, int, int, int, int, int>;
+
+struct RowSpec {
+  std::string group, name, what; // what: the setting, in scene keys / options
+  std::vector<std::string> overrides;
+  vf::Kernel kernel = vf::Kernel::Epick;
+  bool flush = false;
+  bool mesh = false;      // whole-mesh check instead of the edge check
+  int lodPrecision = 0;   // 1: lod/ in float (the hull shader), 2: the same shaders in double (screen_sphere only)
+  bool reference = false; // the group's reference row
+};
+
+std::vector<RowSpec> rowSpecs() {
+  std::vector<RowSpec> r;
+  auto add = [&](const char* g, const char* n, const char* w, std::vector<std::string> o, bool ref = false) {
+    RowSpec s;
+    s.group = g, s.name = n, s.what = w, s.overrides = std::move(o), s.reference = ref;
+    r.push_back(s);
+    return &r.back();
+  };
+  add("checker", "float", "--kernel float (Simple_cartesian<float>)", {})->kernel = vf::Kernel::FloatNaive;
+  add("checker", "epick", "--kernel epick (exact predicates)", {});
+  add("checker", "epeck", "--kernel epeck (exact predicates and constructions)", {}, true)->kernel = vf::Kernel::Epeck;
+  add("domain formula", "nvidia", "domain.formula=nvidia (HLSL lerp, the sample)", {"domain.formula=nvidia"}, true);
+  add("domain formula", "lerp_fma", "domain.formula=lerp_fma", {"domain.formula=lerp_fma"});
+  add("domain formula", "blend", "domain.formula=blend", {"domain.formula=blend"});
+  add("domain formula", "blend_fma", "domain.formula=blend_fma", {"domain.formula=blend_fma"});
+  add("heights", "8-bit subtexel", "displacement.subtexel_bits=8 (the GPU sampler)", {"displacement.subtexel_bits=8"}, true);
+  add("heights", "float bilinear", "displacement.subtexel_bits=0", {"displacement.subtexel_bits=0"});
+  add("heights", "r16_float", "displacement.format=r16_float (Luna)", {"displacement.format=r16_float"});
+  add("heights", "flat", "displacement.kind=none (no height sampled)", {"displacement.kind=none"});
+  add("mip", "bonaventura, no mip", "lod.scheme=bonaventura", {"lod.scheme=bonaventura"}, true);
+  add("mip", "bonaventura, per_patch", "lod.scheme=bonaventura displacement.mip=per_patch",
+      {"lod.scheme=bonaventura", "displacement.mip=per_patch"});
+  add("mip", "bonaventura, per_vertex", "lod.scheme=bonaventura displacement.mip=per_vertex",
+      {"lod.scheme=bonaventura", "displacement.mip=per_vertex"});
+  add("lod precision", "float", "lod/ as the hull shader computes it (screen_sphere: nvidiaTile)", {}, true)->lodPrecision = 1;
+  add("lod precision", "double", "the same .glsl compiled in double (lod_double.h), factors rounded to float", {})->lodPrecision = 2;
+  add("tessellator", "denormals kept", "Options::flushDenormals=false (hardware)", {}, true);
+  add("tessellator", "denormals flushed", "--flush-denormals (llvmpipe)", {})->flush = true;
+  add("scope", "edges", "edge check: fftess::edgePoints per outer edge", {}, true);
+  add("scope", "whole mesh", "--mesh: full tessellation, CGAL polygon soup, border edges", {})->mesh = true;
+  return r;
+}
+
+struct Row {
+  RowSpec spec;
+  std::string error;      // the variant does not apply to this scene (its loader's message)
+  size_t cameras = 0;
+  double seconds = 0;
+  int64_t edges = 0;      // edges checked (edge rows) / patch edges flagged (mesh)
+  vf::Stats stats;
+  vf::WorkStats work;
+  std::set<Key> findings;
+  int64_t gained = 0, lost = 0;
+  bool compared = false;
+  std::string verdict;
+  int64_t lodFactorsDiffer = 0, lodJumpFactorsDiffer = 0, lodCullsDiffer = 0;
+};
+
+void runRow(Row& row, const BenchReportArgs& a, const std::vector<vf::Camera>& cams, size_t meshCameras) {
+  std::vector<std::string> o = a.overrides;
+  o.insert(o.end(), row.spec.overrides.begin(), row.spec.overrides.end());
+  const vf::SceneResult sr = vf::loadScene(a.scene, o);
+  if (!sr) {
+    row.error = sr.error;
+    return;
+  }
+  const vf::TerrainResult tr = vf::prepareTerrain(sr.scene);
+  if (!tr) {
+    row.error = tr.error;
+    return;
+  }
+  vf::CheckOptions opt;
+  opt.kernel = row.spec.kernel;
+  opt.tessellator.flushDenormals = row.spec.flush;
+  opt.maxFindings = static_cast<size_t>(-1);
+  const size_t n = row.spec.mesh ? std::min(meshCameras, cams.size()) : cams.size();
+  vf::SweepResult sum;
+  if (row.spec.lodPrecision) {
+    // Only the LOD is run and timed. Both rows evaluate every patch; the double row also counts the outer factors of
+    // patches float does not cull whose bits differ from the float evaluation, and the patches culled differently.
+    const vf::detail::TerrainData& td = tr.terrain.data();
+    const vf::Lod& L = td.scene.lod;
+    if (L.scheme != vf::LodScheme::ScreenSphere) {
+      row.error = "only lod.scheme = \"screen_sphere\" has a double build (lod/lod_double.h)";
+      return;
+    }
+    for (size_t c = 0; c < n; ++c) {
+      const lod::Camera cam = vf::detail::toLodCamera(cams[c]);
+      std::vector<lod::PatchLod> f(td.patches.size());
+      const Clock::time_point t0 = Clock::now();
+      for (size_t i = 0; i < td.patches.size(); ++i) {
+        const vf::detail::TerrainPatch& p = td.patches[i];
+        f[i] = row.spec.lodPrecision == 1 ? vf::detail::patchLod(td, p, p.tile, cam)
+               : td.adjacency             ? lod::nvidiaTileDouble(p.lod, p.tile, cam, L.screenSphere)
+                                          : lod::screenSphereDouble(p.lod, cam, L.screenSphere.sphere);
+      }
+      row.seconds += std::chrono::duration<double>(Clock::now() - t0).count();
+      row.work.lodEvaluations += static_cast<int64_t>(td.patches.size());
+      if (row.spec.lodPrecision == 1) continue;
+      for (size_t i = 0; i < td.patches.size(); ++i) {
+        const vf::detail::TerrainPatch& p = td.patches[i];
+        const lod::PatchLod g = vf::detail::patchLod(td, p, p.tile, cam);
+        if (g.why.culled != f[i].why.culled) ++row.lodCullsDiffer;
+        if (g.why.culled) continue;
+        for (int e = 0; e < 4; ++e) {
+          if (floatBits(g.factors[e]) == floatBits(f[i].factors[e])) continue;
+          ++row.lodFactorsDiffer;
+          if (p.tile.size[e] != 1.0f) ++row.lodJumpFactorsDiffer;
+        }
+      }
+    }
+    row.cameras = n;
+    row.verdict = row.spec.lodPrecision == 1 ? "-" :
+        std::to_string(row.lodFactorsDiffer) + " factors differ (" + std::to_string(row.lodJumpFactorsDiffer) +
+        " at size jumps), " + std::to_string(row.lodCullsDiffer) + " culls differ; not re-checked";
+    return;
+  }
+  for (size_t c = 0; c < n; ++c) {
+    const Clock::time_point t0 = Clock::now();
+    if (row.spec.mesh) {
+      const vf::MeshReport m = vf::checkSceneMesh(tr.terrain, cams[c], opt);
+      row.seconds += std::chrono::duration<double>(Clock::now() - t0).count();
+      row.work += m.work;
+      row.edges += static_cast<int64_t>(m.flagged.size());
+      for (const vf::PatchEdgeRef& e : m.flagged) row.findings.insert({c, e.patch, e.edge, -1, -1, -1});
+      continue;
+    }
+    // The edge check is timed as the fastest of a.repeats runs of the camera (the machine's other load and the first
+    // run's page faults make single runs noisy); the findings are the first run's (every run gives the same).
+    const vf::Report r = vf::checkScene(tr.terrain, cams[c], opt);
+    double best = std::chrono::duration<double>(Clock::now() - t0).count();
+    for (int k = 1; k < a.repeats; ++k) {
+      const Clock::time_point t1 = Clock::now();
+      (void)vf::checkScene(tr.terrain, cams[c], opt);
+      best = std::min(best, std::chrono::duration<double>(Clock::now() - t1).count());
+    }
+    row.seconds += best;
+    if (!r.error.empty()) {
+      ++sum.camerasInvalid;
+      continue;
+    }
+    ++sum.camerasDone;
+    vf::accumulate(sum.total, r.stats);
+    row.work += r.work;
+    row.edges += r.stats.edgesChecked;
+    for (const vf::Finding& f : r.findings)
+      row.findings.insert({c, f.a.patch.index, f.a.edge, f.b.patch.index, f.b.edge, static_cast<int>(f.classification)});
+    for (const vf::Hole& h : r.holes) row.findings.insert({c, h.patch.index, -1, -1, -1, 10 + static_cast<int>(h.kind)});
+  }
+  row.cameras = n;
+  row.stats = sum.total;
+  row.verdict = row.spec.mesh ? (row.findings.empty() ? "no inner border" : "inner borders") : vf::toString(vf::verdictOf(sum));
+}
+
+// The mesh row's findings are patch edges: compare with the reference's findings as patch edges (both sides).
+std::set<Key> asPatchEdges(const std::set<Key>& f, size_t cameras) {
+  std::set<Key> out;
+  for (const Key& k : f) {
+    if (std::get<0>(k) >= cameras || std::get<5>(k) >= 10 || std::get<5>(k) == static_cast<int>(vf::Classification::Match))
+      continue;
+    out.insert({std::get<0>(k), std::get<1>(k), std::get<2>(k), -1, -1, -1});
+    out.insert({std::get<0>(k), std::get<3>(k), std::get<4>(k), -1, -1, -1});
+  }
+  return out;
+}
+
+std::string fmt(const char* f, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, f, v);
+  return buf;
+}
+
+} // namespace
+
+BenchTable runBenchTable(const BenchReportArgs& a) {
+  BenchTable t;
+  const vf::SceneResult base = vf::loadScene(a.scene, a.overrides);
+  if (!base) throw UsageError(base.error);
+  const vf::TerrainResult bt = vf::prepareTerrain(base.scene);
+  if (!bt) throw UsageError(bt.error);
+  t.scene = a.scene;
+  t.patches = bt.terrain.patchCount();
+  t.cameras = vf::randomCameras(bt.terrain, a.cameras, a.seed);
+  t.repeats = a.repeats;
+  t.meshCameras = std::min<size_t>(static_cast<size_t>(a.meshCameras), t.cameras.size());
+  std::vector<Row> rows;
+  for (const RowSpec& s : rowSpecs()) {
+    if (!a.only.empty() && s.group != a.only) continue;
+    Row r;
+    r.spec = s;
+    runRow(r, a, t.cameras, t.meshCameras);
+    rows.push_back(std::move(r));
+  }
+  // Gained / lost against the group's reference (same cameras: the mesh row against the reference's first cameras).
+  for (Row& r : rows) {
+    const Row* ref = nullptr;
+    for (const Row& q : rows)
+      if (q.spec.group == r.spec.group && q.spec.reference && q.error.empty()) ref = &q;
+    if (!ref || !r.error.empty()) continue;
+    std::set<Key> mine = r.findings, theirs = ref->findings;
+    if (r.spec.mesh) theirs = asPatchEdges(theirs, r.cameras);
+    for (const Key& k : mine) r.gained += !theirs.count(k);
+    for (const Key& k : theirs) r.lost += !mine.count(k);
+    r.compared = true;
+  }
+  auto perCam = [](const Row& r) { return r.seconds / static_cast<double>(r.cameras); };
+  double cheapest = 0;
+  double lodFloat = 0; // the LOD rows time the LOD alone: their cost is relative to the float LOD
+  for (const Row& r : rows) {
+    if (!r.error.empty() || r.cameras == 0) continue;
+    if (r.spec.lodPrecision == 1) lodFloat = perCam(r);
+    if (!r.spec.lodPrecision && (cheapest == 0 || perCam(r) < cheapest)) cheapest = perCam(r);
+  }
+  for (const Row& r : rows) {
+    BenchRow b;
+    b.group = r.spec.group, b.name = r.spec.name, b.what = r.spec.what, b.reference = r.spec.reference;
+    b.error = r.error;
+    b.cameras = r.cameras;
+    if (r.error.empty() && r.cameras > 0) {
+      b.msPerCamera = 1e3 * perCam(r);
+      b.usPerEdge = r.spec.mesh || r.stats.edgesChecked == 0 ? 0 : 1e6 * r.seconds / static_cast<double>(r.stats.edgesChecked);
+      const double unit = r.spec.lodPrecision ? lodFloat : cheapest;
+      b.relative = unit > 0 ? perCam(r) / unit : 0;
+    }
+    b.findings = static_cast<int64_t>(r.findings.size());
+    b.gained = r.gained, b.lost = r.lost, b.compared = r.compared;
+    b.verdict = r.verdict;
+    b.stats = r.stats;
+    b.work = r.work;
+    t.rows.push_back(b);
+  }
+  return t;
+}
+
+static std::string perCamera(int64_t v, size_t cameras) {
+  return cameras ? formatNumber(static_cast<double>(v) / static_cast<double>(cameras)) : "-";
+}
+
+std::string benchMarkdown(const BenchTable& t) {
+  std::string o;
+  o += "Scene `" + t.scene + "` (" + std::to_string(t.patches) + " patches), " + std::to_string(t.cameras.size()) +
+       " random cameras (the whole-mesh row: the first " + std::to_string(t.meshCameras) + "), one thread; each edge-check camera timed as the fastest of " + std::to_string(t.repeats) + " runs.\n\n";
+  o += "| group | row | setting | ms / camera | µs / edge | cost | findings | vs reference (+gained / -lost) | verdict | "
+       "lod evals | height samples | domain evals | shared points | edge queries | CGAL calls | full tessellations |\n";
+  o += "|---|---|---|---:|---:|---:|---:|---|---|---:|---:|---:|---:|---:|---:|---:|\n";
+  for (const BenchRow& r : t.rows) {
+    if (!r.error.empty()) {
+      o += "| " + r.group + " | " + r.name + " | " + r.what + " | - | - | - | - | not applicable: " + r.error +
+           " | | | | | | | | |\n";
+      continue;
+    }
+    const size_t c = r.cameras;
+    o += "| " + r.group + " | " + r.name + (r.reference ? " (reference)" : "") + " | " + r.what + " | " +
+         fmt("%.2f", r.msPerCamera) + " | " + (r.usPerEdge > 0 ? fmt("%.3f", r.usPerEdge) : std::string("-")) + " | " +
+         fmt("%.2fx", r.relative) + " | " + std::to_string(r.findings) + " | " +
+         (r.reference ? std::string("reference") : r.compared ? "+" + std::to_string(r.gained) + " / -" + std::to_string(r.lost) : "-") +
+         " | " + r.verdict + " | " + perCamera(r.work.lodEvaluations, c) + " | " + perCamera(r.work.heightSamples, c) +
+         " | " + perCamera(r.work.domainEvaluations, c) + " | " + perCamera(r.work.sharedEdgePoints, c) + " | " +
+         perCamera(r.work.edgeQueries, c) + " | " + perCamera(r.work.cgalCalls, c) + " | " +
+         perCamera(r.work.fullTessellations, c) + " |\n";
+  }
+  o += "\nWork columns are per camera. Findings: cracks, T-junctions and holes over all cameras (whole mesh: patch "
+       "edges holding an inner border edge). cost: time per camera over the cheapest row's; the lod precision rows "
+       "time the LOD alone (every patch), their cost is relative to the float LOD.\n";
+  return o;
+}
+
+std::string benchText(const BenchTable& t) {
+  std::string o = "fftess bench: " + t.scene + ", " + std::to_string(t.patches) + " patches, " +
+                  std::to_string(t.cameras.size()) + " random cameras (whole mesh: " + std::to_string(t.meshCameras) +
+                  "), one thread\n";
+  char buf[512];
+  std::snprintf(buf, sizeof buf, "  %-15s %-24s %11s %9s %7s %8s %14s  %s\n", "group", "row", "ms/camera", "us/edge",
+                "cost", "findings", "vs reference", "verdict");
+  o += buf;
+  for (const BenchRow& r : t.rows) {
+    if (!r.error.empty()) {
+      std::snprintf(buf, sizeof buf, "  %-15s %-24s not applicable: %s\n", r.group.c_str(), r.name.c_str(), r.error.c_str());
+      o += buf;
+      continue;
+    }
+    const std::string vs = r.reference ? "reference" : "+" + std::to_string(r.gained) + " -" + std::to_string(r.lost);
+    std::snprintf(buf, sizeof buf, "  %-15s %-24s %11.2f %9s %6.2fx %8lld %14s  %s\n", r.group.c_str(), r.name.c_str(),
+                  r.msPerCamera, r.usPerEdge > 0 ? fmt("%.3f", r.usPerEdge).c_str() : "-", r.relative,
+                  static_cast<long long>(r.findings), vs.c_str(), r.verdict.c_str());
+    o += buf;
+  }
+  return o;
+}
+
+json benchJson(const BenchTable& t) {
+  json j;
+  j["kind"] = "bench";
+  j["version"] = 1;
+  j["scene"] = t.scene;
+  j["patches"] = t.patches;
+  j["cameras"] = t.cameras.size();
+  j["mesh_cameras"] = t.meshCameras;
+  json rows = json::array();
+  for (const BenchRow& r : t.rows) {
+    json x;
+    x["group"] = r.group, x["row"] = r.name, x["setting"] = r.what, x["reference"] = r.reference;
+    if (!r.error.empty()) {
+      x["error"] = r.error;
+      rows.push_back(x);
+      continue;
+    }
+    x["cameras"] = r.cameras;
+    x["ms_per_camera"] = r.msPerCamera;
+    x["us_per_edge"] = r.usPerEdge;
+    x["relative_cost"] = r.relative;
+    x["findings"] = r.findings;
+    x["gained"] = r.gained;
+    x["lost"] = r.lost;
+    x["verdict"] = r.verdict;
+    x["stats"] = statsJson(r.stats);
+    x["work"] = workJson(r.work);
+    rows.push_back(x);
+  }
+  j["rows"] = rows;
+  return j;
+}
+
+std::string benchSvg(const BenchTable& t) {
+  const double rowH = 22, left = 330, width = 420, top = 40;
+  double maxRel = 1;
+  for (const BenchRow& r : t.rows) maxRel = std::max(maxRel, r.relative);
+  const double h = top + rowH * static_cast<double>(t.rows.size()) + 30;
+  std::string o;
+  char buf[512];
+  std::snprintf(buf, sizeof buf,
+                "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"900\" "
+                "height=\"%.0f\" viewBox=\"0 0 900 %.0f\">\n<title>fftess bench</title>\n<rect width=\"100%%\" "
+                "height=\"100%%\" fill=\"white\"/>\n<text x=\"10\" y=\"22\" font-family=\"sans-serif\" font-size=\"14\">"
+                "What accuracy costs: time per camera relative to the cheapest row (log scale), %s</text>\n",
+                h, h, xmlEscape(t.scene).c_str());
+  o += buf;
+  const double logMax = std::log2(std::max(2.0, maxRel));
+  for (size_t i = 0; i < t.rows.size(); ++i) {
+    const BenchRow& r = t.rows[i];
+    const double y = top + rowH * static_cast<double>(i);
+    std::snprintf(buf, sizeof buf, "<text x=\"10\" y=\"%.1f\" font-family=\"monospace\" font-size=\"12\">%s: %s</text>\n",
+                  y + 15, xmlEscape(r.group).c_str(), xmlEscape(r.name).c_str());
+    o += buf;
+    if (!r.error.empty()) continue;
+    const double w = 4 + width * std::log2(std::max(1.0, r.relative)) / logMax;
+    const char* colour = r.gained + r.lost > 0 ? "#d01010" : r.reference ? "#2a5599" : "#7a9ac0";
+    std::snprintf(buf, sizeof buf,
+                  "<rect x=\"%.1f\" y=\"%.1f\" width=\"%.1f\" height=\"%.1f\" fill=\"%s\"/>\n<text x=\"%.1f\" y=\"%.1f\" "
+                  "font-family=\"monospace\" font-size=\"12\">%.2fx, %.2f ms%s</text>\n",
+                  left, y + 4, w, rowH - 6, colour, left + w + 6, y + 15, r.relative, r.msPerCamera,
+                  r.reference ? " (reference)" : (r.gained + r.lost > 0 ? (" +" + std::to_string(r.gained) + " -" + std::to_string(r.lost)).c_str() : ""));
+    o += buf;
+  }
+  std::snprintf(buf, sizeof buf,
+                "<text x=\"10\" y=\"%.1f\" font-family=\"sans-serif\" font-size=\"11\">red: the row changes findings "
+                "against its group's reference (+gained -lost)</text>\n</svg>\n",
+                h - 8);
+  o += buf;
+  return o;
+}
+
+} // namespace fftess::cli

@@ -1,0 +1,47 @@
+// fftess bench's table: what accuracy costs in time (cli/accuracy.cpp; docs/accuracy.md).
+#pragma once
+
+#include "report_json.h"
+
+#include <string>
+#include <vector>
+
+namespace fftess::cli {
+
+struct BenchReportArgs {
+  std::string scene;                  // --scene (default docs/examples/terrain.toml of the source tree)
+  std::vector<std::string> overrides; // --set
+  int cameras = 16;                   // --cameras: random cameras (seed --seed)
+  uint64_t seed = 1;
+  int meshCameras = 1;                // --mesh-cameras: cameras of the whole-mesh row (seconds each)
+  std::string only;                   // --group: only this group's rows
+  int repeats = 3;                    // --repeats: each edge-check camera timed as the fastest of this many runs
+};
+
+struct BenchRow {
+  std::string group, name, what, error, verdict;
+  bool reference = false, compared = false;
+  size_t cameras = 0;
+  double msPerCamera = 0, usPerEdge = 0, relative = 0;
+  int64_t findings = 0, gained = 0, lost = 0;
+  vf::Stats stats;
+  vf::WorkStats work; // summed over the row's cameras
+};
+
+struct BenchTable {
+  std::string scene;
+  int patches = 0;
+  std::vector<vf::Camera> cameras;
+  size_t meshCameras = 0;
+  int repeats = 1;
+  std::vector<BenchRow> rows;
+};
+
+// Runs every row (single thread, each timed around checkScene / checkSceneMesh only). UsageError on a bad scene.
+BenchTable runBenchTable(const BenchReportArgs& a);
+std::string benchText(const BenchTable& t);
+std::string benchMarkdown(const BenchTable& t);
+json benchJson(const BenchTable& t);
+std::string benchSvg(const BenchTable& t);
+
+} // namespace fftess::cli

@@ -1,0 +1,211 @@
+// fftess merge A.json B.json ...: the JSON reports of one sweep's shards (fftess sweep --shard K/N) merged into the
+// report one unsharded run writes, byte for byte: cameras in global index order, stats summed (worst gaps the
+// maxima), causes merged (the first camera by lowest global index, its example with it), the verdict recomputed with
+// verify::verdictOf, the work summed with the terrain build counted once.
+#include "check.h"
+#include "common.h"
+#include "findings.h"
+#include "report_json.h"
+
+#include <algorithm>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace fftess::cli {
+
+CLI::App* addMerge(CLI::App& app, MergeArgs& a) {
+  CLI::App* sub = app.add_subcommand("merge", "Merge the JSON reports of a sweep's shards (sweep --shard K/N) into one");
+  sub->footer("Examples:\n"
+              "  fftess sweep docs/examples/terrain.toml --random 1000 --shard 1/2 --json s1.json\n"
+              "  fftess sweep docs/examples/terrain.toml --random 1000 --shard 2/2 --json s2.json\n"
+              "  fftess merge s1.json s2.json --json sweep.json\n"
+              "Every shard 1..N of one sweep must be given once. The merged report equals the unsharded run's.\n"
+              "Exit status: as sweep (0 watertight, 1 cracks, holes, nothing checked or unchecked cameras), 2 bad "
+              "usage or input (not a sweep report of this version, shards of different sweeps, a shard missing or "
+              "given twice), 3 internal error.");
+  sub->add_option("reports", a.inputs, "The shards' JSON reports")->required();
+  sub->add_option("--json", a.json, "Write the merged report here ('-': stdout, and no text)");
+  sub->add_flag("-q,--quiet", a.quiet, "No summary on stdout");
+  sub->add_flag("--fail-on-tjunctions", a.failOnTJunctions, "Exit 1 on T-junctions too");
+  return sub;
+}
+
+namespace {
+
+json readReport(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw UsageError("merge: cannot read " + quoteToken(path));
+  json j;
+  try {
+    j = json::parse(in);
+  } catch (const std::exception& e) {
+    throw UsageError("merge: " + quoteToken(path) + ": not JSON (" + e.what() + ")");
+  }
+  if (!j.is_object() || j.value("kind", "") != "sweep")
+    throw UsageError("merge: " + quoteToken(path) + ": not a sweep report (\"kind\": \"sweep\")");
+  if (j.value("version", 0) != kReportVersion)
+    throw UsageError("merge: " + quoteToken(path) + ": report version " + j.value("version", json(0)).dump() +
+                     ", this fftess merges version " + std::to_string(kReportVersion));
+  return j;
+}
+
+vf::Stats statsOf(const json& j) {
+  vf::Stats s;
+  s.patches = j.at("patches");
+  s.culledPatches = j.at("culled_patches");
+  s.edgesChecked = j.at("edges_checked");
+  s.skippedCulled = j.at("skipped_culled");
+  s.matches = j.at("matches");
+  s.tJunctions = j.at("t_junctions");
+  s.cracks = j.at("cracks");
+  s.holes = j.at("holes");
+  s.holesDiscarded = j.at("holes_discarded");
+  s.holesCulledVisible = j.at("holes_culled_while_visible");
+  s.culledUndecided = j.at("culled_undecided");
+  s.visibilityTests = j.at("visibility_tests");
+  s.worstGapWorld = j.at("worst_gap_world");
+  s.worstGapPixels = j.at("worst_gap_pixels");
+  return s;
+}
+
+} // namespace
+
+int runMerge(const MergeArgs& a) {
+  if (a.inputs.empty()) throw UsageError("merge: no reports");
+  std::unique_ptr<AtomicFile> out;
+  if (!a.json.empty()) out = std::make_unique<AtomicFile>(a.json); // the path is checked before the work
+  std::vector<json> shards;
+  for (const std::string& p : a.inputs) shards.push_back(readReport(p));
+
+  // One sweep: same header (scene, overrides, cameras), shards 1..N each once (or one unsharded report).
+  json header = shards[0];
+  for (const char* k : {"cameras", "shard", "cameras_total", "cameras_done", "cancelled", "cameras_not_done",
+                        "cameras_invalid", "cameras_nothing_checked", "stats", "verdict", "causes", "work",
+                        "terrain_work"})
+    header.erase(k);
+  size_t count = 0;
+  std::vector<char> seen;
+  for (size_t i = 0; i < shards.size(); ++i) {
+    json h = shards[i];
+    for (auto it = header.begin(); it != header.end(); ++it)
+      if (h.value(it.key(), json()) != it.value())
+        throw UsageError("merge: " + quoteToken(a.inputs[i]) + ": \"" + it.key() + "\" differs from " +
+                         quoteToken(a.inputs[0]) + "'s: not a shard of the same sweep");
+    const json shard = h.value("shard", json());
+    if (shard.is_null()) {
+      if (shards.size() != 1)
+        throw UsageError("merge: " + quoteToken(a.inputs[i]) + " is a whole sweep (no \"shard\"), not a shard");
+      count = 1, seen.assign(1, 1);
+      continue;
+    }
+    const size_t k = shard.at("index"), n = shard.at("count");
+    if (i == 0) count = n, seen.assign(n, 0);
+    if (n != count || k < 1 || k > n)
+      throw UsageError("merge: " + quoteToken(a.inputs[i]) + ": shard " + std::to_string(k) + "/" + std::to_string(n) +
+                       " does not belong with " + std::to_string(count) + " shards");
+    if (seen[k - 1]) throw UsageError("merge: shard " + std::to_string(k) + "/" + std::to_string(n) + " given twice");
+    seen[k - 1] = 1;
+  }
+  for (size_t k = 0; k < count; ++k)
+    if (!seen[k])
+      throw UsageError("merge: shard " + std::to_string(k + 1) + "/" + std::to_string(count) + " missing");
+
+  // Cameras in global index order (each shard's list is already in order).
+  std::vector<const json*> cams;
+  for (const json& s : shards)
+    for (const json& c : s.at("cameras")) cams.push_back(&c);
+  std::stable_sort(cams.begin(), cams.end(),
+                   [](const json* x, const json* y) { return x->at("index").get<size_t>() < y->at("index").get<size_t>(); });
+
+  // Summary.
+  vf::SweepResult res;
+  size_t total = 0;
+  for (const json& s : shards) {
+    total += s.at("cameras_total").get<size_t>();
+    res.camerasDone += s.at("cameras_done").get<size_t>();
+    res.camerasInvalid += s.at("cameras_invalid").get<size_t>();
+    res.camerasNothingChecked += s.at("cameras_nothing_checked").get<size_t>();
+    res.cancelled = res.cancelled || s.at("cancelled").get<bool>();
+    vf::accumulate(res.total, statsOf(s.at("stats")));
+  }
+  // Causes: per key the sums, the lowest first camera and its example; ordered by first camera, then by the order
+  // within the shard that holds it (the order of its first findings).
+  struct MergedCause {
+    CauseRow row;
+    size_t position = 0;
+  };
+  std::map<std::string, MergedCause> causes;
+  for (const json& s : shards) {
+    size_t position = 0;
+    for (const json& c : s.at("causes")) {
+      const std::string key = c.at("cause");
+      const size_t first = c.at("first_camera");
+      auto [it, added] = causes.try_emplace(key);
+      CauseRow& r = it->second.row;
+      r.cause = key;
+      r.findings += c.at("findings").get<int64_t>();
+      r.cameras += c.at("cameras").get<size_t>();
+      if (added || first < r.firstCamera) {
+        r.firstCamera = first;
+        r.example = c.at("example");
+        it->second.position = position;
+      }
+      ++position;
+    }
+  }
+  std::vector<MergedCause> ordered;
+  for (auto& kv : causes) ordered.push_back(kv.second);
+  std::stable_sort(ordered.begin(), ordered.end(), [](const MergedCause& x, const MergedCause& y) {
+    return x.row.firstCamera != y.row.firstCamera ? x.row.firstCamera < y.row.firstCamera : x.position < y.position;
+  });
+  std::vector<CauseRow> rows;
+  for (const MergedCause& c : ordered) rows.push_back(c.row);
+  // Work: each shard's camera work (work - terrain_work), plus one terrain build's work.
+  const json& terrain0 = shards[0].at("terrain_work");
+  json work = terrain0;
+  for (const json& s : shards)
+    for (auto it = work.begin(); it != work.end(); ++it)
+      if (it.key() != "terrain_builds")
+        it.value() = it.value().get<int64_t>() + s.at("work").at(it.key()).get<int64_t>() -
+                     s.at("terrain_work").at(it.key()).get<int64_t>();
+  vf::WorkStats none;
+  json summary = sweepSummaryJson(total, res, rows, none);
+  summary["work"] = work;
+  summary["terrain_work"] = terrain0;
+
+  if (out) {
+    out->stream(sweepJsonBegin(header));
+    for (size_t i = 0; i < cams.size(); ++i) out->stream(sweepJsonCamera(*cams[i], i == 0));
+    out->buffer() = sweepJsonEnd(summary, !cams.empty());
+    out->commit();
+  }
+  const vf::Verdict verdict = vf::verdictOf(res);
+  if (!a.quiet && a.json != "-") {
+    size_t crackCameras = 0, holeCameras = 0;
+    for (const json* c : cams) {
+      if (!c->at("done").get<bool>()) continue;
+      const json& st = c->at("stats");
+      crackCameras += st.at("cracks").get<int64_t>() > 0;
+      holeCameras += st.at("holes").get<int64_t>() > 0;
+    }
+    std::string text = "merged " + std::to_string(shards.size()) + " report(s) of " +
+                       header.at("scene").at("file").get<std::string>() + " (" +
+                       header.at("cameras_source").get<std::string>() + "): cameras " +
+                       std::to_string(res.camerasDone) + " of " + std::to_string(total) +
+                       (res.cancelled ? " (interrupted)" : "") + "\n";
+    text += statsText(res.total);
+    text += "verdict: " + verdictWords(verdict, res, crackCameras, holeCameras, total) + "\n";
+    writeStdout(text);
+    flushStdout();
+  }
+  const bool gaps = verdict == vf::Verdict::Cracks || verdict == vf::Verdict::Holes;
+  if (res.cancelled && !gaps) return 130;
+  switch (verdict) {
+  case vf::Verdict::Watertight: return kExitClean;
+  case vf::Verdict::TJunctionsOnly: return a.failOnTJunctions ? kExitFindings : kExitClean;
+  default: return kExitFindings;
+  }
+}
+
+} // namespace fftess::cli

@@ -1,0 +1,109 @@
+// fftess sweep --shard K/N and fftess merge: the merged shards' report is the unsharded run's, byte for byte; and
+// fftess bench's table: its rows exist and its work counters prove the skipped work.
+#include "run.h"
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+using clitest::run;
+using json = nlohmann::ordered_json;
+
+namespace {
+
+const std::string kRings = clitest::source("docs/examples/rings_small.toml");
+
+} // namespace
+
+TEST_CASE("merging N = 1, 2, 7 shards of a sweep gives exactly the single run's report", "[cli][merge]") {
+  const std::string dir = clitest::tmpDir();
+  // Cracks (clamp none) so that causes, worst gaps and first cameras all take part.
+  const std::vector<std::string> base{"sweep", kRings, "--set", "lod.adjacency_clamp=none", "--random", "15",
+                                      "--seed", "4", "-q"};
+  auto args = [&](std::vector<std::string> extra) {
+    std::vector<std::string> a = base;
+    a.insert(a.end(), extra.begin(), extra.end());
+    return a;
+  };
+  const std::string one = dir + "/one.json";
+  clitest::Result r = run(args({"--json", one}));
+  REQUIRE(r.status == 1);
+  const std::string single = clitest::readFile(one);
+  const json j = json::parse(single);
+  REQUIRE(j.at("stats").at("cracks").get<int64_t>() > 0);
+  REQUIRE(j.at("causes").size() >= 1);
+  for (int n : {1, 2, 7}) {
+    INFO("N = " << n);
+    std::vector<std::string> merge{"merge"};
+    for (int k = n; k >= 1; --k) { // given in reverse: the order of the inputs does not matter
+      const std::string part = dir + "/s" + std::to_string(k) + "_" + std::to_string(n) + ".json";
+      r = run(args({"--shard", std::to_string(k) + "/" + std::to_string(n), "--threads", std::to_string(1 + k % 2),
+                    "--json", part}));
+      REQUIRE(r.status <= 1);
+      const json s = json::parse(clitest::readFile(part));
+      CHECK(s.at("shard").at("index") == k);
+      for (const json& c : s.at("cameras")) CHECK(c.at("index").get<int>() % n == k - 1); // global indices
+      merge.push_back(part);
+    }
+    const std::string merged = dir + "/merged_" + std::to_string(n) + ".json";
+    merge.insert(merge.end(), {"--json", merged});
+    r = run(merge);
+    CHECK(r.status == 1);
+    CHECK(r.out.find("CRACKS") != std::string::npos);
+    CHECK(clitest::readFile(merged) == single);
+  }
+  // A shard missing or given twice, or shards of different sweeps: refused.
+  r = run(args({"--shard", "1/2", "--json", dir + "/x1.json"}));
+  CHECK(run({"merge", dir + "/x1.json"}).status == 2);
+  CHECK(run({"merge", dir + "/x1.json", dir + "/x1.json"}).status == 2);
+  r = run({"sweep", kRings, "--random", "15", "--seed", "5", "-q", "--shard", "2/2", "--json", dir + "/x2.json"});
+  CHECK(run({"merge", dir + "/x1.json", dir + "/x2.json"}).status == 2);
+  CHECK(run({"sweep", kRings, "--shard", "3/2"}).status == 2);
+  CHECK(run({"sweep", kRings, "--shard", "0/2"}).status == 2);
+}
+
+TEST_CASE("fftess bench prints the accuracy table and its work counters prove the skipped work", "[cli][bench]") {
+  const std::string js = clitest::tmpDir() + "/bench.json", md = clitest::tmpDir() + "/bench.md",
+                    svg = clitest::tmpDir() + "/bench.svg";
+  const clitest::Result r = run({"bench", "--scene", kRings, "--cameras", "2", "--mesh-cameras", "1", "--json", js,
+                                 "--markdown", md, "--svg", svg});
+  REQUIRE(r.status == 0);
+  const json j = json::parse(clitest::readFile(js));
+  std::map<std::string, json> rows;
+  for (const json& x : j.at("rows")) rows[x.at("group").get<std::string>() + "/" + x.at("row").get<std::string>()] = x;
+  for (const char* name : {"checker/float", "checker/epick", "checker/epeck", "domain formula/nvidia",
+                           "domain formula/lerp_fma", "domain formula/blend", "domain formula/blend_fma",
+                           "heights/8-bit subtexel", "heights/float bilinear", "heights/r16_float", "heights/flat",
+                           "mip/bonaventura, no mip", "mip/bonaventura, per_patch", "mip/bonaventura, per_vertex",
+                           "lod precision/float", "lod precision/double", "tessellator/denormals kept", "tessellator/denormals flushed", "scope/edges",
+                           "scope/whole mesh"}) {
+    INFO(name);
+    REQUIRE(rows.count(name));
+    CHECK_FALSE(rows[name].contains("error"));
+    CHECK(r.out.find(rows[name].at("row").get<std::string>()) != std::string::npos);
+  }
+  auto work = [&](const char* row, const char* key) { return rows[row].at("work").at(key).get<int64_t>(); };
+  // A flat scene samples no height; the displaced ones sample one per domain evaluation.
+  CHECK(work("heights/flat", "height_samples") == 0);
+  CHECK(work("heights/flat", "domain_evaluations") > 0);
+  CHECK(work("heights/8-bit subtexel", "height_samples") == work("heights/8-bit subtexel", "domain_evaluations"));
+  // The edge check never tessellates a whole patch; the whole-mesh check tessellates every patch once per camera.
+  CHECK(work("scope/edges", "full_tessellations") == 0);
+  CHECK(work("scope/whole mesh", "full_tessellations") == rows["scope/whole mesh"].at("cameras").get<int64_t>() *
+                                                            j.at("patches").get<int64_t>());
+  // Culled patches run no domain emulation: what is evaluated besides the hole check's grid is the drawn edges'
+  // points, at most one per point of the edges checked (shared points are taken from the first side).
+  const json& e = rows["scope/edges"];
+  CHECK(e.at("stats").at("culled_patches").get<int64_t>() > 0);
+  CHECK(work("scope/edges", "edge_queries") > 0);
+  CHECK(work("scope/edges", "shared_edge_points") > 0);
+  // The double LOD row says how many factors differ and that it did not re-check.
+  CHECK(rows["lod precision/double"].at("verdict").get<std::string>().find("factors differ") != std::string::npos);
+  CHECK(work("lod precision/double", "lod_evaluations") == 2 * j.at("patches").get<int64_t>());
+  // The exact-construction kernel is the checker group's reference; the float checker is the cheapest checker.
+  CHECK(rows["checker/epeck"].at("reference") == true);
+  CHECK(clitest::readFile(md).find("| checker | epeck (reference)") != std::string::npos);
+  std::string why;
+  CHECK(clitest::wellFormedXml(clitest::readFile(svg), why));
+}
