@@ -366,7 +366,7 @@ TEST_CASE("check: an eye on a shared edge's midpoint plane gives holes, exit 1 (
   CHECK(svg.find("<path class=\"hole\"") != std::string::npos); // the holes are filled on the map
   CHECK(r.out.find("w = 0 in the projection") != std::string::npos);
   const nlohmann::json j = nlohmann::json::parse(clitest::readFile(json));
-  CHECK(j.at("version") == 4);
+  CHECK(j.at("version") == 5);
   CHECK(j.at("verdict") == "holes");
   CHECK(j.at("stats").at("holes").get<int64_t>() >= 2);
   REQUIRE(j.at("holes").size() >= 2);
