@@ -89,6 +89,7 @@ PatchLod nvidiaTileDouble(const Patch& patch, const TileNeighbours& neighbours, 
   s.rebuild = params.reconstruction == Reconstruction::FarCorner   ? glsld::kRebuildFarCorner
               : params.reconstruction == Reconstruction::Resampled ? glsld::kRebuildResampled
                                                                    : glsld::kRebuildEdgeVector;
+  s.insideFromFixedEdges = params.insideFromFixedEdges;
   glsld::TileNeighbourInfo n;
   for (int i = 0; i < 4; ++i) {
     n.size[i] = neighbours.size[i];

@@ -130,6 +130,7 @@ void main() {
   ts.sphere = ss;
   ts.clampMode = kClampPow2;
   ts.rebuild = kRebuildEdgeVector;
+  ts.insideFromFixedEdges = false;
   TileNeighbourInfo tn;
   tn.size[0] = uNeighbours.x; tn.size[1] = uNeighbours.y; tn.size[2] = uNeighbours.z; tn.size[3] = uNeighbours.w;
   tn.oddU = false;

@@ -336,7 +336,7 @@ std::string buildShader(bool precise, bool nvPragmas) {
        "    int mode = kClampNone;\n"
        "    if (k == 1) { mode = kClampInteger; }\n"
        "    if (k == 2) { mode = kClampPow2; }\n"
-       "    TileSettings ts = TileSettings(ss, mode, kRebuildEdgeVector);\n"
+       "    TileSettings ts = TileSettings(ss, mode, kRebuildEdgeVector, false);\n"
        "    LOD_RESULT LodResult rt = nvidiaTileLod(c0, c1, c2, c3, hb, hmin, hmax, ni, cam, ts);\n"
        "    putResult(o + uint(1 + k) * " + std::to_string(kOutPerScheme) + "u, rt);\n"
        "  }\n";
