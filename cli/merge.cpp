@@ -64,6 +64,7 @@ vf::Stats statsOf(const json& j) {
   s.holesCulledVisible = j.at("holes_culled_while_visible");
   s.culledUndecided = j.at("culled_undecided");
   s.visibilityTests = j.at("visibility_tests");
+  s.denormalFactors = j.at("denormal_factors");
   s.worstGapWorld = j.at("worst_gap_world");
   s.worstGapPixels = j.at("worst_gap_pixels");
   return s;

@@ -107,6 +107,8 @@ lod::Camera toLodCamera(const Camera& c);
 void computeFactors(const TerrainData& t, const Camera& camera, std::vector<lod::PatchLod>& out, WorkStats& work);
 // The scene asks for the GPU path (lod.shader, or lod.evaluate = "gpu").
 bool usesGpu(const Scene& s);
+// CheckOptions::tessellator with flushDenormals set by denormalRule (the options every tessellation of a check takes).
+Options tessellatorOptions(const Scene& s, const CheckOptions& options);
 // The factors the check uses: computeFactors, or (usesGpu) the provider's, and then, when cpu is given and
 // lod.scheme is a built-in scheme, the C++ build's into *cpu (not counted in work). False with error when the GPU
 // path is asked for without a provider or the provider fails.

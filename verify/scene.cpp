@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 #include <sys/stat.h>
@@ -73,17 +74,45 @@ const char* nameOf(const Enum (&table)[N], int v) {
 
 struct Failed {};
 
+constexpr size_t kMaxSceneBytes = size_t(16) << 20; // scene files (and lod.shader files) at most 16 MiB
+constexpr int64_t kMaxTexels = int64_t(8193) * 8193; // a raw heightmap's texels at most
+
+// FNV-1a 64 (offset basis 0xcbf29ce484222325, prime 0x100000001b3), byte by byte.
+struct Fnv1a64 {
+  uint64_t h = 0xcbf29ce484222325ull;
+  void add(const void* data, size_t n) {
+    const unsigned char* b = static_cast<const unsigned char*>(data);
+    for (size_t i = 0; i < n; ++i) h = (h ^ b[i]) * 0x100000001b3ull;
+  }
+  void add(const std::string& s) { add(s.data(), s.size()); }
+  void tag(unsigned char t, uint64_t size) { // a separator: the tag byte, then the part's size (8 bytes, little endian)
+    add(&t, 1);
+    for (int i = 0; i < 8; ++i) {
+      const unsigned char c = static_cast<unsigned char>(size >> (8 * i));
+      add(&c, 1);
+    }
+  }
+};
+
 // Reads one table, remembering which keys were read so that the rest can be reported as unknown.
 class Reader {
 public:
-  Reader(const std::string& file, const std::set<std::string>& overridden) : file_(file), overridden_(overridden) {}
+  Reader(const std::string& file, const std::map<std::string, std::string>& overridden) : file_(file), overridden_(overridden) {}
 
   std::string error;
 
   [[noreturn]] void fail(const std::string& key, const toml::node* at, const std::string& msg) {
     std::ostringstream os;
+    const std::string* by = nullptr; // an override that made or holds this key: "--set a.b.c=5" for a key "a"
+    for (const auto& [k, given] : overridden_) {
+      const bool below = key.size() > k.size() && key.compare(0, k.size(), k) == 0 && key[k.size()] == '.';
+      const bool above = k.size() > key.size() && k.compare(0, key.size(), key) == 0 && k[key.size()] == '.';
+      if (below || above) by = &given;
+    }
     if (overridden_.count(key)) {
       os << "--set " << key << ": " << msg;
+    } else if (by) {
+      os << "--set " << *by << ": " << key << ": " << msg;
     } else {
       os << file_;
       if (at && at->source().begin) os << ":" << at->source().begin.line << ":" << at->source().begin.column;
@@ -220,7 +249,7 @@ public:
 
 private:
   std::string file_;
-  const std::set<std::string>& overridden_;
+  const std::map<std::string, std::string>& overridden_; // KEY -> the override as given (KEY=VALUE)
 };
 
 void readCamera(Reader& r, const toml::table& t, const std::string& p, Camera& c, bool requireEyeTarget) {
@@ -324,6 +353,10 @@ void readScene(Reader& r, const toml::table& root, Scene& s, const std::string& 
       r.integer(t, p, "height", d.height, 2, 65536);
       if (!t.get("width")) r.fail(p + "width", &t, "missing key (required for kind = \"raw\")");
       if (!t.get("height")) r.fail(p + "height", &t, "missing key (required for kind = \"raw\")");
+      if (int64_t(d.width) * d.height > kMaxTexels)
+        r.fail(p + "width", t.get("width"),
+               std::to_string(d.width) + " x " + std::to_string(d.height) + " texels: more than " +
+                   std::to_string(kMaxTexels) + " (8193 x 8193; the file is read whole)");
       std::string path = d.file;
       if (!path.empty() && path[0] != '/') path = baseDir + "/" + path;
       auto texels = std::make_shared<std::vector<float>>();
@@ -356,6 +389,13 @@ void readScene(Reader& r, const toml::table& root, Scene& s, const std::string& 
         r.fail("layout.cells_per_patch", at->as_table()->get("cells_per_patch") ? at->as_table()->get("cells_per_patch") : at,
                "heightmap size " + std::to_string(d.texWidth) + " x " + std::to_string(d.texHeight) +
                    " is not cells_per_patch * k + 1 with k >= 1");
+      // The same cap as the other layouts (a patch costs ~600 bytes prepared).
+      const double patches = double((d.texWidth - 1) / cpp) * double((d.texHeight - 1) / cpp);
+      if (patches > 4.0e6)
+        r.fail("layout.cells_per_patch", at->as_table()->get("cells_per_patch") ? at->as_table()->get("cells_per_patch") : at,
+               "more than 4 million patches (" + std::to_string((d.texWidth - 1) / cpp) + " x " +
+                   std::to_string((d.texHeight - 1) / cpp) + " from the " + std::to_string(d.texWidth) + " x " +
+                   std::to_string(d.texHeight) + " heightmap)");
     }
   }
 
@@ -368,7 +408,8 @@ void readScene(Reader& r, const toml::table& root, Scene& s, const std::string& 
                   {"scheme", "target_pixels", "factor", "min_factor", "max_factor", "min_distance", "max_distance",
                    "min_tess", "max_tess", "angle_correction", "rank", "edges_per_screen_height", "frustum_cull",
                    "displaced_corners", "adjacency_clamp", "reconstruction", "finest_level", "coarsest_level",
-                   "literal_article_weight", "height_bounds", "inside", "inside_from", "shader", "evaluate"});
+                   "literal_article_weight", "height_bounds", "inside", "inside_from", "shader", "evaluate",
+                   "flush_denormals"});
     // lod.shader: the user's shader on the GPU (docs/gpu_lod.md); lod.scheme is then optional ("shader": no C++
     // reference) or a built-in scheme the shader's factors are compared with.
     if (r.string(t, p, "shader", L.shader) && !L.shader.empty()) { // "" = none (--set lod.shader='')
@@ -398,6 +439,14 @@ void readScene(Reader& r, const toml::table& root, Scene& s, const std::string& 
       r.fail(p + "scheme", t.get("scheme"),
              "\"geomorph\" has no GPU path (lod.evaluate = \"gpu\" or lod.shader): its factors need the "
              "neighbours' levels and its domain shader the levels themselves");
+    // lod.flush_denormals: "auto" (the driver's rule on the GPU path), true or false (DenormalFlush).
+    if (const toml::node* at = t.get("flush_denormals")) {
+      if (at->is_boolean()) L.flushDenormals = at->as_boolean()->get() ? DenormalFlush::On : DenormalFlush::Off;
+      else if (at->is_string() && at->as_string()->get() == "auto") L.flushDenormals = DenormalFlush::Auto;
+      else if (at->is_string())
+        r.fail(p + "flush_denormals", at, "unknown value \"" + at->as_string()->get() + "\" (expected \"auto\" | true | false)");
+      else r.fail(p + "flush_denormals", at, std::string("expected \"auto\", true or false, got ") + Reader::typeName(*at));
+    }
     // Keys several schemes share are read once and set in every parameter struct that has the field.
     lod::ScreenSphereParams& sphere = L.screenSphere.sphere;
     if (r.number(t, p, "target_pixels", sphere.tessellatedTriWidth) && !(sphere.tessellatedTriWidth > 0))
@@ -528,7 +577,8 @@ void readScene(Reader& r, const toml::table& root, Scene& s, const std::string& 
 }
 
 // Applies "KEY=VALUE" to the document.
-bool applyOverride(toml::table& root, const std::string& ov, std::set<std::string>& overridden, std::string& error) {
+bool applyOverride(toml::table& root, const std::string& ov, std::map<std::string, std::string>& overridden,
+                   std::string& error) {
   const size_t eq = ov.find('=');
   if (eq == std::string::npos || eq == 0) {
     error = "--set " + ov + ": expected KEY=VALUE";
@@ -579,7 +629,58 @@ bool applyOverride(toml::table& root, const std::string& ov, std::set<std::strin
   } catch (const toml::parse_error&) {
     t->insert_or_assign(parts.back(), value); // a bare word: a string
   }
-  overridden.insert(key);
+  overridden[key] = ov;
+  return true;
+}
+
+// Reads path whole when it holds at most limit bytes (any kind of file: a FIFO or /dev/zero is read only up to the
+// limit). 1: read; 0: cannot open or read; -1: larger than limit.
+int readBounded(const std::string& path, size_t limit, std::string& out) {
+  std::ifstream f(path, std::ios::binary);
+  if (!f) return 0;
+  out.clear();
+  char buf[65536];
+  while (f) {
+    f.read(buf, sizeof buf);
+    const size_t got = static_cast<size_t>(f.gcount());
+    if (out.size() + got > limit) return -1;
+    out.append(buf, got);
+  }
+  return f.bad() ? 0 : 1;
+}
+
+// Scene::contentHash: the text, each override, the raw heightmap's texels (after displacement.format) and the
+// lod.shader file, each part after a tag byte and its size (Fnv1a64::tag). False with error: the shader cannot be
+// read (it was there when the key was read) or is larger than kMaxSceneBytes.
+bool hashContent(const std::string& text, const std::vector<std::string>& overrides, Scene& s, std::string& error) {
+  Fnv1a64 h;
+  h.tag(0, text.size());
+  h.add(text);
+  for (const std::string& o : overrides) {
+    h.tag(1, o.size());
+    h.add(o);
+  }
+  if (s.displacement.kind == DisplacementKind::Raw && s.displacement.texels) {
+    const std::vector<float>& t = *s.displacement.texels;
+    h.tag(2, t.size() * sizeof(float));
+    for (float x : t) {
+      uint32_t b;
+      std::memcpy(&b, &x, sizeof b);
+      h.add(&b, sizeof b); // host order (little endian on every target fftess builds for)
+    }
+  }
+  if (!s.lod.shader.empty()) {
+    std::string bytes;
+    const int rc = readBounded(s.lod.shader, kMaxSceneBytes, bytes);
+    if (rc <= 0) {
+      error = "lod.shader: " + s.lod.shader + (rc < 0 ? ": larger than " + std::to_string(kMaxSceneBytes) + " bytes"
+                                                       : std::string(": cannot read the shader"));
+      return false;
+    }
+    h.tag(3, bytes.size());
+    h.add(bytes);
+  }
+  s.contentHash = h.h;
   return true;
 }
 
@@ -595,7 +696,7 @@ SceneResult parseImpl(const std::string& text, const std::string& source, const 
     res.error = os.str();
     return res;
   }
-  std::set<std::string> overridden;
+  std::map<std::string, std::string> overridden;
   for (const std::string& ov : overrides)
     if (!applyOverride(root, ov, overridden, res.error)) return res;
   Reader r(source, overridden);
@@ -609,6 +710,7 @@ SceneResult parseImpl(const std::string& text, const std::string& source, const 
     res.error = source + ": " + e.what();
     return res;
   }
+  if (!hashContent(text, overrides, res.scene, res.error)) return res;
   res.ok = true;
   return res;
 }
@@ -643,17 +745,17 @@ SceneResult loadScene(const std::string& path, const std::vector<std::string>& o
     r.error = path + ": is a directory, not a scene file";
     return r;
   }
-  std::ifstream f(path, std::ios::binary);
-  if (!f) {
+  std::string text;
+  const int rc = readBounded(path, kMaxSceneBytes, text);
+  if (rc <= 0) {
     SceneResult r;
-    r.error = path + ": cannot open scene file";
+    r.error = path + (rc < 0 ? ": scene file larger than " + std::to_string(kMaxSceneBytes) + " bytes (16 MiB, the limit)"
+                             : std::string(": cannot open scene file"));
     return r;
   }
-  std::ostringstream ss;
-  ss << f.rdbuf();
   const size_t slash = path.find_last_of('/');
   const std::string dir = slash == std::string::npos ? "." : path.substr(0, slash == 0 ? 1 : slash);
-  return oneLine(parseImpl(ss.str(), path, overrides, dir));
+  return oneLine(parseImpl(text, path, overrides, dir));
 }
 
 const char* toString(Classification c) {
