@@ -31,9 +31,22 @@ std::vector<std::string> overridesOf(const SceneArgs& a) {
   return o;
 }
 
+// The loader names --eye / --target as the overrides they become ("--set camera.eye: ..."): name the option given.
+static std::string shorthandNamed(const SceneArgs& a, std::string error) {
+  const std::pair<const char*, const std::string*> opts[] = {{"eye", &a.eye}, {"target", &a.target}};
+  for (const auto& [key, value] : opts) {
+    const std::string prefix = std::string("--set camera.") + key + ": ";
+    bool viaSet = false;
+    for (const std::string& o : a.overrides) viaSet = viaSet || o.rfind(std::string("camera.") + key + "=", 0) == 0;
+    if (!value->empty() && !viaSet && error.rfind(prefix, 0) == 0)
+      error = "--" + std::string(key) + " " + *value + ": " + error.substr(prefix.size());
+  }
+  return error;
+}
+
 vf::Terrain load(const SceneArgs& a) {
   vf::SceneResult r = vf::loadScene(a.scene, overridesOf(a));
-  if (!r) throw UsageError(r.error.empty() ? "cannot load scene '" + a.scene + "'" : r.error);
+  if (!r) throw UsageError(r.error.empty() ? "cannot load scene '" + a.scene + "'" : shorthandNamed(a, r.error));
   vf::TerrainResult t = vf::prepareTerrain(r.scene);
   if (!t) throw UsageError(a.scene + ": " + t.error);
   return t.terrain;

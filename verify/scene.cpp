@@ -347,6 +347,17 @@ void readScene(Reader& r, const toml::table& root, Scene& s, const std::string& 
     r.enumeration(t, p, "mip", kMipModes, d.mip);
     if (d.mip != MipMode::None && d.kind == DisplacementKind::None)
       r.fail(p + "mip", t.get("mip"), "needs a displacement texture (displacement.kind is \"none\")");
+    // heightmap_grid: the same cap as the other layouts, from the texture size before the texture is read or made.
+    auto capPatches = [&](int64_t w, int64_t h) {
+      if (s.layout.kind != LayoutKind::HeightmapGrid) return;
+      const int64_t cpp = s.layout.cellsPerPatch, nx = (w - 1) / cpp, nz = (h - 1) / cpp;
+      if (double(nx) * double(nz) <= 4.0e6) return;
+      const toml::table& lt = *root.get("layout")->as_table();
+      r.fail("layout.cells_per_patch", lt.get("cells_per_patch") ? lt.get("cells_per_patch") : &lt,
+             "more than 4 million patches (" + std::to_string(nx) + " x " + std::to_string(nz) + " from the " +
+                 std::to_string(w) + " x " + std::to_string(h) + " heightmap at cells_per_patch = " +
+                 std::to_string(cpp) + ")");
+    };
     if (d.kind == DisplacementKind::Raw) {
       r.string(t, p, "file", d.file, true);
       r.integer(t, p, "width", d.width, 2, 65536);
@@ -357,6 +368,7 @@ void readScene(Reader& r, const toml::table& root, Scene& s, const std::string& 
         r.fail(p + "width", t.get("width"),
                std::to_string(d.width) + " x " + std::to_string(d.height) + " texels: more than " +
                    std::to_string(kMaxTexels) + " (8193 x 8193; the file is read whole)");
+      capPatches(d.width, d.height);
       std::string path = d.file;
       if (!path.empty() && path[0] != '/') path = baseDir + "/" + path;
       auto texels = std::make_shared<std::vector<float>>();
@@ -370,6 +382,7 @@ void readScene(Reader& r, const toml::table& root, Scene& s, const std::string& 
       for (const char* k : {"file", "width", "height"})
         if (t.get(k)) r.fail(p + k, t.get(k), "only allowed with kind = \"raw\"");
       if (d.kind == DisplacementKind::Fbm || d.kind == DisplacementKind::Ridge) {
+        capPatches(d.resolution, d.resolution);
         auto texels = std::make_shared<std::vector<float>>(detail::generateHeightfield(d));
         detail::applyTexelFormat(d.format, *texels);
         d.texels = texels;
@@ -389,13 +402,6 @@ void readScene(Reader& r, const toml::table& root, Scene& s, const std::string& 
         r.fail("layout.cells_per_patch", at->as_table()->get("cells_per_patch") ? at->as_table()->get("cells_per_patch") : at,
                "heightmap size " + std::to_string(d.texWidth) + " x " + std::to_string(d.texHeight) +
                    " is not cells_per_patch * k + 1 with k >= 1");
-      // The same cap as the other layouts (a patch costs ~600 bytes prepared).
-      const double patches = double((d.texWidth - 1) / cpp) * double((d.texHeight - 1) / cpp);
-      if (patches > 4.0e6)
-        r.fail("layout.cells_per_patch", at->as_table()->get("cells_per_patch") ? at->as_table()->get("cells_per_patch") : at,
-               "more than 4 million patches (" + std::to_string((d.texWidth - 1) / cpp) + " x " +
-                   std::to_string((d.texHeight - 1) / cpp) + " from the " + std::to_string(d.texWidth) + " x " +
-                   std::to_string(d.texHeight) + " heightmap)");
     }
   }
 
