@@ -74,25 +74,8 @@ const char* nameOf(const Enum (&table)[N], int v) {
 
 struct Failed {};
 
-constexpr size_t kMaxSceneBytes = size_t(16) << 20; // scene files (and lod.shader files) at most 16 MiB
 constexpr int64_t kMaxTexels = int64_t(8193) * 8193; // a raw heightmap's texels at most
 
-// FNV-1a 64 (offset basis 0xcbf29ce484222325, prime 0x100000001b3), byte by byte.
-struct Fnv1a64 {
-  uint64_t h = 0xcbf29ce484222325ull;
-  void add(const void* data, size_t n) {
-    const unsigned char* b = static_cast<const unsigned char*>(data);
-    for (size_t i = 0; i < n; ++i) h = (h ^ b[i]) * 0x100000001b3ull;
-  }
-  void add(const std::string& s) { add(s.data(), s.size()); }
-  void tag(unsigned char t, uint64_t size) { // a separator: the tag byte, then the part's size (8 bytes, little endian)
-    add(&t, 1);
-    for (int i = 0; i < 8; ++i) {
-      const unsigned char c = static_cast<unsigned char>(size >> (8 * i));
-      add(&c, 1);
-    }
-  }
-};
 
 // Reads one table, remembering which keys were read so that the rest can be reported as unknown.
 class Reader {
@@ -639,57 +622,6 @@ bool applyOverride(toml::table& root, const std::string& ov, std::map<std::strin
   return true;
 }
 
-// Reads path whole when it holds at most limit bytes (any kind of file: a FIFO or /dev/zero is read only up to the
-// limit). 1: read; 0: cannot open or read; -1: larger than limit.
-int readBounded(const std::string& path, size_t limit, std::string& out) {
-  std::ifstream f(path, std::ios::binary);
-  if (!f) return 0;
-  out.clear();
-  char buf[65536];
-  while (f) {
-    f.read(buf, sizeof buf);
-    const size_t got = static_cast<size_t>(f.gcount());
-    if (out.size() + got > limit) return -1;
-    out.append(buf, got);
-  }
-  return f.bad() ? 0 : 1;
-}
-
-// Scene::contentHash: the text, each override, the raw heightmap's texels (after displacement.format) and the
-// lod.shader file, each part after a tag byte and its size (Fnv1a64::tag). False with error: the shader cannot be
-// read (it was there when the key was read) or is larger than kMaxSceneBytes.
-bool hashContent(const std::string& text, const std::vector<std::string>& overrides, Scene& s, std::string& error) {
-  Fnv1a64 h;
-  h.tag(0, text.size());
-  h.add(text);
-  for (const std::string& o : overrides) {
-    h.tag(1, o.size());
-    h.add(o);
-  }
-  if (s.displacement.kind == DisplacementKind::Raw && s.displacement.texels) {
-    const std::vector<float>& t = *s.displacement.texels;
-    h.tag(2, t.size() * sizeof(float));
-    for (float x : t) {
-      uint32_t b;
-      std::memcpy(&b, &x, sizeof b);
-      h.add(&b, sizeof b); // host order (little endian on every target fftess builds for)
-    }
-  }
-  if (!s.lod.shader.empty()) {
-    std::string bytes;
-    const int rc = readBounded(s.lod.shader, kMaxSceneBytes, bytes);
-    if (rc <= 0) {
-      error = "lod.shader: " + s.lod.shader + (rc < 0 ? ": larger than " + std::to_string(kMaxSceneBytes) + " bytes"
-                                                       : std::string(": cannot read the shader"));
-      return false;
-    }
-    h.tag(3, bytes.size());
-    h.add(bytes);
-  }
-  s.contentHash = h.h;
-  return true;
-}
-
 SceneResult parseImpl(const std::string& text, const std::string& source, const std::vector<std::string>& overrides,
                       const std::string& baseDir) {
   SceneResult res;
@@ -716,7 +648,7 @@ SceneResult parseImpl(const std::string& text, const std::string& source, const 
     res.error = source + ": " + e.what();
     return res;
   }
-  if (!hashContent(text, overrides, res.scene, res.error)) return res;
+  if (!detail::hashSceneContent(text, overrides, res.scene, res.error)) return res;
   res.ok = true;
   return res;
 }
@@ -752,10 +684,10 @@ SceneResult loadScene(const std::string& path, const std::vector<std::string>& o
     return r;
   }
   std::string text;
-  const int rc = readBounded(path, kMaxSceneBytes, text);
+  const int rc = detail::readBounded(path, detail::kMaxSceneBytes, text);
   if (rc <= 0) {
     SceneResult r;
-    r.error = path + (rc < 0 ? ": scene file larger than " + std::to_string(kMaxSceneBytes) + " bytes (16 MiB, the limit)"
+    r.error = path + (rc < 0 ? ": scene file larger than " + std::to_string(detail::kMaxSceneBytes) + " bytes (16 MiB, the limit)"
                              : std::string(": cannot open scene file"));
     return r;
   }
