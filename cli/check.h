@@ -15,7 +15,7 @@ struct SceneArgs {
   std::vector<std::string> overrides; // --set KEY=VALUE
   std::string eye, target;            // --eye X,Y,Z / --target X,Y,Z: shorthands for --set camera.eye=[X,Y,Z]
   std::string kernel = "epick";
-  bool flushDenormals = false;
+  std::string flushDenormals = "auto"; // --flush-denormals[=on|off|auto]: bare = on
   std::string json, svg;
   bool quiet = false;
   bool failOnTJunctions = false;

@@ -31,9 +31,22 @@ std::vector<std::string> overridesOf(const SceneArgs& a) {
   return o;
 }
 
+// The loader names --eye / --target as the overrides they become ("--set camera.eye: ..."): name the option given.
+static std::string shorthandNamed(const SceneArgs& a, std::string error) {
+  const std::pair<const char*, const std::string*> opts[] = {{"eye", &a.eye}, {"target", &a.target}};
+  for (const auto& [key, value] : opts) {
+    const std::string prefix = std::string("--set camera.") + key + ": ";
+    bool viaSet = false;
+    for (const std::string& o : a.overrides) viaSet = viaSet || o.rfind(std::string("camera.") + key + "=", 0) == 0;
+    if (!value->empty() && !viaSet && error.rfind(prefix, 0) == 0)
+      error = "--" + std::string(key) + " " + *value + ": " + error.substr(prefix.size());
+  }
+  return error;
+}
+
 vf::Terrain load(const SceneArgs& a) {
   vf::SceneResult r = vf::loadScene(a.scene, overridesOf(a));
-  if (!r) throw UsageError(r.error.empty() ? "cannot load scene '" + a.scene + "'" : r.error);
+  if (!r) throw UsageError(r.error.empty() ? "cannot load scene '" + a.scene + "'" : shorthandNamed(a, r.error));
   vf::TerrainResult t = vf::prepareTerrain(r.scene);
   if (!t) throw UsageError(a.scene + ": " + t.error);
   return t.terrain;
@@ -43,7 +56,11 @@ vf::CheckOptions checkOptions(const SceneArgs& a) {
   vf::CheckOptions o;
   if (!vf::parseKernel(a.kernel.c_str(), o.kernel))
     throw UsageError("--kernel " + quoteToken(a.kernel) + ": expected epick|epeck|float");
-  o.tessellator.flushDenormals = a.flushDenormals;
+  const std::string& fd = a.flushDenormals;
+  if (fd == "on" || fd == "true") o.flushDenormals = vf::DenormalFlush::On;
+  else if (fd == "off" || fd == "false") o.flushDenormals = vf::DenormalFlush::Off;
+  else if (fd == "auto") o.flushDenormals = vf::DenormalFlush::Auto;
+  else throw UsageError("--flush-denormals=" + quoteToken(fd) + ": expected on|off|auto");
   return o;
 }
 
@@ -148,7 +165,8 @@ Cause holeCause(const vf::Hole& h) {
   }
   std::string why;
   const float f = h.hullFactor;
-  const std::string what = std::isnan(f) ? "NaN" : f < 0 ? "negative" : f == 0 ? "zero" : "not > 0";
+  const std::string what = std::isnan(f) ? "NaN" : f < 0 ? "negative" : f == 0 ? "zero"
+                           : std::fpclassify(f) == FP_SUBNORMAL ? "denormal, flushed to zero" : "not > 0";
   if (h.edge < 0) {
     why = "not drawn (patch dropped)";
   } else {
@@ -170,7 +188,8 @@ Cause holeCause(const vf::Hole& h) {
                                      ", " + formatFloat(h.visiblePoint.z) + ")"
                                : "; near the view frustum (not proven invisible)";
   const std::string key = h.edge < 0 ? "discarded: patch not drawn"
-                          : std::string("discarded: ") + what + " factor" +
+                          : std::string("discarded: ") +
+                                (std::fpclassify(f) == FP_SUBNORMAL ? std::string("denormal factor, flushed to zero") : what + " factor") +
                                 (h.lod.scheme != vf::LodScheme::Constant && h.midpointW == 0 ? " (w = 0 at the edge midpoint)" : "") +
                                 " (lod " + scheme + ")";
   return {key, "discarded by the tessellator: " + why + seen};
@@ -235,7 +254,9 @@ void addSceneOptions(CLI::App* sub, SceneArgs& a) {
   sub->add_option("--target", a.target, "Camera target X,Y,Z (shorthand for --set camera.target=[X,Y,Z])");
   sub->add_option("--kernel", a.kernel, "CGAL kernel: epick (exact predicates), epeck (exact gaps too), float (naive, wrong on purpose)")
       ->capture_default_str();
-  sub->add_flag("--flush-denormals", a.flushDenormals, "Tessellator flushes denormal factors (as llvmpipe)");
+  sub->add_flag("--flush-denormals{on}", a.flushDenormals,
+                "Denormal hull factors: =on flushed to zero (as llvmpipe; bare flag), =off kept (the D3D11 reference, "
+                "NVIDIA), =auto (default) the scene's lod.flush_denormals, else the GPU driver's rule");
   sub->add_option("--json", a.json, "Write the full report as JSON to FILE ('-': stdout, no text then)");
   sub->add_option("--svg", a.svg, "Write an SVG picture to FILE");
   sub->add_flag("-q,--quiet", a.quiet, "Print nothing but errors; the exit status tells the verdict");

@@ -51,7 +51,13 @@ void attachGpuLod(const vf::Terrain& terrain, const SceneArgs& a, vf::CheckOptio
 #endif
 }
 
+static const char* const kFactorNames[6] = {"Ueq0", "Veq0", "Ueq1", "Veq1", "insideU", "insideV"};
+
 void FactorDiffTally::add(size_t camera, const vf::Report& r) {
+  for (const vf::DenormalFactor& d : r.denormalFactors) {
+    if (denormals_.size() >= 5) break;
+    denormals_.push_back({camera, d});
+  }
   for (const vf::FactorDiff& d : r.factorDiffs) {
     if (examples_.size() < 3) examples_.push_back({camera, d});
     if (d.changesTessellation && tessellation_.size() < 3) tessellation_.push_back({camera, d});
@@ -59,12 +65,25 @@ void FactorDiffTally::add(size_t camera, const vf::Report& r) {
   }
 }
 
-static const char* const kFactorNames[6] = {"Ueq0", "Veq0", "Ueq1", "Veq1", "insideU", "insideV"};
-
 std::string FactorDiffTally::text(const vf::Scene& scene, const vf::CheckOptions& opt, const vf::Stats& total) const {
-  if (!usesGpu(scene)) return "";
   std::string out;
   char buf[400];
+  const vf::DenormalRule rule = vf::denormalRule(scene, opt);
+  if (total.denormalFactors > 0) {
+    std::snprintf(buf, sizeof buf, "  denormals      %lld hull factors are denormal; %s: %s\n",
+                  static_cast<long long>(total.denormalFactors), rule.flush ? "flushed to zero" : "kept", rule.why.c_str());
+    out += buf;
+    for (const Denormal& d : denormals_) {
+      std::snprintf(buf, sizeof buf, "denormal   camera #%zu %s %s %s (0x%s): %s\n", d.camera,
+                    patchText(d.factor.patch).c_str(), kFactorNames[d.factor.factor], formatFloat(d.factor.value).c_str(),
+                    hex8(d.factor.bits).c_str(),
+                    !d.factor.flushed ? "kept (the clamp makes an outer factor the minimum tessellation)"
+                    : d.factor.factor < 4 ? "flushed to zero: the tessellator discards the patch"
+                                          : "flushed to zero (an inside factor: the minimum either way)");
+      out += buf;
+    }
+  }
+  if (!usesGpu(scene)) return out;
 #ifdef FFTESS_HAVE_GL
   if (auto* p = dynamic_cast<const gpulod::GpuLodProvider*>(opt.factors.get())) {
     out += "  GPU LOD        " + p->description() + " on " + p->renderer() + "\n";
@@ -80,6 +99,8 @@ std::string FactorDiffTally::text(const vf::Scene& scene, const vf::CheckOptions
                     p->cpuSeconds() / static_cast<double>(p->cpuCameras()) * 1e3);
       out += buf;
     }
+    out += std::string("                 denormal factors ") + (rule.flush ? "flushed to zero" : "kept") + ": " +
+           rule.why + "\n";
   }
 #else
   (void)opt;

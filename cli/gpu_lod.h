@@ -23,8 +23,10 @@ void attachGpuLod(const vf::Terrain& terrain, const SceneArgs& a, vf::CheckOptio
 class FactorDiffTally {
 public:
   void add(size_t camera, const vf::Report& r);
-  // "" when the scene does not use the GPU path. Otherwise what ran, where, its cost per camera, and (with a C++
-  // reference) the section "factor differs from the GPU build".
+  // The denormal factors (any factor source: "denormal" lines with patch, factor and bits, and the rule that
+  // decided whether they were flushed); then "" when the scene does not use the GPU path, else what ran, where, its
+  // cost per camera, the driver's denormal rule, and (with a C++ reference) the section "factor differs from the GPU
+  // build".
   std::string text(const vf::Scene& scene, const vf::CheckOptions& opt, const vf::Stats& total) const;
 
 private:
@@ -32,8 +34,13 @@ private:
     size_t camera;
     vf::FactorDiff diff;
   };
+  struct Denormal {
+    size_t camera;
+    vf::DenormalFactor factor;
+  };
   std::vector<Example> examples_;
   std::vector<Example> tessellation_;
+  std::vector<Denormal> denormals_; // the first few denormal factors (any factor source)
 };
 
 } // namespace fftess::cli

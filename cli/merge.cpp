@@ -22,8 +22,8 @@ CLI::App* addMerge(CLI::App& app, MergeArgs& a) {
               "  fftess merge s1.json s2.json --json sweep.json\n"
               "Every shard 1..N of one sweep must be given once. The merged report equals the unsharded run's.\n"
               "Exit status: as sweep (0 watertight, 1 cracks, holes, nothing checked or unchecked cameras), 2 bad "
-              "usage or input (not a sweep report of this version, shards of different sweeps, a shard missing or "
-              "given twice), 3 internal error.");
+              "usage or input (not a sweep report of this version, shards of different sweeps or of different scene "
+              "contents (scene_hash), a shard missing or given twice), 3 internal error.");
   sub->add_option("reports", a.inputs, "The shards' JSON reports")->required();
   sub->add_option("--json", a.json, "Write the merged report here ('-': stdout, and no text)");
   sub->add_flag("-q,--quiet", a.quiet, "No summary on stdout");
@@ -64,6 +64,7 @@ vf::Stats statsOf(const json& j) {
   s.holesCulledVisible = j.at("holes_culled_while_visible");
   s.culledUndecided = j.at("culled_undecided");
   s.visibilityTests = j.at("visibility_tests");
+  s.denormalFactors = j.at("denormal_factors");
   s.worstGapWorld = j.at("worst_gap_world");
   s.worstGapPixels = j.at("worst_gap_pixels");
   return s;
@@ -86,6 +87,17 @@ int runMerge(const MergeArgs& a) {
     header.erase(k);
   size_t count = 0;
   std::vector<char> seen;
+  // The scene's content first (Scene::contentHash: the file's bytes, the overrides, the files it names): the same
+  // path and overrides may have held another scene when a shard ran.
+  const json hash0 = shards[0].value("scene_hash", json());
+  for (size_t i = 1; i < shards.size(); ++i) {
+    const json hash = shards[i].value("scene_hash", json());
+    if (hash != hash0)
+      throw UsageError("merge: " + quoteToken(a.inputs[i]) + ": scene_hash " + hash.dump() + " differs from " +
+                       quoteToken(a.inputs[0]) + "'s " + hash0.dump() +
+                       ": the shards ran on different contents of the scene (its file, --set overrides or the files it "
+                       "names changed between the runs)");
+  }
   for (size_t i = 0; i < shards.size(); ++i) {
     json h = shards[i];
     for (auto it = header.begin(); it != header.end(); ++it)

@@ -80,7 +80,7 @@ json statsJson(const vf::Stats& s) {
           {"skipped_culled", s.skippedCulled}, {"matches", s.matches},          {"t_junctions", s.tJunctions},
           {"cracks", s.cracks},             {"holes", s.holes},                  {"holes_discarded", s.holesDiscarded},
           {"holes_culled_while_visible", s.holesCulledVisible}, {"culled_undecided", s.culledUndecided},
-          {"visibility_tests", s.visibilityTests},
+          {"visibility_tests", s.visibilityTests}, {"denormal_factors", s.denormalFactors},
           {"worst_gap_world", s.worstGapWorld}, {"worst_gap_pixels", s.worstGapPixels}};
 }
 
@@ -105,6 +105,18 @@ json holeJson(const vf::Hole& h) {
   j["midpoint_w"] = formatFloat(h.midpointW);
   j["lod_box_y"] = json::array({h.lodBoxMinY, h.lodBoxMaxY});
   return j;
+}
+
+json denormalJson(const vf::DenormalFactor& d) {
+  static const char* const names[6] = {"Ueq0", "Veq0", "Ueq1", "Veq1", "insideU", "insideV"};
+  char bits[16];
+  std::snprintf(bits, sizeof bits, "0x%08X", static_cast<unsigned>(d.bits));
+  return {{"patch", {{"index", d.patch.index}, {"ring", d.patch.ring}, {"tile", d.patch.tile}, {"patch", d.patch.patch},
+                     {"level", d.patch.level}}},
+          {"factor", d.factor >= 0 && d.factor < 6 ? names[d.factor] : "?"},
+          {"value", formatFloat(d.value)},
+          {"bits", bits},
+          {"flushed", d.flushed}};
 }
 
 json cameraJson(const vf::Camera& c) {
@@ -132,6 +144,9 @@ static json reportHeader(const char* kind, const SceneArgs& a, const vf::Scene& 
   j["kind"] = kind;
   j["fftess_version"] = FFTESS_VERSION;
   j["scene"] = sceneJson(a, scene);
+  char hash[24];
+  std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(scene.contentHash));
+  j["scene_hash"] = std::string("fnv1a64:") + hash; // vf::Scene::contentHash: the scene's bytes, overrides, files
   return j;
 }
 
@@ -148,6 +163,10 @@ json checkJson(const SceneArgs& a, const vf::Terrain& terrain, const vf::Camera&
   json hs = json::array();
   for (const vf::Hole& h : r.holes) hs.push_back(holeJson(h));
   j["holes"] = hs;
+  j["denormals_flushed"] = r.denormalsFlushed;
+  json ds = json::array();
+  for (const vf::DenormalFactor& d : r.denormalFactors) ds.push_back(denormalJson(d));
+  j["denormal_factors"] = ds;
   if (mesh)
     j["mesh"] = {{"triangles", mesh->triangles}, {"vertices", mesh->vertices}, {"border_edges", mesh->borderEdges},
                  {"inner_border_edges", mesh->innerBorderEdges}, {"flagged_patch_edges", mesh->flagged.size()}};

@@ -25,6 +25,7 @@ constexpr int kReportVersion = 5;
 json vec3Json(const glm::vec3& v);
 json findingJson(const vf::Finding& f);
 json holeJson(const vf::Hole& h);
+json denormalJson(const vf::DenormalFactor& d); // a denormal hull factor: patch, factor, value, bits, flushed
 json lodJson(const vf::EdgeLod& l);   // one side's LOD record (docs/cli.md)
 json workJson(const vf::WorkStats& w);
 json statsJson(const vf::Stats& s);

@@ -223,6 +223,7 @@ int runSweep(const SweepArgs& a) {
   if (jsonFile) {
     json header = sweepHeaderJson(a, scene, how);
     if (sharded) header["shard"] = {{"index", shardK + 1}, {"count", shardN}};
+    header["denormals_flushed"] = vf::denormalRule(scene, opt).flush; // the rule every camera ran with
     emitJson(sweepJsonBegin(header));
   }
   std::map<size_t, json> pending; // local index -> camera text, waiting for the cameras before it

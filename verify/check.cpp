@@ -3,6 +3,8 @@
 #include "verify/internal.h"
 
 #include <algorithm>
+#include <cfloat>
+#include <cstdio>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -70,6 +72,43 @@ static bool allFinite(const glm::vec3* p, int n) {
   return true;
 }
 
+namespace {
+
+std::string vecText(const glm::vec3& v) {
+  char b[96];
+  std::snprintf(b, sizeof b, "(%g, %g, %g)", double(v.x), double(v.y), double(v.z));
+  return b;
+}
+
+// glm::lookAt in float, as lod::makeCamera runs it: f = normalize(target - eye), s = normalize(cross(f, up)), with
+// normalize(v) = v * inversesqrt(dot(v, v)). Each dot must be a finite normal float (>= 2^-126): below, it underflows
+// (0 or a denormal with few bits) and the view matrix is NaN or meaningless (a view direction of float noise).
+bool lookAtFits(const Camera& c, std::string& error) {
+  const glm::vec3 d = c.target - c.eye;
+  const float dd = glm::dot(d, d);
+  if (!std::isfinite(dd) || !(dd >= FLT_MIN)) {
+    char b[96];
+    std::snprintf(b, sizeof b, "%g", double(dd));
+    error = "camera.target: the view direction target - eye = " + vecText(d) + " (eye " + vecText(c.eye) +
+            ", target " + vecText(c.target) + ") " +
+            (std::isfinite(dd) ? "is too short for float: |target - eye|^2 = " + std::string(b) +
+                                     " is below 2^-126; move camera.target away from camera.eye"
+                               : std::string("overflows float: |target - eye|^2 is not finite"));
+    return false;
+  }
+  const glm::vec3 f = d * (1.0f / std::sqrt(dd));
+  const glm::vec3 x = glm::cross(f, c.up);
+  const float xx = glm::dot(x, x);
+  if (!std::isfinite(xx) || !(xx >= FLT_MIN)) {
+    error = "camera.up: " + vecText(c.up) + " is (nearly) parallel to the view direction target - eye = " + vecText(d) +
+            " in float (|cross|^2 below 2^-126 or not finite)";
+    return false;
+  }
+  return true;
+}
+
+} // namespace
+
 bool validateCamera(const Camera& c, std::string& error) {
   if (!finite(c.eye)) return error = "camera.eye: not finite", false;
   if (!finite(c.target)) return error = "camera.target: not finite", false;
@@ -78,6 +117,7 @@ bool validateCamera(const Camera& c, std::string& error) {
   const double dx = double(c.target.x) - c.eye.x, dy = double(c.target.y) - c.eye.y, dz = double(c.target.z) - c.eye.z;
   const double cx = dy * c.up.z - dz * c.up.y, cy = dz * c.up.x - dx * c.up.z, cz = dx * c.up.y - dy * c.up.x;
   if (cx == 0 && cy == 0 && cz == 0) return error = "camera.up: parallel to the view direction", false;
+  if (!lookAtFits(c, error)) return false;
   if (!(c.fovY > 0 && c.fovY < 180)) return error = "camera.fov_y: must be in (0, 180) degrees", false;
   if (!(c.nearZ > 0) || !std::isfinite(c.nearZ)) return error = "camera.near: must be > 0", false;
   if (!(c.farZ > c.nearZ) || !std::isfinite(c.farZ)) return error = "camera.far: must be > camera.near", false;
@@ -118,6 +158,26 @@ float midpointW(const lod::Camera& cam, const TerrainPatch& p, int e) {
   return -z;
 }
 
+// Every denormal hull factor the source returned (before faults and before any flush): Report::denormalFactors.
+void noteDenormals(const TerrainData& t, const std::vector<lod::PatchLod>& factors, bool flushed, size_t keep,
+                   Report& rep) {
+  rep.denormalsFlushed = flushed;
+  for (size_t i = 0; i < factors.size(); ++i)
+    for (int k = 0; k < 6; ++k) {
+      const float f = factors[i].factors[k];
+      if (std::fpclassify(f) != FP_SUBNORMAL) continue;
+      ++rep.stats.denormalFactors;
+      if (rep.denormalFactors.size() >= keep) continue;
+      DenormalFactor d;
+      d.patch = t.patches[i].ref;
+      d.factor = k;
+      d.value = f;
+      d.bits = bitsOf(f);
+      d.flushed = flushed;
+      rep.denormalFactors.push_back(d);
+    }
+}
+
 } // namespace
 
 Report checkTerrain(const TerrainData& t, const Camera& camera, const CheckOptions& options, EdgeCache& cache) {
@@ -134,6 +194,7 @@ Report checkTerrain(const TerrainData& t, const Camera& camera, const CheckOptio
   std::vector<lod::PatchLod> cpuFactors;                // lod.evaluate = "gpu": the C++ build's, for comparison
   if (!computeFactorsFor(t, camera, options.factors.get(), factors, &cpuFactors, rep.work, rep.error)) return rep;
   const lod::Camera lodCamera = toLodCamera(camera);
+  noteDenormals(t, factors, denormalRule(t.scene, options).flush, options.maxFindings, rep);
   // The GPU path with a C++ reference: every factor whose bits differ (before any fault injection).
   if (!cpuFactors.empty()) {
     for (size_t i = 0; i < n; ++i)
@@ -404,7 +465,7 @@ namespace fftess::verify {
 
 Report checkScene(const Terrain& terrain, const Camera& camera, const CheckOptions& options) {
   const Scene& scene = terrain.scene();
-  detail::EdgeCache cache(scene.partitioning, scene.stage, options.tessellator);
+  detail::EdgeCache cache(scene.partitioning, scene.stage, detail::tessellatorOptions(scene, options));
   return detail::checkTerrain(terrain.data(), camera, options, cache);
 }
 

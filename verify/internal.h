@@ -106,7 +106,17 @@ lod::Camera toLodCamera(const Camera& c);
 // work.lodEvaluations. Constant scheme: every factor lod.factor, an empty record.
 void computeFactors(const TerrainData& t, const Camera& camera, std::vector<lod::PatchLod>& out, WorkStats& work);
 // The scene asks for the GPU path (lod.shader, or lod.evaluate = "gpu").
+// Scene files (scene_content.cpp): the size limit of a scene file and of a lod.shader file; readBounded reads a file
+// whole when it holds at most limit bytes (1), else -1 (larger: read only up to the limit) or 0 (cannot read);
+// hashSceneContent sets Scene::contentHash (false with error: the shader cannot be read or is too large).
+constexpr size_t kMaxSceneBytes = size_t(16) << 20;
+int readBounded(const std::string& path, size_t limit, std::string& out);
+bool hashSceneContent(const std::string& text, const std::vector<std::string>& overrides, Scene& s,
+                      std::string& error);
+
 bool usesGpu(const Scene& s);
+// CheckOptions::tessellator with flushDenormals set by denormalRule (the options every tessellation of a check takes).
+Options tessellatorOptions(const Scene& s, const CheckOptions& options);
 // The factors the check uses: computeFactors, or (usesGpu) the provider's, and then, when cpu is given and
 // lod.scheme is a built-in scheme, the C++ build's into *cpu (not counted in work). False with error when the GPU
 // path is asked for without a provider or the provider fails.

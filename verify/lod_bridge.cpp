@@ -87,6 +87,12 @@ void computeFactors(const TerrainData& t, const Camera& camera, std::vector<lod:
 
 bool usesGpu(const Scene& s) { return !s.lod.shader.empty() || s.lod.evaluate == LodEvaluate::Gpu; }
 
+Options tessellatorOptions(const Scene& s, const CheckOptions& options) {
+  Options o = options.tessellator;
+  o.flushDenormals = denormalRule(s, options).flush;
+  return o;
+}
+
 bool computeFactorsFor(const TerrainData& t, const Camera& camera, FactorProvider* gpu,
                        std::vector<lod::PatchLod>& out, std::vector<lod::PatchLod>* cpu, WorkStats& work,
                        std::string& error) {
@@ -175,6 +181,23 @@ double pixelsAt(const lod::Camera& camera, const glm::vec3& at, double world) {
 } // namespace fftess::verify::detail
 
 namespace fftess::verify {
+
+DenormalRule denormalRule(const Scene& scene, const CheckOptions& options) {
+  DenormalRule r;
+  if (options.flushDenormals != DenormalFlush::Auto) {
+    r.flush = options.flushDenormals == DenormalFlush::On;
+    r.why = std::string("--flush-denormals ") + (r.flush ? "on" : "off");
+  } else if (scene.lod.flushDenormals != DenormalFlush::Auto) {
+    r.flush = scene.lod.flushDenormals == DenormalFlush::On;
+    r.why = std::string("lod.flush_denormals = ") + (r.flush ? "true" : "false");
+  } else if (detail::usesGpu(scene) && options.factors) {
+    r.flush = options.factors->flushesDenormals(&r.why);
+  } else {
+    r.flush = options.tessellator.flushDenormals;
+    r.why = r.flush ? "CheckOptions::tessellator.flushDenormals" : "the D3D11 reference (lod/'s C++ factors)";
+  }
+  return r;
+}
 
 LodPatches::LodPatches(const Terrain& terrain) : t_(&terrain.data()) {}
 size_t LodPatches::size() const { return t_->patches.size(); }

@@ -60,6 +60,7 @@ MeshReport checkSceneMesh(const Terrain& terrain, const Camera& camera, const Ch
   std::vector<std::vector<std::size_t>> polygons;
   std::map<Key, std::vector<std::pair<int, unsigned>>> where; // point -> (patch, edge mask) for edge points
   Tessellator tess;
+  const Options tessOptions = detail::tessellatorOptions(scene, options); // the denormal rule (denormalRule)
   for (size_t i = 0; i < n; ++i) {
     Patch p;
     p.domain = Domain::Quad;
@@ -67,7 +68,7 @@ MeshReport checkSceneMesh(const Terrain& terrain, const Camera& camera, const Ch
     p.primitive = OutputPrimitive::TriangleCw;
     p.stage = scene.stage;
     std::memcpy(p.factors, factors[i].factors, sizeof p.factors);
-    const int count = tess.tessellate(p, options.tessellator);
+    const int count = tess.tessellate(p, tessOptions);
     ++rep.work.fullTessellations;
     if (count == 0) continue;
     drawn[i] = 1;

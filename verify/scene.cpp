@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 #include <sys/stat.h>
@@ -73,17 +74,28 @@ const char* nameOf(const Enum (&table)[N], int v) {
 
 struct Failed {};
 
+constexpr int64_t kMaxTexels = int64_t(8193) * 8193; // a raw heightmap's texels at most
+
+
 // Reads one table, remembering which keys were read so that the rest can be reported as unknown.
 class Reader {
 public:
-  Reader(const std::string& file, const std::set<std::string>& overridden) : file_(file), overridden_(overridden) {}
+  Reader(const std::string& file, const std::map<std::string, std::string>& overridden) : file_(file), overridden_(overridden) {}
 
   std::string error;
 
   [[noreturn]] void fail(const std::string& key, const toml::node* at, const std::string& msg) {
     std::ostringstream os;
+    const std::string* by = nullptr; // an override that made or holds this key: "--set a.b.c=5" for a key "a"
+    for (const auto& [k, given] : overridden_) {
+      const bool below = key.size() > k.size() && key.compare(0, k.size(), k) == 0 && key[k.size()] == '.';
+      const bool above = k.size() > key.size() && k.compare(0, key.size(), key) == 0 && k[key.size()] == '.';
+      if (below || above) by = &given;
+    }
     if (overridden_.count(key)) {
       os << "--set " << key << ": " << msg;
+    } else if (by) {
+      os << "--set " << *by << ": " << key << ": " << msg;
     } else {
       os << file_;
       if (at && at->source().begin) os << ":" << at->source().begin.line << ":" << at->source().begin.column;
@@ -220,7 +232,7 @@ public:
 
 private:
   std::string file_;
-  const std::set<std::string>& overridden_;
+  const std::map<std::string, std::string>& overridden_; // KEY -> the override as given (KEY=VALUE)
 };
 
 void readCamera(Reader& r, const toml::table& t, const std::string& p, Camera& c, bool requireEyeTarget) {
@@ -318,12 +330,28 @@ void readScene(Reader& r, const toml::table& root, Scene& s, const std::string& 
     r.enumeration(t, p, "mip", kMipModes, d.mip);
     if (d.mip != MipMode::None && d.kind == DisplacementKind::None)
       r.fail(p + "mip", t.get("mip"), "needs a displacement texture (displacement.kind is \"none\")");
+    // heightmap_grid: the same cap as the other layouts, from the texture size before the texture is read or made.
+    auto capPatches = [&](int64_t w, int64_t h) {
+      if (s.layout.kind != LayoutKind::HeightmapGrid) return;
+      const int64_t cpp = s.layout.cellsPerPatch, nx = (w - 1) / cpp, nz = (h - 1) / cpp;
+      if (double(nx) * double(nz) <= 4.0e6) return;
+      const toml::table& lt = *root.get("layout")->as_table();
+      r.fail("layout.cells_per_patch", lt.get("cells_per_patch") ? lt.get("cells_per_patch") : &lt,
+             "more than 4 million patches (" + std::to_string(nx) + " x " + std::to_string(nz) + " from the " +
+                 std::to_string(w) + " x " + std::to_string(h) + " heightmap at cells_per_patch = " +
+                 std::to_string(cpp) + ")");
+    };
     if (d.kind == DisplacementKind::Raw) {
       r.string(t, p, "file", d.file, true);
       r.integer(t, p, "width", d.width, 2, 65536);
       r.integer(t, p, "height", d.height, 2, 65536);
       if (!t.get("width")) r.fail(p + "width", &t, "missing key (required for kind = \"raw\")");
       if (!t.get("height")) r.fail(p + "height", &t, "missing key (required for kind = \"raw\")");
+      if (int64_t(d.width) * d.height > kMaxTexels)
+        r.fail(p + "width", t.get("width"),
+               std::to_string(d.width) + " x " + std::to_string(d.height) + " texels: more than " +
+                   std::to_string(kMaxTexels) + " (8193 x 8193; the file is read whole)");
+      capPatches(d.width, d.height);
       std::string path = d.file;
       if (!path.empty() && path[0] != '/') path = baseDir + "/" + path;
       auto texels = std::make_shared<std::vector<float>>();
@@ -337,6 +365,7 @@ void readScene(Reader& r, const toml::table& root, Scene& s, const std::string& 
       for (const char* k : {"file", "width", "height"})
         if (t.get(k)) r.fail(p + k, t.get(k), "only allowed with kind = \"raw\"");
       if (d.kind == DisplacementKind::Fbm || d.kind == DisplacementKind::Ridge) {
+        capPatches(d.resolution, d.resolution);
         auto texels = std::make_shared<std::vector<float>>(detail::generateHeightfield(d));
         detail::applyTexelFormat(d.format, *texels);
         d.texels = texels;
@@ -368,7 +397,8 @@ void readScene(Reader& r, const toml::table& root, Scene& s, const std::string& 
                   {"scheme", "target_pixels", "factor", "min_factor", "max_factor", "min_distance", "max_distance",
                    "min_tess", "max_tess", "angle_correction", "rank", "edges_per_screen_height", "frustum_cull",
                    "displaced_corners", "adjacency_clamp", "reconstruction", "finest_level", "coarsest_level",
-                   "literal_article_weight", "height_bounds", "inside", "inside_from", "shader", "evaluate"});
+                   "literal_article_weight", "height_bounds", "inside", "inside_from", "shader", "evaluate",
+                   "flush_denormals"});
     // lod.shader: the user's shader on the GPU (docs/gpu_lod.md); lod.scheme is then optional ("shader": no C++
     // reference) or a built-in scheme the shader's factors are compared with.
     if (r.string(t, p, "shader", L.shader) && !L.shader.empty()) { // "" = none (--set lod.shader='')
@@ -398,6 +428,14 @@ void readScene(Reader& r, const toml::table& root, Scene& s, const std::string& 
       r.fail(p + "scheme", t.get("scheme"),
              "\"geomorph\" has no GPU path (lod.evaluate = \"gpu\" or lod.shader): its factors need the "
              "neighbours' levels and its domain shader the levels themselves");
+    // lod.flush_denormals: "auto" (the driver's rule on the GPU path), true or false (DenormalFlush).
+    if (const toml::node* at = t.get("flush_denormals")) {
+      if (at->is_boolean()) L.flushDenormals = at->as_boolean()->get() ? DenormalFlush::On : DenormalFlush::Off;
+      else if (at->is_string() && at->as_string()->get() == "auto") L.flushDenormals = DenormalFlush::Auto;
+      else if (at->is_string())
+        r.fail(p + "flush_denormals", at, "unknown value \"" + at->as_string()->get() + "\" (expected \"auto\" | true | false)");
+      else r.fail(p + "flush_denormals", at, std::string("expected \"auto\", true or false, got ") + Reader::typeName(*at));
+    }
     // Keys several schemes share are read once and set in every parameter struct that has the field.
     lod::ScreenSphereParams& sphere = L.screenSphere.sphere;
     if (r.number(t, p, "target_pixels", sphere.tessellatedTriWidth) && !(sphere.tessellatedTriWidth > 0))
@@ -528,7 +566,8 @@ void readScene(Reader& r, const toml::table& root, Scene& s, const std::string& 
 }
 
 // Applies "KEY=VALUE" to the document.
-bool applyOverride(toml::table& root, const std::string& ov, std::set<std::string>& overridden, std::string& error) {
+bool applyOverride(toml::table& root, const std::string& ov, std::map<std::string, std::string>& overridden,
+                   std::string& error) {
   const size_t eq = ov.find('=');
   if (eq == std::string::npos || eq == 0) {
     error = "--set " + ov + ": expected KEY=VALUE";
@@ -579,7 +618,7 @@ bool applyOverride(toml::table& root, const std::string& ov, std::set<std::strin
   } catch (const toml::parse_error&) {
     t->insert_or_assign(parts.back(), value); // a bare word: a string
   }
-  overridden.insert(key);
+  overridden[key] = ov;
   return true;
 }
 
@@ -595,7 +634,7 @@ SceneResult parseImpl(const std::string& text, const std::string& source, const 
     res.error = os.str();
     return res;
   }
-  std::set<std::string> overridden;
+  std::map<std::string, std::string> overridden;
   for (const std::string& ov : overrides)
     if (!applyOverride(root, ov, overridden, res.error)) return res;
   Reader r(source, overridden);
@@ -609,6 +648,7 @@ SceneResult parseImpl(const std::string& text, const std::string& source, const 
     res.error = source + ": " + e.what();
     return res;
   }
+  if (!detail::hashSceneContent(text, overrides, res.scene, res.error)) return res;
   res.ok = true;
   return res;
 }
@@ -643,17 +683,17 @@ SceneResult loadScene(const std::string& path, const std::vector<std::string>& o
     r.error = path + ": is a directory, not a scene file";
     return r;
   }
-  std::ifstream f(path, std::ios::binary);
-  if (!f) {
+  std::string text;
+  const int rc = detail::readBounded(path, detail::kMaxSceneBytes, text);
+  if (rc <= 0) {
     SceneResult r;
-    r.error = path + ": cannot open scene file";
+    r.error = path + (rc < 0 ? ": scene file larger than " + std::to_string(detail::kMaxSceneBytes) + " bytes (16 MiB, the limit)"
+                             : std::string(": cannot open scene file"));
     return r;
   }
-  std::ostringstream ss;
-  ss << f.rdbuf();
   const size_t slash = path.find_last_of('/');
   const std::string dir = slash == std::string::npos ? "." : path.substr(0, slash == 0 ? 1 : slash);
-  return oneLine(parseImpl(ss.str(), path, overrides, dir));
+  return oneLine(parseImpl(text, path, overrides, dir));
 }
 
 const char* toString(Classification c) {

@@ -23,6 +23,7 @@ void accumulate(Stats& s, const Stats& c) {
   s.factorsCompared += c.factorsCompared;
   s.factorDiffs += c.factorDiffs;
   s.factorDiffsTessellation += c.factorDiffsTessellation;
+  s.denormalFactors += c.denormalFactors;
   s.visibilityTests += c.visibilityTests;
   s.worstGapWorld = std::max(s.worstGapWorld, c.worstGapWorld);
   s.worstGapPixels = std::max(s.worstGapPixels, c.worstGapPixels);
@@ -47,7 +48,7 @@ SweepResult sweep(const Terrain& terrain, const std::vector<Camera>& cameras, co
   std::mutex mutex; // serialises the callbacks and the aggregates
   size_t done = 0;
   auto worker = [&]() {
-    detail::EdgeCache cache(scene.partitioning, scene.stage, options.tessellator);
+    detail::EdgeCache cache(scene.partitioning, scene.stage, detail::tessellatorOptions(scene, options));
     CameraResult cr; // reused camera to camera
     for (;;) {
       if (sweepOptions.cancel && sweepOptions.cancel->load()) return;

@@ -160,6 +160,17 @@ enum class HeightBounds : uint8_t {
 // rebuilds the larger neighbour's edge, takes the scheme's own factor of it and halves it; the clamp rounds both
 // sides) on tile rings with more than one ring; "constant" through lod::constantTile.
 
+// What the tessellator does with a denormal hull factor (lod.flush_denormals, CheckOptions::flushDenormals). The
+// D3D11 reference keeps it: a denormal outer factor passes the cull test (x > 0) and the clamp makes it the minimum
+// tessellation. Mesa's llvmpipe flushes it to zero first, so the patch is culled (docs/oracle.md; NVIDIA keeps it,
+// measured on 306,348 patches). Which rule applies: DenormalRule / denormalRule below.
+enum class DenormalFlush : uint8_t {
+  Auto, // "auto" (default): the factor source's rule (the GPU path: the driver's, FactorProvider::flushesDenormals;
+        // lod/'s C++ path: CheckOptions::tessellator.flushDenormals, default false = the D3D11 reference)
+  On,   // true: flushed to zero before the tessellator (a denormal outer factor culls the patch)
+  Off,  // false: kept (the reference)
+};
+
 // Clamp applied where a patch meets a neighbour of a different size (lod.adjacency_clamp = "none" | "integer" |
 // "pow2"; tile rings with size jumps, every scheme but patch_center). See lod.h.
 using AdjacencyClamp = lod::AdjacencyClamp;
@@ -198,6 +209,7 @@ struct Lod {
   LodEvaluate evaluate = LodEvaluate::Cpu; // lod.evaluate
   bool displacedCorners = true;  // lod.displaced_corners: corners raised to their height for the LOD (NVIDIA VS)
   HeightBounds heightBounds = HeightBounds::Global; // lod.height_bounds
+  DenormalFlush flushDenormals = DenormalFlush::Auto; // lod.flush_denormals: "auto" | true | false
 
   static lod::BonaventuraParams sceneBonaventura() {
     lod::BonaventuraParams p;
@@ -266,6 +278,9 @@ struct Scene {
   DomainShader domain;         // [domain]
   Camera camera;               // [camera]
   std::vector<Camera> cameraPath; // [[camera_path]]: each entry a full camera table (missing keys from [camera])
+  // What the verdict depends on, hashed by the loader (sceneContentHash): FNV-1a 64 over the scene text, each
+  // override, the heightmap's texels and the lod.shader file's bytes. Shards of one sweep must agree (fftess merge).
+  uint64_t contentHash = 0;
 };
 
 // Result of loading: either a scene or an error message "file:line:col: key: what is wrong".
@@ -454,6 +469,23 @@ public:
   // Called after each camera whose C++ reference ran (the factor comparison), with its time on the calling thread:
   // for a cost report next to the provider's own. Default: ignored.
   virtual void noteCpuSeconds(double seconds) { (void)seconds; }
+  // The rule of the driver behind these factors for a denormal hull factor in its tessellation stage: true when it
+  // flushes it to zero (a denormal outer factor culls the patch). DenormalFlush::Auto takes it. why: one line saying
+  // what decided it (e.g. the renderer string). Default: false, "the D3D11 reference (the provider states no rule)".
+  virtual bool flushesDenormals(std::string* why = nullptr) const {
+    if (why) *why = "the D3D11 reference (the provider states no rule)";
+    return false;
+  }
+};
+
+// A hull factor the factor source returned as a denormal (nonzero, |x| < 2^-126), before any flush: reported from
+// every source (a GPU's included) whether flushed or not, since drivers differ (DenormalFlush).
+struct DenormalFactor {
+  PatchRef patch;
+  int factor = 0;              // FactorIndex: Ueq0 Veq0 Ueq1 Veq1 insideU insideV
+  float value = 0;
+  uint32_t bits = 0;
+  bool flushed = false;        // the check flushed it to zero (DenormalRule::flush)
 };
 
 // One factor where the GPU's value is not the C++ build's (lod.evaluate = "gpu", or lod.shader with a built-in
@@ -481,7 +513,19 @@ struct CheckOptions {
   // The GPU path: where the scene asks for it (lod.evaluate = "gpu" or lod.shader), the factors come from here.
   // Null there: every camera gets Report::error (verify links no GL; the cli builds it, verify/gpu/gpu_lod.h).
   std::shared_ptr<FactorProvider> factors;
+  // Denormal hull factors (--flush-denormals on|off|auto): On/Off override the scene's lod.flush_denormals and the
+  // driver's rule (denormalRule). tessellator.flushDenormals is the rule of lod/'s C++ path under Auto.
+  DenormalFlush flushDenormals = DenormalFlush::Auto;
 };
+
+// The denormal rule one check runs with, and where it came from: the first that is not Auto of
+// CheckOptions::flushDenormals ("--flush-denormals"), lod.flush_denormals ("lod.flush_denormals"); else the driver's
+// (FactorProvider::flushesDenormals, on the GPU path with a provider) or CheckOptions::tessellator.flushDenormals.
+struct DenormalRule {
+  bool flush = false;
+  std::string why; // e.g. "--flush-denormals on", "the driver: llvmpipe (...) flushes denormal factors"
+};
+DenormalRule denormalRule(const Scene& scene, const CheckOptions& options);
 
 enum class Classification : uint8_t {
   Match,      // every vertex on one side coincides exactly with a vertex on the other, in order, endpoints included
@@ -603,6 +647,7 @@ struct Stats {
   int64_t factorsCompared = 0;
   int64_t factorDiffs = 0;
   int64_t factorDiffsTessellation = 0;
+  int64_t denormalFactors = 0; // hull factors the source returned as denormals (DenormalFactor), flushed or not
 };
 
 struct Report {
@@ -610,6 +655,8 @@ struct Report {
   std::vector<Finding> findings; // non-matching pairs (and matches with keepMatches), in layout order
   std::vector<Hole> holes;       // holes, in layout order (at most maxFindings; Stats::holes counts all)
   std::vector<FactorDiff> factorDiffs; // GPU vs C++ build, in layout order (at most maxFindings; Stats counts all)
+  std::vector<DenormalFactor> denormalFactors; // in layout order (at most maxFindings; Stats counts all)
+  bool denormalsFlushed = false; // the rule this camera ran with (denormalRule)
   bool truncated = false;        // more findings than maxFindings
   Stats stats;
   WorkStats work;                // this camera's work (camera-dependent only; see Terrain::stats())

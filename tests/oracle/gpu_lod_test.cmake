@@ -5,6 +5,11 @@
 #   CASE=hlsl     the same for docs/examples/gpu_sphere_hlsl.toml (HLSL through glslangValidator and spirv-cross)
 #   CASE=builtin  lod.evaluate = "gpu" for distance_pow2 and screen_sphere: the GPU build's factors checked, the
 #                 differences from the C++ build counted
+#   CASE=denormal tests/oracle/data/gpu_lod/denormal.toml: a shader returning denormal outer factors (1e-40) for one
+#                 patch. On llvmpipe (which flushes them, docs/oracle.md) `check` reports the hole (exit 1, the patch
+#                 and the factor's bits named, and the denormal lines); --flush-denormals=off and
+#                 lod.flush_denormals = false give the reference's rule (watertight, exit 0, the denormals still
+#                 listed); a sweep's JSON lists them in the stats. On another renderer: only the report is checked.
 #   CASE=bad      bad shaders (tests/oracle/data/gpu_lod): compile error -> exit 2 naming FILE:LINE; no lodMain and a
 #                 wrong signature -> exit 2 with a clear message; a shader yielding NaN -> holes (exit 1)
 # No OpenGL context, or (hlsl) no glslangValidator / spirv-cross: a visible skip ("GPU-LOD-SKIPPED"), a failure when
@@ -117,6 +122,37 @@ elseif(CASE STREQUAL "bad")
     skip("HLSL cases: glslangValidator or spirv-cross not found")
   endif()
   message("gpu_lod_bad: compile errors with file and line, no entry point, wrong signature, NaN -> holes: as expected")
+elseif(CASE STREQUAL "denormal")
+  set(scene ${data}/denormal.toml)
+  execute_process(COMMAND ${FFTESS} check ${scene} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(err MATCHES "no OpenGL context for the GPU LOD")
+    skip("${err}")
+    return()
+  endif()
+  if(NOT out MATCHES "GPU LOD +lod.shader [^\n]* on ([^\n]*)")
+    message(FATAL_ERROR "gpu_lod_denormal: no GPU LOD section (exit ${rc}): ${err}\n${out}")
+  endif()
+  set(renderer "${CMAKE_MATCH_1}")
+  if(NOT out MATCHES "denormal   camera #0 ring 0 tile 0 patch 36 Ueq0 9.99995e-41 \\(0x000116c2\\)")
+    message(FATAL_ERROR "gpu_lod_denormal: the denormal factor of patch 36 is not reported:\n${out}")
+  endif()
+  if(renderer MATCHES "llvmpipe")
+    if(NOT rc EQUAL 1 OR NOT out MATCHES "hole       ring 0 tile 0 patch 36: discarded by the tessellator: Ueq0 factor 9.99995e-41 \\(0x000116C2, denormal, flushed to zero\\)"
+       OR NOT out MATCHES "verdict: HOLES")
+      message(FATAL_ERROR "gpu_lod_denormal: llvmpipe flushes denormals: expected the hole at patch 36, exit 1; got ${rc}:\n${out}")
+    endif()
+  endif()
+  foreach(rule "--flush-denormals=off" "--set=lod.flush_denormals=false")
+    execute_process(COMMAND ${FFTESS} check ${scene} ${rule} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+    if(NOT rc EQUAL 0 OR NOT out MATCHES "verdict: watertight" OR NOT out MATCHES "4 hull factors are denormal; kept")
+      message(FATAL_ERROR "gpu_lod_denormal: ${rule}: expected watertight (exit 0) with the denormals listed; got ${rc}: ${err}\n${out}")
+    endif()
+  endforeach()
+  execute_process(COMMAND ${FFTESS} check ${scene} --flush-denormals RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 1 OR NOT out MATCHES "patch 36: discarded by the tessellator")
+    message(FATAL_ERROR "gpu_lod_denormal: --flush-denormals (on): expected the hole, exit 1; got ${rc}:\n${out}")
+  endif()
+  message("gpu_lod_denormal: ${renderer}: the denormal patch reported; flushed -> hole (exit 1), kept -> watertight")
 else()
   message(FATAL_ERROR "gpu_lod_test.cmake: unknown CASE '${CASE}'")
 endif()

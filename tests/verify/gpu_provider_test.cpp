@@ -110,3 +110,116 @@ TEST_CASE("gpu path: a stand-in provider's factors are checked and compared with
   CHECK(nan.stats.holesDiscarded > 0);
   CHECK(nan.stats.holesDiscarded + ref.stats.culledPatches <= ref.stats.patches);
 }
+
+namespace {
+
+// A flat grid's factors (constant 4) with one patch's outer factors denormal, and the driver's rule as a provider
+// states it (FactorProvider::flushesDenormals).
+struct DenormalStandIn : FactorProvider {
+  int patch = -1;
+  bool driverFlushes = false;
+  bool evaluate(const LodPatches& patches, const fftess::lod::Camera&, std::vector<fftess::lod::PatchLod>& out,
+                std::string&) override {
+    out.assign(patches.size(), fftess::lod::PatchLod{});
+    for (fftess::lod::PatchLod& l : out)
+      for (float& f : l.factors) f = 4.0f;
+    uint32_t bits = 0x000116C2u; // 1e-40
+    float denormal;
+    std::memcpy(&denormal, &bits, 4);
+    for (int e = 0; e < 4; ++e) out[static_cast<size_t>(patch)].factors[e] = denormal;
+    return true;
+  }
+  bool flushesDenormals(std::string* why) const override {
+    if (why) *why = driverFlushes ? "stand-in driver: flushes" : "stand-in driver: keeps";
+    return driverFlushes;
+  }
+};
+
+} // namespace
+
+TEST_CASE("gpu path: denormal factors take the driver's rule, overridable, and are reported either way", "[gpu_lod]") {
+  // Flat (no displacement): with the denormal kept, the patch is drawn at the minimum (1 segment per outer edge, a
+  // T-junction or crack against the neighbours' 4); flushed, it is discarded: a hole where the camera sees it.
+  const std::vector<std::string> flat{"lod.scheme=constant", "lod.evaluate=gpu", "displacement.kind=none",
+                                      "tessellation.partitioning=integer", "camera.eye=[2.0,30.0,-20.0]",
+                                      "camera.target=[2.0,0.0,2.0]"};
+  const Scene scene = loadExample("grid.toml", flat);
+  const Terrain terrain = prepared(scene);
+  auto p = std::make_shared<DenormalStandIn>();
+  for (int i = 0; i < terrain.patchCount() && p->patch < 0; ++i) {
+    const LodInput in = LodPatches(terrain)[static_cast<size_t>(i)];
+    if (in.patch.corners[0].x == 0.0f && in.patch.corners[0].z == 0.0f) p->patch = i;
+  }
+  REQUIRE(p->patch >= 0);
+  CheckOptions o;
+  o.factors = p;
+  o.maxFindings = 100000;
+  auto run = [&](const Terrain& t, bool driverFlushes, DenormalFlush cli) {
+    p->driverFlushes = driverFlushes;
+    o.flushDenormals = cli;
+    Report r = checkScene(t, scene.camera, o);
+    REQUIRE(r.error.empty());
+    // Reported whether flushed or not: patch, factor, bits.
+    CHECK(r.stats.denormalFactors == 4);
+    REQUIRE(r.denormalFactors.size() == 4);
+    for (int e = 0; e < 4; ++e) {
+      CHECK(r.denormalFactors[static_cast<size_t>(e)].patch.index == p->patch);
+      CHECK(r.denormalFactors[static_cast<size_t>(e)].factor == e);
+      CHECK(r.denormalFactors[static_cast<size_t>(e)].bits == 0x000116C2u);
+      CHECK(r.denormalFactors[static_cast<size_t>(e)].flushed == r.denormalsFlushed);
+    }
+    return r;
+  };
+  auto hasHoleAt = [&](const Report& r) {
+    for (const Hole& h : r.holes)
+      if (h.patch.index == p->patch && h.kind == HoleKind::Discarded && h.hullFactorBits == 0x000116C2u) return true;
+    return false;
+  };
+  // Auto: the driver decides.
+  Report flushed = run(terrain, true, DenormalFlush::Auto);
+  CHECK(flushed.denormalsFlushed);
+  CHECK(flushed.stats.holesDiscarded == 1);
+  CHECK(hasHoleAt(flushed));
+  CHECK(verdictOf(flushed.stats) != Verdict::Watertight);
+  Report kept = run(terrain, false, DenormalFlush::Auto);
+  CHECK_FALSE(kept.denormalsFlushed);
+  CHECK(kept.stats.holes == 0);
+  CHECK(kept.stats.culledPatches == 0);
+  CHECK(denormalRule(scene, o).why == "stand-in driver: keeps");
+  // --flush-denormals on|off overrides the driver.
+  CHECK(hasHoleAt(run(terrain, false, DenormalFlush::On)));
+  CHECK(run(terrain, true, DenormalFlush::Off).stats.holes == 0);
+  // The whole-mesh check tessellates with the same rule: one patch fewer drawn when flushed.
+  p->driverFlushes = true;
+  o.flushDenormals = DenormalFlush::Auto;
+  const MeshReport meshFlushed = checkSceneMesh(terrain, scene.camera, o);
+  p->driverFlushes = false;
+  const MeshReport meshKept = checkSceneMesh(terrain, scene.camera, o);
+  CHECK(meshFlushed.patchesDrawn + 1 == meshKept.patchesDrawn);
+  // The scene key overrides the driver; the command line overrides the scene key.
+  std::vector<std::string> keyOn = flat;
+  keyOn.push_back("lod.flush_denormals=true");
+  const Scene sceneOn = loadExample("grid.toml", keyOn);
+  const Terrain terrainOn = prepared(sceneOn);
+  CHECK(sceneOn.lod.flushDenormals == DenormalFlush::On);
+  CHECK(hasHoleAt(run(terrainOn, false, DenormalFlush::Auto)));
+  CHECK(run(terrainOn, false, DenormalFlush::Off).stats.holes == 0);
+  CHECK(denormalRule(sceneOn, o).why == "--flush-denormals off");
+  o.flushDenormals = DenormalFlush::Auto;
+  CHECK(denormalRule(sceneOn, o).why == "lod.flush_denormals = true");
+}
+
+TEST_CASE("lod.flush_denormals: \"auto\", true or false, anything else named with its position", "[gpu_lod]") {
+  CHECK(loadExample("grid.toml").lod.flushDenormals == DenormalFlush::Auto);
+  CHECK(loadExample("grid.toml", {"lod.flush_denormals=false"}).lod.flushDenormals == DenormalFlush::Off);
+  CHECK(loadExample("grid.toml", {"lod.flush_denormals=\"auto\""}).lod.flushDenormals == DenormalFlush::Auto);
+  CHECK_THAT(loadScene(examplePath("grid.toml"), {"lod.flush_denormals=yes"}).error,
+             Catch::Contains("--set lod.flush_denormals: unknown value \"yes\" (expected \"auto\" | true | false)"));
+  CHECK_THAT(loadScene(examplePath("grid.toml"), {"lod.flush_denormals=1"}).error,
+             Catch::Contains("--set lod.flush_denormals: expected \"auto\", true or false, got an integer"));
+  const SceneResult r = parseScene("[layout]\nkind = \"grid\"\n[lod]\nscheme = \"constant\"\nflush_denormals = 0.5\n"
+                                   "[tessellation]\npartitioning = \"integer\"\n[camera]\neye = [0.0, 10.0, -10.0]\n"
+                                   "target = [0.0, 0.0, 0.0]\n",
+                                   "x.toml");
+  CHECK_THAT(r.error, Catch::Contains("x.toml:5:19: lod.flush_denormals: expected \"auto\", true or false, got a float"));
+}

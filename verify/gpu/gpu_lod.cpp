@@ -501,6 +501,24 @@ void GpuLodProvider::noteCpuSeconds(double seconds) {
   ++impl_->cpuCameras;
   impl_->cpuSeconds += seconds;
 }
+bool flushesDenormalsFor(const std::string& renderer, std::string* why) {
+  bool flush = true;
+  std::string w;
+  if (renderer.find("llvmpipe") != std::string::npos) {
+    w = "the driver: " + renderer + " flushes denormal factors (measured, docs/oracle.md)";
+  } else if (renderer.find("NVIDIA") != std::string::npos) {
+    flush = false;
+    w = "the driver: " + renderer + " keeps denormal factors like the D3D11 reference (NVIDIA measured, docs/oracle.md)";
+  } else {
+    w = "the driver: " + renderer + " is not measured; assumed to flush denormal factors (--flush-denormals=off for "
+        "the other rule)";
+  }
+  if (why) *why = w;
+  return flush;
+}
+
+bool GpuLodProvider::flushesDenormals(std::string* why) const { return flushesDenormalsFor(impl_->ctx.renderer(), why); }
+
 int64_t GpuLodProvider::cpuCameras() const { return impl_->cpuCameras; }
 double GpuLodProvider::cpuSeconds() const { return impl_->cpuSeconds; }
 const std::string& GpuLodProvider::renderer() const { return impl_->ctx.renderer(); }

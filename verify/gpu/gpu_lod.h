@@ -32,6 +32,13 @@ enum class GpuLodError : uint8_t {
 
 class GpuLodProvider;
 
+// Whether a driver flushes denormal hull factors to zero in its tessellation stage, by its GL_RENDERER string, and
+// why (one line). Measured: Mesa's llvmpipe flushes (a denormal outer factor culls the patch; docs/oracle.md,
+// `fftess driver-check`); NVIDIA keeps them like the D3D11 reference (306,348 patches, docs/oracle.md). Any other
+// renderer is not measured and is assumed to flush: then a denormal outer factor culls the patch and the check reports
+// the hole where it is in view (--flush-denormals=off or lod.flush_denormals = false checks the other rule).
+bool flushesDenormalsFor(const std::string& renderer, std::string* why = nullptr);
+
 // Compiles the scene's GPU LOD for this terrain (patches.scene(): lod.shader or lod.scheme with lod.evaluate =
 // "gpu"). Null with error and kind set on failure; error names the file and line for a shader error, as the
 // driver's or glslang's log gives it.
@@ -45,6 +52,8 @@ public:
                 std::string& error) override;
 
   void noteCpuSeconds(double seconds) override;
+  // The driver's denormal rule, from GL_RENDERER (flushesDenormalsFor).
+  bool flushesDenormals(std::string* why = nullptr) const override;
   // The C++ reference of the same cameras (verify's computeFactors, one thread each): cameras and seconds.
   int64_t cpuCameras() const;
   double cpuSeconds() const;

@@ -1,0 +1,82 @@
+// Scene contents: files read with a size limit, and Scene::contentHash (FNV-1a 64 of what the verdict depends on).
+// docs/verify.md, Scene format (Limits, Scene::contentHash).
+#include "verify/internal.h"
+
+#include <cstring>
+#include <fstream>
+
+namespace fftess::verify::detail {
+
+namespace {
+
+// FNV-1a 64 (offset basis 0xcbf29ce484222325, prime 0x100000001b3), byte by byte.
+struct Fnv1a64 {
+  uint64_t h = 0xcbf29ce484222325ull;
+  void add(const void* data, size_t n) {
+    const unsigned char* b = static_cast<const unsigned char*>(data);
+    for (size_t i = 0; i < n; ++i) h = (h ^ b[i]) * 0x100000001b3ull;
+  }
+  void add(const std::string& s) { add(s.data(), s.size()); }
+  void tag(unsigned char t, uint64_t size) { // a separator: the tag byte, then the part's size (8 bytes, little endian)
+    add(&t, 1);
+    for (int i = 0; i < 8; ++i) {
+      const unsigned char c = static_cast<unsigned char>(size >> (8 * i));
+      add(&c, 1);
+    }
+  }
+};
+
+} // namespace
+
+// Reads path whole when it holds at most limit bytes (any kind of file: a FIFO or /dev/zero is read only up to the
+// limit). 1: read; 0: cannot open or read; -1: larger than limit.
+int readBounded(const std::string& path, size_t limit, std::string& out) {
+  std::ifstream f(path, std::ios::binary);
+  if (!f) return 0;
+  out.clear();
+  char buf[65536];
+  while (f) {
+    f.read(buf, sizeof buf);
+    const size_t got = static_cast<size_t>(f.gcount());
+    if (out.size() + got > limit) return -1;
+    out.append(buf, got);
+  }
+  return f.bad() ? 0 : 1;
+}
+
+// Scene::contentHash: the text, each override, the raw heightmap's texels (after displacement.format) and the
+// lod.shader file, each part after a tag byte and its size (Fnv1a64::tag). False with error: the shader cannot be
+// read (it was there when the key was read) or is larger than kMaxSceneBytes.
+bool hashSceneContent(const std::string& text, const std::vector<std::string>& overrides, Scene& s, std::string& error) {
+  Fnv1a64 h;
+  h.tag(0, text.size());
+  h.add(text);
+  for (const std::string& o : overrides) {
+    h.tag(1, o.size());
+    h.add(o);
+  }
+  if (s.displacement.kind == DisplacementKind::Raw && s.displacement.texels) {
+    const std::vector<float>& t = *s.displacement.texels;
+    h.tag(2, t.size() * sizeof(float));
+    for (float x : t) {
+      uint32_t b;
+      std::memcpy(&b, &x, sizeof b);
+      h.add(&b, sizeof b); // host order (little endian on every target fftess builds for)
+    }
+  }
+  if (!s.lod.shader.empty()) {
+    std::string bytes;
+    const int rc = readBounded(s.lod.shader, kMaxSceneBytes, bytes);
+    if (rc <= 0) {
+      error = "lod.shader: " + s.lod.shader + (rc < 0 ? ": larger than " + std::to_string(kMaxSceneBytes) + " bytes"
+                                                       : std::string(": cannot read the shader"));
+      return false;
+    }
+    h.tag(3, bytes.size());
+    h.add(bytes);
+  }
+  s.contentHash = h.h;
+  return true;
+}
+
+} // namespace fftess::verify::detail
