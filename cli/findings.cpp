@@ -212,18 +212,17 @@ std::string offScreenWords(const vf::Stats& s, bool countOffScreen, bool explain
   if (s.tJunctionsOffScreen > 0)
     what += (what.empty() ? "" : " and ") + std::to_string(s.tJunctionsOffScreen) +
             (s.tJunctionsOffScreen == 1 ? " T-junction" : " T-junctions");
-  if (countOffScreen) return what + " off screen, counted (--offscreen)";
+  if (countOffScreen) return what + " off screen, counted: --offscreen";
   if (!explain) return what + " off screen, not counted";
   return what + " off screen, not counted: the factors that made them belong to their camera, so no other camera sees "
                 "them either (--offscreen counts them)";
 }
 
-// "N" or "N (M off screen, not counted)" / "(M off screen, counted)".
+// "N", "N - M on screen (+ M off screen, not counted)" or (countOffScreen) "N (M of them off screen, counted: ...)".
 static std::string countText(int64_t all, int64_t off, bool countOffScreen) {
   if (off == 0) return std::to_string(all);
-  return std::to_string(countOffScreen ? all : all - off) + " on screen" +
-         (countOffScreen ? " + " + std::to_string(off) + " off screen, counted (--offscreen)"
-                         : " (+ " + std::to_string(off) + " off screen, not counted)");
+  if (countOffScreen) return std::to_string(all) + " (" + std::to_string(off) + " of them off screen, counted: --offscreen)";
+  return std::to_string(all - off) + " on screen (+ " + std::to_string(off) + " off screen, not counted)";
 }
 
 std::string statsText(const vf::Stats& s, bool countOffScreen) {

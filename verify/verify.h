@@ -537,18 +537,21 @@ struct Finding {
   double gapPixels = 0;
   glm::vec3 gapVertex{};
   int gapSide = 0;             // 0: the vertex is on side a, 1: on side b
-  // On screen (docs/verify.md, "On screen"): false only when the finding is proven outside the view frustum (the box
-  // of all its vertices lies outside one frustum plane, near and far included). Matches: true.
+  // On screen (docs/verify.md, "On screen"): false only when the finding is proven outside the view frustum (near
+  // and far planes included): every triangle of a strip zipped between its two sides has its box outside one plane.
+  // Occlusion by other terrain is not considered. Matches: true.
   bool onScreen = true;
-  // Crack on screen: the worst gap over its off-polyline vertices whose neighbourhood (the vertex, its neighbours on
-  // its own side, the nearest segment of the other side) is not proven off screen; a crack whose every such
-  // neighbourhood is off screen (but not the whole finding) keeps gapWorld there. Pixels at the vertex's depth, but
-  // never nearer than camera.near (what is nearer is clipped): onScreenGapWorld * projection[1][1] * viewport.y / 2
-  // / max(depth, near). Off-screen crack, T-junction, match: 0.
+  // Crack on screen: the widest the gap is where the camera may see it: the largest of (1) the distance of each
+  // off-polyline vertex whose gap segment (to the nearest point of the other side) is not proven off screen (exact
+  // as gapWorld) and (2) the width (double) where either side's edge crosses the frustum's boundary; when neither
+  // exists (no part of either edge in view, but the strip may be), gapWorld at gapVertex. onScreenGapVertex: where it
+  // was measured (a vertex, or a point where an edge leaves the view). Pixels there, but never nearer than the near
+  // plane: onScreenGapWorld * projection[1][1] * viewport.y / 2 / max(depth, camera.near). Off screen, T-junction,
+  // match: 0.
   double onScreenGapWorld = 0;
   double onScreenGapPixels = 0;
   glm::vec3 onScreenGapVertex{};
-  int onScreenGapSide = 0;     // 0: side a, 1: side b
+  int onScreenGapSide = 0;     // 0: measured on side a, 1: on side b
 };
 
 // The LOD's record of one side in words: the fix names (lod::fixName, in bit order), then the neighbour rule

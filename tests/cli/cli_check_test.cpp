@@ -25,6 +25,11 @@ void checkStatsShape(const json& s) {
   CHECK(s.at("worst_gap_pixels").is_number());
   CHECK(s.at("edges_checked").get<int64_t>() ==
         s.at("matches").get<int64_t>() + s.at("t_junctions").get<int64_t>() + s.at("cracks").get<int64_t>());
+  // On screen or not (docs/cli.md): the off-screen part of the counts, the on-screen worst gaps.
+  CHECK(s.at("cracks_off_screen").get<int64_t>() <= s.at("cracks").get<int64_t>());
+  CHECK(s.at("t_junctions_off_screen").get<int64_t>() <= s.at("t_junctions").get<int64_t>());
+  CHECK(s.at("worst_gap_world_on_screen").is_number());
+  CHECK(s.at("worst_gap_pixels_on_screen").is_number());
 }
 
 void checkFindingShape(const json& f) {
@@ -52,6 +57,9 @@ void checkFindingShape(const json& f) {
   }
   CHECK(f.at("gap_world").is_number());
   CHECK(f.at("gap_vertex").size() == 3);
+  CHECK(f.at("on_screen").is_boolean());
+  CHECK(f.at("on_screen_gap_world").is_number());
+  CHECK(f.at("on_screen_gap_vertex").size() == 3);
 }
 
 // A finding's cause key in a sweep's cause table: findings off screen are tallied apart ("crack (off screen): ...")
