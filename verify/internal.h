@@ -236,8 +236,9 @@ public:
   // The point is strictly inside the frustum.
   bool inside(const glm::vec3& p) const;
   // On screen or not (docs/verify.md, "On screen"): the box [lo, hi] lies outside one frustum plane by more than the
-  // float rounding of a GPU's clip coordinates could undo (2^-16 of the sum of the magnitudes of the plane's terms at
-  // the box corner tested). Conservative: false whenever a point of the box may be on screen.
+  // float rounding of a GPU's clip coordinates could undo (2^-16 of a bound on the magnitudes of the plane's terms
+  // over the box). Conservative: false whenever a point of the box may be on screen. Monotone: true for a box also
+  // holds for every box inside it.
   bool boxOffScreen(const glm::dvec3& lo, const glm::dvec3& hi) const;
   // The part [t0, t1] (within the given [t0, t1]) of the segment p + t (q - p) inside the frustum's six planes
   // (double, no margin). False: no part of it is inside.

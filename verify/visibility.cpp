@@ -33,11 +33,13 @@ bool FrustumTest::boxOutside(const glm::dvec3& lo, const glm::dvec3& hi) const {
   return false;
 }
 
-// The same planes; a box counts as outside a plane only by a margin: at the corner p tested, the plane's value
+// The same planes; a box counts as outside a plane only by a margin: at the corner tested, the plane's value
 // (w +- x, w +- y, w +- z of the clip matrix's rows) must be below -2^-16 * sum over c of (|m[3][c]| + |m[k][c]|) *
-// |p_c| (p_3 = 1): the magnitudes a GPU's float clip coordinates w and x (y, z) are rounded relative to (view, then
-// projection: a few roundings of 2^-24 each). The margin is 2^8 times that, so nothing a GPU may draw is called off
-// screen. The clip matrix itself is the double product of lod's float matrices (as boxOutside).
+// M_c, M_c = max(|lo_c|, |hi_c|) (M_3 = 1): a bound on the magnitudes a GPU's float clip coordinates w and x (y, z)
+// of any point of the box are rounded relative to (view, then projection: a few roundings of 2^-24 each). The margin
+// is 2^8 times that, so nothing a GPU may draw is called off screen. Monotone: a box inside a box proven off screen
+// is proven off screen (its value is no larger, its margin no larger). The clip matrix itself is the double product
+// of lod's float matrices (as boxOutside).
 bool FrustumTest::boxOffScreen(const glm::dvec3& lo, const glm::dvec3& hi) const {
   static constexpr int kRow[6] = {0, 0, 1, 1, 2, 2};
   static constexpr double kSign[6] = {1, -1, 1, -1, 1, -1};
@@ -46,7 +48,8 @@ bool FrustumTest::boxOffScreen(const glm::dvec3& lo, const glm::dvec3& hi) const
     for (int c = 0; c < 4; ++c) n[c] = m_[3][c] + kSign[p] * m_[kRow[p]][c];
     const double x = n[0] >= 0 ? hi.x : lo.x, y = n[1] >= 0 ? hi.y : lo.y, z = n[2] >= 0 ? hi.z : lo.z;
     const double value = n[0] * x + n[1] * y + n[2] * z + n[3];
-    const double at[4] = {std::fabs(x), std::fabs(y), std::fabs(z), 1};
+    const double at[4] = {std::fmax(std::fabs(lo.x), std::fabs(hi.x)), std::fmax(std::fabs(lo.y), std::fabs(hi.y)),
+                          std::fmax(std::fabs(lo.z), std::fabs(hi.z)), 1};
     double scale = 0;
     for (int c = 0; c < 4; ++c) scale += (std::fabs(m_[3][c]) + std::fabs(m_[kRow[p]][c])) * at[c];
     if (value < -0x1p-16 * scale) return true;
