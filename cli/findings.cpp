@@ -137,7 +137,7 @@ std::string findingLine(const vf::Finding& f) {
     if (!f.onScreen || same) gap = gapText("gap", f.gapWorld, f.gapPixels, f.gapVertex);
     else
       gap = gapText("gap on screen", f.onScreenGapWorld, f.onScreenGapPixels, f.onScreenGapVertex) +
-            gapText("farthest vertex (off screen)", f.gapWorld, f.gapPixels, f.gapVertex);
+            gapText("farthest vertex of all", f.gapWorld, f.gapPixels, f.gapVertex);
   }
   const bool crack = f.classification == vf::Classification::Crack;
   return std::string(crack ? "crack      " : "t_junction ") + (f.onScreen ? "" : "(off screen) ") +
@@ -239,7 +239,8 @@ std::string statsText(const vf::Stats& s, bool countOffScreen) {
     o += "  not decided    " + std::to_string(s.culledUndecided) +
          " culled patches touch the view frustum's box test but no grid point is in view (not reported)\n";
   const int64_t counted = countOffScreen ? s.cracks : s.cracksOnScreen();
-  const bool differ = s.worstGapWorld != s.worstGapWorldOnScreen || s.worstGapPixels != s.worstGapPixelsOnScreen;
+  const bool differ = fmtWorld(s.worstGapWorld) != fmtWorld(s.worstGapWorldOnScreen) ||
+                      fmtWorld(s.worstGapPixels) != fmtWorld(s.worstGapPixelsOnScreen); // as printed
   if (counted > 0)
     o += "  worst gap      " + fmtWorld(countedGapWorld(s, countOffScreen)) + " world units, " +
          fmtWorld(countedGapPixels(s, countOffScreen)) + " pixels" +

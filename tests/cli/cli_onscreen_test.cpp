@@ -76,6 +76,8 @@ TEST_CASE("check: the worst gap is the worst on screen, off-screen cracks counte
   for (const json& f : j.at("findings")) off += !f.at("on_screen").get<bool>();
   CHECK(off == 88);
   const std::string picture = clitest::readFile(svg);
+  std::string why;
+  CHECK(clitest::wellFormedXml(picture, why));
   CHECK(picture.find("class=\"off\"") != std::string::npos); // off-screen findings drawn apart
   CHECK(picture.find("88 off screen (grey, dashed: not counted)") != std::string::npos);
 
@@ -95,8 +97,14 @@ TEST_CASE("check and sweep: cracks only off screen are not counted, --offscreen 
   CHECK(lineOf(r.out, "verdict:").find("cracks off screen, not counted") != std::string::npos);
   CHECK(run({"check", sky, "--path-camera", "0", "--offscreen"}).status == 1);
 
-  r = run({"sweep", sky, "-j", "1"});
+  const std::string sweepSvg = clitest::tmpDir() + "/sky-sweep.svg";
+  r = run({"sweep", sky, "-j", "1", "--svg", sweepSvg});
   CHECK(r.status == 0);
+  std::string why;
+  const std::string picture = clitest::readFile(sweepSvg);
+  CHECK(clitest::wellFormedXml(picture, why));
+  CHECK(picture.find("class=\"ok\"") != std::string::npos); // both cameras green: nothing they see is cracked
+  CHECK(picture.find("class=\"bad\"") == std::string::npos);
   CHECK(lineOf(r.out, "verdict:").rfind("verdict: WATERTIGHT from all 2 cameras (", 0) == 0);
   CHECK(run({"sweep", sky, "-j", "1", "--offscreen"}).status == 1);
 
