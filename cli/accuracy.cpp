@@ -174,7 +174,9 @@ void runRow(Row& row, const BenchReportArgs& a, const std::vector<vf::Camera>& c
   }
   row.cameras = n;
   row.stats = sum.total;
-  row.verdict = row.spec.mesh ? (row.findings.empty() ? "no inner border" : "inner borders") : vf::toString(vf::verdictOf(sum));
+  // Every finding counts, on screen or not: the rows compare checkers finding for finding (the mesh row has no view).
+  row.verdict = row.spec.mesh ? (row.findings.empty() ? "no inner border" : "inner borders")
+                              : vf::toString(vf::verdictOf(sum, /*countOffScreen=*/true));
 }
 
 // The mesh row's findings are patch edges: compare with the reference's findings as patch edges (both sides).

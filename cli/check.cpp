@@ -60,7 +60,7 @@ int runCheck(const CheckArgs& a) {
                   static_cast<double>(cam.eye.y), static_cast<double>(cam.eye.z), static_cast<double>(cam.target.x),
                   static_cast<double>(cam.target.y), static_cast<double>(cam.target.z), cam.width, cam.height);
     text += buf;
-    text += statsText(r.stats);
+    text += statsText(r.stats, a.offscreen);
     {
       FactorDiffTally gpuDiffs; // lod.evaluate = "gpu" / lod.shader (cli/gpu_lod.h)
       gpuDiffs.add(0, full);
@@ -71,10 +71,17 @@ int runCheck(const CheckArgs& a) {
       if (shown++ >= a.show) break;
       text += holeLine(h) + "\n";
     }
-    for (const vf::Finding& f : r.findings) {
-      if (f.classification == vf::Classification::Match) continue;
-      if (shown++ >= a.show) break;
-      text += findingLine(f) + "\n";
+    // The findings on screen first, then those off screen (apart: not counted unless --offscreen).
+    for (const bool onScreen : {true, false}) {
+      bool header = onScreen;
+      for (const vf::Finding& f : r.findings) {
+        if (f.classification == vf::Classification::Match || f.onScreen != onScreen) continue;
+        if (shown++ >= a.show) break;
+        if (!header)
+          text += std::string("  off screen") + (a.offscreen ? " (counted, --offscreen):" : ", not counted:") + "\n";
+        header = true;
+        text += findingLine(f) + "\n";
+      }
     }
     const int64_t nonMatch = r.stats.cracks + r.stats.tJunctions + r.stats.holes;
     if (shown > a.show || nonMatch > a.show)
@@ -90,7 +97,7 @@ int runCheck(const CheckArgs& a) {
               " patch edges: " + (agree ? "agrees with the edge check" : "DISAGREES with the edge check") + "\n";
     if (!agree) throw std::runtime_error("whole-mesh check and edge check disagree (a verifier bug)");
   }
-  const vf::Verdict verdict = vf::verdictOf(r.stats);
+  const vf::Verdict verdict = vf::verdictOf(r.stats, a.offscreen);
   const int status = verdictStatus(a, verdict);
   if (!a.quiet && !jsonToStdout) {
     std::string words;
@@ -104,11 +111,12 @@ int runCheck(const CheckArgs& a) {
     case vf::Verdict::TJunctionsOnly: words = "watertight now (T-junctions)"; break;
     default: words = "watertight"; break;
     }
-    text += "verdict: " + words + "\n";
+    const std::string off = offScreenWords(r.stats, a.offscreen);
+    text += "verdict: " + words + (off.empty() ? "" : " (" + off + ")") + "\n";
   }
   // Reports first (atomically), then the text: a failure writing a report leaves no partial file.
   if (!a.json.empty()) reports.setJson(checkJson(a, terrain, cam, r, a.mesh ? &mesh : nullptr).dump(2) + "\n");
-  if (!a.svg.empty()) reports.setSvg(checkSvg(terrain, r, "fftess check " + a.scene));
+  if (!a.svg.empty()) reports.setSvg(checkSvg(terrain, r, "fftess check " + a.scene, a.offscreen));
   reports.commit(); // all or nothing
   writeStdout(text);
   flushStdout();

@@ -20,6 +20,7 @@ struct SceneArgs {
   bool quiet = false;
   bool failOnTJunctions = false;
   bool gpuHardware = false; // --gpu-hardware: the GPU LOD path on a GPU's EGL device instead of llvmpipe
+  bool offscreen = false;   // --offscreen: findings outside the view frustum count too (vf::CheckOptions::countOffScreen)
 };
 
 struct CheckArgs : SceneArgs {

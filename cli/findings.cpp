@@ -61,6 +61,7 @@ vf::CheckOptions checkOptions(const SceneArgs& a) {
   else if (fd == "off" || fd == "false") o.flushDenormals = vf::DenormalFlush::Off;
   else if (fd == "auto") o.flushDenormals = vf::DenormalFlush::Auto;
   else throw UsageError("--flush-denormals=" + quoteToken(fd) + ": expected on|off|auto");
+  o.countOffScreen = a.offscreen;
   return o;
 }
 
@@ -139,13 +140,24 @@ std::string patchText(const vf::PatchRef& p) {
   return "ring " + std::to_string(p.ring) + " tile " + std::to_string(p.tile) + " patch " + std::to_string(p.patch);
 }
 
+static std::string gapText(const char* what, double world, double pixels, const glm::vec3& at) {
+  char gap[160];
+  std::snprintf(gap, sizeof gap, " %s %.3g world (%.3g px) at (%.6g, %.6g, %.6g);", what, world, pixels,
+                static_cast<double>(at.x), static_cast<double>(at.y), static_cast<double>(at.z));
+  return gap;
+}
+
 std::string findingLine(const vf::Finding& f) {
-  char gap[96] = "";
-  if (f.classification == vf::Classification::Crack)
-    std::snprintf(gap, sizeof gap, " gap %.3g world (%.3g px) at (%.6g, %.6g, %.6g);", f.gapWorld, f.gapPixels,
-                  static_cast<double>(f.gapVertex.x), static_cast<double>(f.gapVertex.y),
-                  static_cast<double>(f.gapVertex.z));
-  return std::string(f.classification == vf::Classification::Crack ? "crack      " : "t_junction ") +
+  std::string gap;
+  if (f.classification == vf::Classification::Crack) {
+    const bool same = f.onScreenGapWorld == f.gapWorld && f.onScreenGapVertex == f.gapVertex;
+    if (!f.onScreen || same) gap = gapText("gap", f.gapWorld, f.gapPixels, f.gapVertex);
+    else
+      gap = gapText("gap on screen", f.onScreenGapWorld, f.onScreenGapPixels, f.onScreenGapVertex) +
+            gapText("farthest vertex of all", f.gapWorld, f.gapPixels, f.gapVertex);
+  }
+  const bool crack = f.classification == vf::Classification::Crack;
+  return std::string(crack ? "crack      " : "t_junction ") + (f.onScreen ? "" : "(off screen) ") +
          patchText(f.a.patch) + " " + edgeName(f.a.edge) + " | " + patchText(f.b.patch) + " " + edgeName(f.b.edge) +
          ":" + gap + " " + findingCause(f).detail;
 }
@@ -205,21 +217,61 @@ std::string fmtWorld(double v) {
   return b;
 }
 
-std::string statsText(const vf::Stats& s) {
+double countedGapWorld(const vf::Stats& s, bool countOffScreen) {
+  return countOffScreen ? s.worstGapWorld : s.worstGapWorldOnScreen;
+}
+double countedGapPixels(const vf::Stats& s, bool countOffScreen) {
+  return countOffScreen ? s.worstGapPixels : s.worstGapPixelsOnScreen;
+}
+
+std::string offScreenWords(const vf::Stats& s, bool countOffScreen, bool explain) {
+  if (s.cracksOffScreen == 0 && s.tJunctionsOffScreen == 0) return "";
+  std::string what;
+  if (s.cracksOffScreen > 0) what = std::to_string(s.cracksOffScreen) + (s.cracksOffScreen == 1 ? " crack" : " cracks");
+  if (s.tJunctionsOffScreen > 0)
+    what += (what.empty() ? "" : " and ") + std::to_string(s.tJunctionsOffScreen) +
+            (s.tJunctionsOffScreen == 1 ? " T-junction" : " T-junctions");
+  if (countOffScreen) return what + " off screen, counted: --offscreen";
+  if (!explain) return what + " off screen, not counted";
+  return what + " off screen, not counted: the factors that made them belong to their camera, so no other camera sees "
+                "them either (--offscreen counts them)";
+}
+
+// "N", "N - M on screen (+ M off screen, not counted)" or (countOffScreen) "N (M of them off screen, counted: ...)".
+static std::string countText(int64_t all, int64_t off, bool countOffScreen) {
+  if (off == 0) return std::to_string(all);
+  if (countOffScreen) return std::to_string(all) + " (" + std::to_string(off) + " of them off screen, counted: --offscreen)";
+  return std::to_string(all - off) + " on screen (+ " + std::to_string(off) + " off screen, not counted)";
+}
+
+std::string statsText(const vf::Stats& s, bool countOffScreen) {
   std::string o;
   o += "  patches        " + std::to_string(s.patches) + " (" + std::to_string(s.culledPatches) + " culled)\n";
   o += "  edges checked  " + std::to_string(s.edgesChecked) + " (" + std::to_string(s.skippedCulled) +
        " skipped: a side culled)\n";
   o += "  matches        " + std::to_string(s.matches) + "\n";
-  o += "  T-junctions    " + std::to_string(s.tJunctions) + "\n";
-  o += "  cracks         " + std::to_string(s.cracks) + "\n";
+  o += "  T-junctions    " + countText(s.tJunctions, s.tJunctionsOffScreen, countOffScreen) + "\n";
+  o += "  cracks         " + countText(s.cracks, s.cracksOffScreen, countOffScreen) + "\n";
   o += "  holes          " + std::to_string(s.holes) + " (" + std::to_string(s.holesDiscarded) +
        " discarded by the tessellator, " + std::to_string(s.holesCulledVisible) + " culled while visible)\n";
   if (s.culledUndecided > 0)
     o += "  not decided    " + std::to_string(s.culledUndecided) +
          " culled patches touch the view frustum's box test but no grid point is in view (not reported)\n";
-  if (s.cracks > 0)
-    o += "  worst gap      " + fmtWorld(s.worstGapWorld) + " world units, " + fmtWorld(s.worstGapPixels) + " pixels\n";
+  const int64_t counted = countOffScreen ? s.cracks : s.cracksOnScreen();
+  const bool differ = fmtWorld(s.worstGapWorld) != fmtWorld(s.worstGapWorldOnScreen) ||
+                      fmtWorld(s.worstGapPixels) != fmtWorld(s.worstGapPixelsOnScreen); // as printed
+  if (counted > 0)
+    o += "  worst gap      " + fmtWorld(countedGapWorld(s, countOffScreen)) + " world units, " +
+         fmtWorld(countedGapPixels(s, countOffScreen)) + " pixels" +
+         (countOffScreen ? " (all cracks, --offscreen)" : " (on screen)") + "\n";
+  if (countOffScreen && s.cracksOnScreen() > 0 && differ)
+    o += "  on screen      worst gap " + fmtWorld(s.worstGapWorldOnScreen) + " world units, " +
+         fmtWorld(s.worstGapPixelsOnScreen) + " pixels\n";
+  if (!countOffScreen && s.cracks > 0 && differ)
+    o += "  all cracks     worst gap " + fmtWorld(s.worstGapWorld) + " world units, " + fmtWorld(s.worstGapPixels) +
+         " pixels, on screen or not (--offscreen counts them)\n";
+  if (!countOffScreen && (s.cracksOffScreen > 0 || s.tJunctionsOffScreen > 0))
+    o += "  off screen     " + offScreenWords(s, countOffScreen, true) + "\n";
   return o;
 }
 // ---- shared plumbing ---------------------------------------------------------------------------------------------
@@ -261,6 +313,9 @@ void addSceneOptions(CLI::App* sub, SceneArgs& a) {
   sub->add_option("--svg", a.svg, "Write an SVG picture to FILE");
   sub->add_flag("-q,--quiet", a.quiet, "Print nothing but errors; the exit status tells the verdict");
   sub->add_flag("--fail-on-tjunctions", a.failOnTJunctions, "Exit 1 on T-junctions too (default: cracks only)");
+  sub->add_flag("--offscreen", a.offscreen,
+                "Count cracks and T-junctions outside the view frustum too (whole-mesh comparisons, strict CI); "
+                "default: only what the camera sees counts");
   sub->add_flag("--gpu-hardware", a.gpuHardware,
                 "lod.shader / lod.evaluate = \"gpu\": use a GPU's EGL device (default: Mesa's llvmpipe first)");
 }

@@ -28,22 +28,35 @@ struct Cause {
 };
 Cause findingCause(const vf::Finding& f);
 
-std::string findingLine(const vf::Finding& f);        // one line: classification, both sides, gap, cause
+// One line: classification, both sides, gap, cause. Off screen (Finding::onScreen false): "off screen" after the
+// classification. A crack on screen whose farthest vertex is not its worst on-screen one: the on-screen gap, then the
+// farthest vertex's.
+std::string findingLine(const vf::Finding& f);
 // A hole's cause from its records: a short key (sweep grouping) and the explanation (factor bits, lod's record,
 // the projection's w at the edge's midpoint, where the patch was seen).
 Cause holeCause(const vf::Hole& h);
 std::string holeLine(const vf::Hole& h);              // one line: "hole", the patch, the cause
-std::string statsText(const vf::Stats& s);            // the indented stats block of check and sweep
+// The indented stats block of check and sweep. countOffScreen (--offscreen): off-screen findings are counted (and
+// said so), the worst gap is over all cracks; else the worst gap is the on-screen one and the off-screen findings
+// are named apart, not counted.
+std::string statsText(const vf::Stats& s, bool countOffScreen);
+// The off-screen findings in words: "" when there are none; else e.g. "100 cracks off screen, not counted", and with
+// explain ": the factors that made them belong to their camera, so no other camera sees them either (--offscreen
+// counts them)".
+std::string offScreenWords(const vf::Stats& s, bool countOffScreen, bool explain = false);
+// The worst gap that counts (on screen, or with countOffScreen over all cracks): world units and pixels.
+double countedGapWorld(const vf::Stats& s, bool countOffScreen);
+double countedGapPixels(const vf::Stats& s, bool countOffScreen);
 // The verdict line's words of a sweep (and of merged shards): cameras = the cameras asked for.
 std::string verdictWords(vf::Verdict verdict, const vf::SweepResult& res, size_t crackCameras, size_t holeCameras,
-                         size_t cameras);
+                         size_t cameras, bool countOffScreen);
 
 // Scene options shared by check and sweep.
 std::vector<std::string> overridesOf(const SceneArgs& a); // --eye/--target as overrides, then every --set
 // The scene with its --set overrides, prepared once for the whole command (vf::prepareTerrain); throws UsageError
 // with the loader's message.
 vf::Terrain load(const SceneArgs& a);
-vf::CheckOptions checkOptions(const SceneArgs& a);        // --kernel, --flush-denormals
+vf::CheckOptions checkOptions(const SceneArgs& a);        // --kernel, --flush-denormals, --offscreen
 // The same, plus the GPU LOD provider the scene asks for (lod.shader, lod.evaluate = "gpu"; cli/gpu_lod.h).
 vf::CheckOptions checkOptions(const SceneArgs& a, const vf::Terrain& terrain);
 void addSceneOptions(CLI::App* sub, SceneArgs& a);

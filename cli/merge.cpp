@@ -67,6 +67,10 @@ vf::Stats statsOf(const json& j) {
   s.denormalFactors = j.at("denormal_factors");
   s.worstGapWorld = j.at("worst_gap_world");
   s.worstGapPixels = j.at("worst_gap_pixels");
+  s.cracksOffScreen = j.at("cracks_off_screen");
+  s.tJunctionsOffScreen = j.at("t_junctions_off_screen");
+  s.worstGapWorldOnScreen = j.at("worst_gap_world_on_screen");
+  s.worstGapPixelsOnScreen = j.at("worst_gap_pixels_on_screen");
   return s;
 }
 
@@ -182,7 +186,9 @@ int runMerge(const MergeArgs& a) {
         it.value() = it.value().get<int64_t>() + s.at("work").at(it.key()).get<int64_t>() -
                      s.at("terrain_work").at(it.key()).get<int64_t>();
   vf::WorkStats none;
-  json summary = sweepSummaryJson(total, res, rows, none);
+  // --offscreen is part of the header (every shard the same): the merged verdict counts what the shards counted.
+  const bool countOffScreen = header.value("offscreen", false);
+  json summary = sweepSummaryJson(total, res, rows, none, countOffScreen);
   summary["work"] = work;
   summary["terrain_work"] = terrain0;
 
@@ -192,13 +198,13 @@ int runMerge(const MergeArgs& a) {
     out->buffer() = sweepJsonEnd(summary, !cams.empty());
     out->commit();
   }
-  const vf::Verdict verdict = vf::verdictOf(res);
+  const vf::Verdict verdict = vf::verdictOf(res, countOffScreen);
   if (!a.quiet && a.json != "-") {
     size_t crackCameras = 0, holeCameras = 0;
     for (const json* c : cams) {
       if (!c->at("done").get<bool>()) continue;
       const json& st = c->at("stats");
-      crackCameras += st.at("cracks").get<int64_t>() > 0;
+      crackCameras += st.at("cracks").get<int64_t>() - (countOffScreen ? 0 : st.at("cracks_off_screen").get<int64_t>()) > 0;
       holeCameras += st.at("holes").get<int64_t>() > 0;
     }
     std::string text = "merged " + std::to_string(shards.size()) + " report(s) of " +
@@ -206,8 +212,8 @@ int runMerge(const MergeArgs& a) {
                        header.at("cameras_source").get<std::string>() + "): cameras " +
                        std::to_string(res.camerasDone) + " of " + std::to_string(total) +
                        (res.cancelled ? " (interrupted)" : "") + "\n";
-    text += statsText(res.total);
-    text += "verdict: " + verdictWords(verdict, res, crackCameras, holeCameras, total) + "\n";
+    text += statsText(res.total, countOffScreen);
+    text += "verdict: " + verdictWords(verdict, res, crackCameras, holeCameras, total, countOffScreen) + "\n";
     writeStdout(text);
     flushStdout();
   }

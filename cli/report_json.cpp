@@ -72,6 +72,11 @@ json findingJson(const vf::Finding& f) {
   j["gap_pixels"] = f.gapPixels;
   j["gap_vertex"] = vec3Json(f.gapVertex);
   j["gap_side"] = f.gapSide == 0 ? "a" : "b";
+  j["on_screen"] = f.onScreen;
+  j["on_screen_gap_world"] = f.onScreenGapWorld;
+  j["on_screen_gap_pixels"] = f.onScreenGapPixels;
+  j["on_screen_gap_vertex"] = vec3Json(f.onScreenGapVertex);
+  j["on_screen_gap_side"] = f.onScreenGapSide == 0 ? "a" : "b";
   return j;
 }
 
@@ -81,7 +86,10 @@ json statsJson(const vf::Stats& s) {
           {"cracks", s.cracks},             {"holes", s.holes},                  {"holes_discarded", s.holesDiscarded},
           {"holes_culled_while_visible", s.holesCulledVisible}, {"culled_undecided", s.culledUndecided},
           {"visibility_tests", s.visibilityTests}, {"denormal_factors", s.denormalFactors},
-          {"worst_gap_world", s.worstGapWorld}, {"worst_gap_pixels", s.worstGapPixels}};
+          {"worst_gap_world", s.worstGapWorld}, {"worst_gap_pixels", s.worstGapPixels},
+          {"cracks_off_screen", s.cracksOffScreen}, {"t_junctions_off_screen", s.tJunctionsOffScreen},
+          {"worst_gap_world_on_screen", s.worstGapWorldOnScreen},
+          {"worst_gap_pixels_on_screen", s.worstGapPixelsOnScreen}};
 }
 
 json holeJson(const vf::Hole& h) {
@@ -104,6 +112,7 @@ json holeJson(const vf::Hole& h) {
   j["lod"] = lodJson(h.lod);
   j["midpoint_w"] = formatFloat(h.midpointW);
   j["lod_box_y"] = json::array({h.lodBoxMinY, h.lodBoxMaxY});
+  j["on_screen"] = h.onScreen;
   return j;
 }
 
@@ -147,6 +156,7 @@ static json reportHeader(const char* kind, const SceneArgs& a, const vf::Scene& 
   char hash[24];
   std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(scene.contentHash));
   j["scene_hash"] = std::string("fnv1a64:") + hash; // vf::Scene::contentHash: the scene's bytes, overrides, files
+  j["offscreen"] = a.offscreen; // --offscreen: findings outside the view frustum count in the verdict
   return j;
 }
 
@@ -155,7 +165,7 @@ json checkJson(const SceneArgs& a, const vf::Terrain& terrain, const vf::Camera&
   json j = reportHeader("check", a, terrain.scene());
   j["camera"] = cameraJson(cam);
   j["stats"] = statsJson(r.stats);
-  j["verdict"] = vf::toString(vf::verdictOf(r.stats));
+  j["verdict"] = vf::toString(vf::verdictOf(r.stats, a.offscreen));
   j["truncated"] = r.truncated;
   json fs = json::array();
   for (const vf::Finding& f : r.findings) fs.push_back(findingJson(f));
@@ -201,7 +211,7 @@ json sweepCameraJson(size_t globalIndex, const vf::Camera& cam, const vf::Camera
 }
 
 json sweepSummaryJson(size_t requested, const vf::SweepResult& res, const std::vector<CauseRow>& causes,
-                      const vf::WorkStats& terrainWork) {
+                      const vf::WorkStats& terrainWork, bool countOffScreen) {
   json j;
   j["cameras_total"] = requested;
   j["cameras_done"] = res.camerasDone;
@@ -210,7 +220,7 @@ json sweepSummaryJson(size_t requested, const vf::SweepResult& res, const std::v
   j["cameras_invalid"] = res.camerasInvalid;
   j["cameras_nothing_checked"] = res.camerasNothingChecked;
   j["stats"] = statsJson(res.total);
-  j["verdict"] = vf::toString(vf::verdictOf(res));
+  j["verdict"] = vf::toString(vf::verdictOf(res, countOffScreen));
   json cs = json::array();
   for (const CauseRow& c : causes)
     cs.push_back({{"cause", c.cause}, {"findings", c.findings}, {"cameras", c.cameras}, {"first_camera", c.firstCamera},

@@ -52,9 +52,10 @@ json checkJson(const SceneArgs& a, const vf::Terrain& terrain, const vf::Camera&
 // The concatenation equals ordered_json{header..., "cameras": [entries...], summary...}.dump(2) + "\n".
 json sweepHeaderJson(const SceneArgs& a, const vf::Scene& scene, const std::string& camerasSource);
 json sweepCameraJson(size_t globalIndex, const vf::Camera& cam, const vf::CameraResult& c);
-// The summary: cameras_total .. work (requested: cameras asked for, more than checked if interrupted).
+// The summary: cameras_total .. work (requested: cameras asked for, more than checked if interrupted; countOffScreen:
+// --offscreen, the verdict counts findings outside the view frustum).
 json sweepSummaryJson(size_t requested, const vf::SweepResult& res, const std::vector<CauseRow>& causes,
-                      const vf::WorkStats& terrainWork);
+                      const vf::WorkStats& terrainWork, bool countOffScreen);
 std::string sweepJsonBegin(const json& header);
 std::string sweepJsonCamera(const json& entry, bool first);
 std::string sweepJsonEnd(const json& summary, bool anyCamera);

@@ -26,7 +26,8 @@ const char* kSvgStyle =
     ".cr{stroke:#d01010;stroke-width:3}.mk{fill:none;stroke:#d01010;stroke-width:0.8}.t{font:13px sans-serif}"
     ".s{font:11px monospace}.ok{fill:#2a8a2a}.warn{fill:#e08a00}.bad{fill:#d01010}.path{fill:none;stroke:#446;"
     "stroke-width:1}.ins{fill:#fff;stroke:#222}.a{stroke:#2a5599;stroke-width:1.2}.b{stroke:#7a2a99;stroke-width:1.2}"
-    ".x{stroke:#d01010;stroke-width:2}.hole{fill:#d01010;fill-opacity:0.45;stroke:#d01010;stroke-width:1}</style>\n";
+    ".x{stroke:#d01010;stroke-width:2}.hole{fill:#d01010;fill-opacity:0.45;stroke:#d01010;stroke-width:1}"
+    ".off{stroke:#999;stroke-width:2;stroke-dasharray:4 3}.mko{fill:none;stroke:#999;stroke-width:0.8}</style>\n";
 
 // The layout from above, from verify's real patch geometry (one terrain build for all patches): every patch outlined
 // thinly, and each tile (ring, tile) of a tile-ring layout outlined around its patches. Very large layouts (more
@@ -73,7 +74,8 @@ void svgPatches(std::string& o, const vf::Terrain& terrain, const MapView& v) {
 
 // The inset: the worst finding's shared edge stretched to the inset's width, side a's points above the line and
 // side b's below (from the tessellator's edge query), the points without a partner on the other side in red.
-void svgInset(std::string& o, const vf::Scene& scene, const vf::Finding& f, double x, double y, double w) {
+// gap: the gap that counts (the on-screen one, or with --offscreen the farthest vertex's).
+void svgInset(std::string& o, const vf::Scene& scene, const vf::Finding& f, double gap, double x, double y, double w) {
   char buf[320];
   std::snprintf(buf, sizeof buf, "<g id=\"inset\"><rect class=\"ins\" x=\"%.1f\" y=\"%.1f\" width=\"%.1f\" height=\"150\"/>\n",
                 x, y, w);
@@ -120,7 +122,7 @@ void svgInset(std::string& o, const vf::Scene& scene, const vf::Finding& f, doub
                 "<text class=\"s\" x=\"%.1f\" y=\"%.1f\">a: %s %s factor %s  b: %s %s factor %s  gap %s world</text>\n</g>\n",
                 x + 8, y + 142, patchText(f.a.patch).c_str(), edgeName(f.a.edge), formatFloat(f.a.processedFactor).c_str(),
                 patchText(f.b.patch).c_str(), edgeName(f.b.edge), formatFloat(f.b.processedFactor).c_str(),
-                fmtWorld(f.gapWorld).c_str());
+                fmtWorld(gap).c_str());
   o += buf;
 }
 
@@ -136,13 +138,16 @@ void svgHole(std::string& o, const vf::Terrain& terrain, const MapView& v, const
 
 } // namespace
 
-std::string checkSvg(const vf::Terrain& terrain, const vf::Report& r, const std::string& title) {
+std::string checkSvg(const vf::Terrain& terrain, const vf::Report& r, const std::string& title, bool countOffScreen) {
   MapView v;
   v.init(terrain.extent());
   const double H = v.margin * 2 + (v.e.maxZ - v.e.minZ) * v.scale, W = v.margin * 2 + (v.e.maxX - v.e.minX) * v.scale;
+  // The worst finding that counts: on screen by its on-screen gap, or (--offscreen) any by its gap.
   const vf::Finding* worst = nullptr;
-  for (const vf::Finding& f : r.findings)
-    if (!worst || f.gapWorld > worst->gapWorld) worst = &f;
+  for (const vf::Finding& f : r.findings) {
+    if (!countOffScreen && !f.onScreen) continue;
+    if (!worst || (countOffScreen ? f.gapWorld > worst->gapWorld : f.onScreenGapWorld > worst->onScreenGapWorld)) worst = &f;
+  }
   const double totalH = H + 60 + (worst ? 170 : 0);
   char buf[512];
   std::string o;
@@ -158,43 +163,51 @@ std::string checkSvg(const vf::Terrain& terrain, const vf::Report& r, const std:
   for (const vf::Finding& f : r.findings) {
     const bool crack = f.classification == vf::Classification::Crack;
     std::snprintf(buf, sizeof buf, "<line class=\"%s\" x1=\"%.2f\" y1=\"%.2f\" x2=\"%.2f\" y2=\"%.2f\"/>\n",
-                  crack ? "cr" : "tj", v.x(f.edgeStart.x), v.y(f.edgeStart.z), v.x(f.edgeEnd.x), v.y(f.edgeEnd.z));
+                  !f.onScreen ? "off" : crack ? "cr" : "tj", v.x(f.edgeStart.x), v.y(f.edgeStart.z), v.x(f.edgeEnd.x),
+                  v.y(f.edgeEnd.z));
     o += buf;
     if (crack) {
-      std::snprintf(buf, sizeof buf, "<circle class=\"mk\" cx=\"%.2f\" cy=\"%.2f\" r=\"2.5\"/>\n", v.x(f.gapVertex.x),
-                    v.y(f.gapVertex.z));
+      const glm::vec3& at = f.onScreen ? f.onScreenGapVertex : f.gapVertex;
+      std::snprintf(buf, sizeof buf, "<circle class=\"%s\" cx=\"%.2f\" cy=\"%.2f\" r=\"2.5\"/>\n",
+                    f.onScreen ? "mk" : "mko", v.x(at.x), v.y(at.z));
       o += buf;
     }
   }
   o += "</g>\n<g id=\"holes\">\n";
   for (const vf::Hole& h : r.holes) svgHole(o, terrain, v, h, "hole: " + holeCause(h).detail);
   o += "</g>\n";
+  const int64_t off = r.stats.cracksOffScreen + r.stats.tJunctionsOffScreen;
   std::snprintf(buf, sizeof buf,
                 "<text class=\"t\" x=\"20\" y=\"%.0f\">%lld edges checked: %lld match, %lld T-junctions (orange), "
-                "%lld cracks (red, circled), %lld holes (filled)</text>\n",
+                "%lld cracks (red, circled), %lld holes (filled) on screen; %lld off screen (grey, dashed: %s)</text>\n",
                 H + 25, static_cast<long long>(r.stats.edgesChecked), static_cast<long long>(r.stats.matches),
-                static_cast<long long>(r.stats.tJunctions), static_cast<long long>(r.stats.cracks),
-                static_cast<long long>(r.stats.holes));
+                static_cast<long long>(r.stats.tJunctionsOnScreen()), static_cast<long long>(r.stats.cracksOnScreen()),
+                static_cast<long long>(r.stats.holes), static_cast<long long>(off),
+                countOffScreen ? "counted, --offscreen" : "not counted");
   o += buf;
-  if (worst) svgInset(o, terrain.scene(), *worst, 10, H + 45, std::max(W, 780.0) - 20);
+  if (worst)
+    svgInset(o, terrain.scene(), *worst, countOffScreen || !worst->onScreen ? worst->gapWorld : worst->onScreenGapWorld,
+             10, H + 45, std::max(W, 780.0) - 20);
   o += "</svg>\n";
   return o;
 }
 
-SvgCamera svgCamera(size_t globalIndex, const vf::Camera& cam, const vf::CameraResult& c) {
+SvgCamera svgCamera(size_t globalIndex, const vf::Camera& cam, const vf::CameraResult& c, bool countOffScreen) {
   SvgCamera d;
   d.index = globalIndex;
   d.x = cam.eye.x, d.z = cam.eye.z;
-  d.cracks = c.stats.cracks;
-  d.verdict = c.stats.cracks > 0 || c.stats.holes > 0 ? 'b' : c.stats.tJunctions > 0 ? 'w' : 'o';
-  d.crackMark = c.hasFinding && c.stats.cracks > 0;
-  if (d.crackMark) d.gx = c.worst.gapVertex.x, d.gz = c.worst.gapVertex.z;
+  d.cracks = countOffScreen ? c.stats.cracks : c.stats.cracksOnScreen();
+  const int64_t tJunctions = countOffScreen ? c.stats.tJunctions : c.stats.tJunctionsOnScreen();
+  d.verdict = d.cracks > 0 || c.stats.holes > 0 ? 'b' : tJunctions > 0 ? 'w' : 'o';
+  d.crackMark = c.hasFinding && d.cracks > 0; // CameraResult::worst is a finding that counts
+  const glm::vec3& at = countOffScreen ? c.worst.gapVertex : c.worst.onScreenGapVertex;
+  if (d.crackMark) d.gx = at.x, d.gz = at.z;
   return d;
 }
 
 std::string sweepSvg(const vf::Terrain& terrain, const std::vector<vf::Camera>& cams, const std::vector<SvgCamera>& dots,
                      const std::vector<SvgHole>& holes, const std::vector<size_t>& firstCameras, bool randomOrder,
-                     const std::string& title) {
+                     const std::string& title, bool countOffScreen) {
   MapView v;
   vf::Extent ext = terrain.extent();
   for (const vf::Camera& c : cams) { // cameras off the terrain stay on the map
@@ -248,10 +261,10 @@ std::string sweepSvg(const vf::Terrain& terrain, const std::vector<vf::Camera>& 
   }
   std::snprintf(buf, sizeof buf,
                 "<text class=\"t\" x=\"20\" y=\"%.0f\">%zu cameras from above. Dots: green clean, orange T-junctions, "
-                "red cracks or holes.</text>\n<text class=\"t\" x=\"20\" y=\"%.0f\">Circles: worst crack of each camera; "
+                "red cracks or holes (%s).</text>\n<text class=\"t\" x=\"20\" y=\"%.0f\">Circles: worst crack of each camera; "
                 "filled patches: each camera's first hole. "
                 "Numbers: first camera of each cause (in summary order).</text>\n",
-                H + 20, dots.size(), H + 40);
+                H + 20, dots.size(), countOffScreen ? "off screen too, --offscreen" : "on screen", H + 40);
   o += buf;
   o += "</svg>\n";
   return o;

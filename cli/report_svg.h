@@ -9,9 +9,10 @@
 
 namespace fftess::cli {
 
-// The check picture: layout, T-junctions (orange) and cracks (red, the gap vertex circled), the worst finding's
-// edge zoomed in an inset.
-std::string checkSvg(const vf::Terrain& terrain, const vf::Report& r, const std::string& title);
+// The check picture: layout, T-junctions (orange) and cracks (red, the on-screen gap vertex circled) on screen,
+// findings off screen (Finding::onScreen false) grey and dashed, the worst finding that counts (countOffScreen:
+// --offscreen) zoomed in an inset.
+std::string checkSvg(const vf::Terrain& terrain, const vf::Report& r, const std::string& title, bool countOffScreen);
 
 // What the sweep picture draws of one camera checked (kept per camera instead of its CameraResult).
 struct SvgCamera {
@@ -27,13 +28,14 @@ struct SvgHole {
   int patch = -1;
   std::string title;
 };
-SvgCamera svgCamera(size_t globalIndex, const vf::Camera& cam, const vf::CameraResult& c);
+// countOffScreen (--offscreen): the camera's off-screen findings count for its colour and mark.
+SvgCamera svgCamera(size_t globalIndex, const vf::Camera& cam, const vf::CameraResult& c, bool countOffScreen);
 
 // The sweep picture: layout, every checked camera's eye as a dot coloured by its verdict (all of `cams` joined in
 // order unless randomOrder), each camera's worst crack circled, each camera's first hole filled, and the first
 // camera of each cause numbered in the order of firstCameras (indices into cams).
 std::string sweepSvg(const vf::Terrain& terrain, const std::vector<vf::Camera>& cams, const std::vector<SvgCamera>& dots,
                      const std::vector<SvgHole>& holes, const std::vector<size_t>& firstCameras, bool randomOrder,
-                     const std::string& title);
+                     const std::string& title, bool countOffScreen);
 
 } // namespace fftess::cli

@@ -33,6 +33,7 @@ struct CauseInfo {
 
 struct CauseTally {
   std::map<std::string, CauseInfo> causes;
+  bool countOffScreen = false; // --offscreen: off-screen findings are tallied with the others
 
   void add(size_t camera, const vf::Report& r) {
     std::set<std::string> here;
@@ -40,7 +41,9 @@ struct CauseTally {
       const vf::Finding& f = r.findings[k];
       if (f.classification == vf::Classification::Match) continue;
       const Cause cause = findingCause(f);
-      addKey(std::string(vf::toString(f.classification)) + ": " + cause.key, cause.detail, camera, k, here);
+      // Off-screen findings apart (not counted): their own keys, "crack (off screen): ...".
+      const char* off = f.onScreen || countOffScreen ? "" : " (off screen)";
+      addKey(std::string(vf::toString(f.classification)) + off + ": " + cause.key, cause.detail, camera, k, here);
     }
     for (size_t k = 0; k < r.holes.size(); ++k) {
       const Cause cause = holeCause(r.holes[k]);
@@ -119,17 +122,18 @@ static uint64_t parseSeed(const std::string& text) {
   return v;
 }
 
-// The verdict line's words (sweep and merge).
-std::string verdictWords(vf::Verdict verdict, const vf::SweepResult& res, size_t crackCameras, size_t holeCameras,
-                         size_t cameras) {
+// The verdict line without the off-screen findings.
+static std::string verdictHeadline(vf::Verdict verdict, const vf::SweepResult& res, size_t crackCameras,
+                                   size_t holeCameras, size_t cameras, bool countOffScreen) {
   const std::string holesText = "HOLES seen from " + std::to_string(holeCameras) + " of " +
                                 std::to_string(res.camerasDone) + " cameras (" + std::to_string(res.total.holes) +
                                 " patches not drawn while in view)";
   switch (verdict) {
   case vf::Verdict::Cracks:
     return "CRACKS seen from " + std::to_string(crackCameras) + " of " + std::to_string(res.camerasDone) +
-           " cameras (worst gap " + fmtWorld(res.total.worstGapWorld) + " world units, " +
-           fmtWorld(res.total.worstGapPixels) + " px)" + (res.total.holes > 0 ? "; " + holesText : "");
+           " cameras (worst gap" + (countOffScreen ? " " : " on screen ") + fmtWorld(countedGapWorld(res.total, countOffScreen)) +
+           " world units, " + fmtWorld(countedGapPixels(res.total, countOffScreen)) + " px)" +
+           (res.total.holes > 0 ? "; " + holesText : "");
   case vf::Verdict::Holes: return holesText;
   case vf::Verdict::NothingChecked:
     return "NOTHING CHECKED: no camera classified a shared edge (" + std::to_string(res.camerasDone) +
@@ -142,6 +146,14 @@ std::string verdictWords(vf::Verdict verdict, const vf::SweepResult& res, size_t
     return res.cancelled ? "no cracks so far (interrupted)" : "WATERTIGHT from all " + std::to_string(res.camerasDone) + " cameras";
   }
   return "?";
+}
+
+// The verdict line's words (sweep and merge).
+std::string verdictWords(vf::Verdict verdict, const vf::SweepResult& res, size_t crackCameras, size_t holeCameras,
+                         size_t cameras, bool countOffScreen) {
+  const std::string off = offScreenWords(res.total, countOffScreen);
+  return verdictHeadline(verdict, res, crackCameras, holeCameras, cameras, countOffScreen) +
+         (off.empty() ? "" : " (" + off + ")");
 }
 
 // --shard K/N: 1 <= K <= N, both whole numbers.
@@ -256,6 +268,7 @@ int runSweep(const SweepArgs& a) {
     }
   };
   CauseTally tally;
+  tally.countOffScreen = a.offscreen;
   FactorDiffTally gpuDiffs; // lod.evaluate = "gpu" / lod.shader: GPU vs C++ factors (cli/gpu_lod.h)
   so.onReport = [&](size_t local, const vf::Report& r) {
     tally.add(global(local), r);
@@ -266,10 +279,11 @@ int runSweep(const SweepArgs& a) {
     if (!c.error.empty() && g < firstInvalid) firstInvalid = g, firstInvalidError = c.error;
     if (c.done) {
       if (c.stats.holes > 0) ++holeCameras;
-      if (c.stats.cracks > 0) ++crackCameras;
-      else if (c.stats.tJunctions > 0) ++tjCameras;
+      const bool all = a.offscreen; // the findings that count: on screen, or all with --offscreen
+      if ((all ? c.stats.cracks : c.stats.cracksOnScreen()) > 0) ++crackCameras;
+      else if ((all ? c.stats.tJunctions : c.stats.tJunctionsOnScreen()) > 0) ++tjCameras;
       if (!a.svg.empty()) {
-        dots.push_back(svgCamera(g, cams[g], c));
+        dots.push_back(svgCamera(g, cams[g], c, all));
         if (c.hasHole) holes.push_back({c.firstHole.patch.index, "camera " + std::to_string(g) + ": " + holeCause(c.firstHole).detail});
       }
     }
@@ -287,7 +301,7 @@ int runSweep(const SweepArgs& a) {
   const double elapsed = progress.elapsed();
   const std::vector<std::string> order = tally.order();
   const std::map<std::string, CauseInfo>& causes = tally.causes;
-  const vf::Verdict verdict = vf::verdictOf(res);
+  const vf::Verdict verdict = vf::verdictOf(res, a.offscreen);
   const bool gaps = verdict == vf::Verdict::Cracks || verdict == vf::Verdict::Holes;
   const int status = res.cancelled && !gaps ? 130 : verdictStatus(a, verdict);
 
@@ -304,7 +318,7 @@ int runSweep(const SweepArgs& a) {
     text += buf;
     text += "  adjacency      " + std::string(vf::toString(scene.lod.screenSphere.clamp)) + " clamp, " +
             toString(scene.partitioning) + " partitioning\n";
-    text += statsText(res.total);
+    text += statsText(res.total, a.offscreen);
     text += gpuDiffs.text(scene, opt, res.total);
     std::snprintf(buf, sizeof buf, "  cameras with cracks %zu, with T-junctions only %zu, with holes %zu\n", crackCameras,
                   tjCameras, holeCameras);
@@ -330,7 +344,7 @@ int runSweep(const SweepArgs& a) {
         text += "      e.g. " + c.detail + "\n";
       }
     }
-    text += "verdict: " + verdictWords(verdict, res, crackCameras, holeCameras, mine.size()) + "\n";
+    text += "verdict: " + verdictWords(verdict, res, crackCameras, holeCameras, mine.size(), a.offscreen) + "\n";
   }
   if (jsonFile) {
     flushPending(true);
@@ -342,13 +356,13 @@ int runSweep(const SweepArgs& a) {
     }
     vf::WorkStats terrainWork = terrain.stats();
     terrainWork.terrainBuilds = vf::terrainBuildCount(); // every build in this process
-    jsonFile->buffer() += sweepJsonEnd(sweepSummaryJson(requested, res, rows, terrainWork), anyCamera);
+    jsonFile->buffer() += sweepJsonEnd(sweepSummaryJson(requested, res, rows, terrainWork, a.offscreen), anyCamera);
   }
   if (svgFile) {
     std::vector<size_t> firsts;
     for (const std::string& k : order) firsts.push_back(causes.at(k).first);
     std::sort(dots.begin(), dots.end(), [](const SvgCamera& x, const SvgCamera& y) { return x.index < y.index; });
-    svgFile->buffer() = sweepSvg(terrain, cams, dots, holes, firsts, a.random > 0, "fftess sweep " + a.scene);
+    svgFile->buffer() = sweepSvg(terrain, cams, dots, holes, firsts, a.random > 0, "fftess sweep " + a.scene, a.offscreen);
   }
   AtomicFile* files[2];
   size_t nFiles = 0;

@@ -399,7 +399,7 @@ Report checkTerrain(const TerrainData& t, const Camera& camera, const CheckOptio
                       ": non-finite vertex (the scene's geometry overflows float); nothing checked";
           return rep;
         }
-        if (!match) v = classifyExact(options.kernel, a, na, fullA.data(), pa.count, pb.data(), pbp.count);
+        if (!match) v = classifyExact(options.kernel, a, na, fullA.data(), pa.count, pb.data(), pbp.count, &frustum);
         switch (v.classification) {
         case Classification::Match: ++rep.stats.matches; break;
         case Classification::TJunction: ++rep.stats.tJunctions; break;
@@ -452,6 +452,9 @@ Report checkTerrain(const TerrainData& t, const Camera& camera, const CheckOptio
           rep.stats.worstGapWorld = std::max(rep.stats.worstGapWorld, f.gapWorld);
           rep.stats.worstGapPixels = std::max(rep.stats.worstGapPixels, f.gapPixels);
         }
+        if (v.classification != Classification::Match) // on screen or not (onscreen.cpp)
+          markOnScreen(frustum, lodCamera, camera.nearZ, v, fullA.data(), pa.count, first, last, pb.data(), pbp.count, f,
+                       rep.stats);
         if (rep.findings.size() < options.maxFindings) rep.findings.push_back(f);
       }
     }
@@ -469,16 +472,16 @@ Report checkScene(const Terrain& terrain, const Camera& camera, const CheckOptio
   return detail::checkTerrain(terrain.data(), camera, options, cache);
 }
 
-Verdict verdictOf(const Stats& s) {
-  if (s.cracks > 0) return Verdict::Cracks;
+Verdict verdictOf(const Stats& s, bool countOffScreen) {
+  if ((countOffScreen ? s.cracks : s.cracksOnScreen()) > 0) return Verdict::Cracks;
   if (s.holes > 0) return Verdict::Holes;
   if (s.edgesChecked == 0) return Verdict::NothingChecked;
-  if (s.tJunctions > 0) return Verdict::TJunctionsOnly;
+  if ((countOffScreen ? s.tJunctions : s.tJunctionsOnScreen()) > 0) return Verdict::TJunctionsOnly;
   return Verdict::Watertight;
 }
 
-Verdict verdictOf(const SweepResult& r) {
-  const Verdict v = verdictOf(r.total);
+Verdict verdictOf(const SweepResult& r, bool countOffScreen) {
+  const Verdict v = verdictOf(r.total, countOffScreen);
   if (v == Verdict::Cracks || v == Verdict::Holes) return v;
   if (r.camerasInvalid > 0) return Verdict::Unchecked;
   return v;

@@ -201,12 +201,21 @@ struct ExactVerdict {
   double gap = 0;      // crack: the largest distance of a vertex to the other polyline
   int gapSide = 0;     // 0: side a, 1: side b
   int gapIndex = -1;   // index into that side's points
+  // With a frustum (crack only): the same over the off-polyline vertices whose gap segment (to the nearest point of the
+  // other polyline) is not proven off screen; onScreenAny false when there is none.
+  bool onScreenAny = false;
+  double onScreenGap = 0;
+  int onScreenGapSide = 0;
+  int onScreenGapIndex = -1;
 };
+
+class FrustumTest;
 
 // a: side a's points inside the shared part (in order); aFull: side a's whole polyline (a vertex of b is tested
 // against it); b: side b's points (all of them are in the shared part). All in the same direction.
+// frustum: also the worst gap on screen (ExactVerdict::onScreen*); a must then point into aFull.
 ExactVerdict classifyExact(Kernel kernel, const glm::vec3* a, int na, const glm::vec3* aFull, int naFull, const glm::vec3* b,
-                           int nb);
+                           int nb, const FrustumTest* frustum = nullptr);
 
 // ---------------------------------------------------------------------------------------------------------------
 // check.cpp
@@ -217,6 +226,18 @@ bool validateCamera(const Camera& c, std::string& error);
 // ---------------------------------------------------------------------------------------------------------------
 // visibility.cpp: is a patch that is not drawn on screen? (verify.h, Hole)
 
+// The box of points (float values, exact in double): grown one point at a time.
+struct PointBox {
+  glm::dvec3 lo{0}, hi{0};
+  bool empty = true;
+  void add(const glm::vec3& p) {
+    const glm::dvec3 d(p);
+    lo = empty ? d : glm::min(lo, d);
+    hi = empty ? d : glm::max(hi, d);
+    empty = false;
+  }
+};
+
 class FrustumTest {
 public:
   explicit FrustumTest(const lod::Camera& camera); // clip = projection * view, in double
@@ -224,10 +245,30 @@ public:
   bool boxOutside(const glm::dvec3& lo, const glm::dvec3& hi) const;
   // The point is strictly inside the frustum.
   bool inside(const glm::vec3& p) const;
+  // On screen or not (docs/verify.md, "On screen"): the box [lo, hi] lies outside one frustum plane by more than the
+  // float rounding of a GPU's clip coordinates could undo (2^-16 of a bound on the magnitudes of the plane's terms
+  // over the box). Conservative: false whenever a point of the box may be on screen. Monotone: true for a box also
+  // holds for every box inside it.
+  bool boxOffScreen(const glm::dvec3& lo, const glm::dvec3& hi) const;
+  // The part [t0, t1] (within the given [t0, t1]) of the segment p + t (q - p) inside the frustum's six planes
+  // (double, no margin). False: no part of it is inside.
+  bool clipSegment(const glm::dvec3& p, const glm::dvec3& q, double& t0, double& t1) const;
 
 private:
   double m_[4][4]; // row-major clip matrix
 };
+
+// ---------------------------------------------------------------------------------------------------------------
+// onscreen.cpp: on screen or not (docs/verify.md, "On screen").
+
+// Sets f.onScreen (a non-matching finding: false only when the box of all its vertices is proven off screen, counted
+// in stats.cracksOffScreen / tJunctionsOffScreen) and, for a crack on screen, f.onScreenGap* (the worst of: the
+// classifier's on-screen vertex gap v.onScreenGap, and the gap where either side's edge crosses the frustum's
+// boundary; nothing of either edge in view: the farthest vertex's) with stats' on-screen worst gaps. Side a is
+// fullA[0..naFull) with the shared part [first, last); side b is b[0..nb). f's gap* fields must be set.
+void markOnScreen(const FrustumTest& frustum, const lod::Camera& cam, float nearZ, const ExactVerdict& v,
+                  const glm::vec3* fullA, int naFull, int first, int last, const glm::vec3* b, int nb, Finding& f,
+                  Stats& stats);
 
 // Invisible (box outside), Visible (a grid point inside; *point set) or Undecided. Adds the grid's domain
 // evaluations to work.

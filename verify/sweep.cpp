@@ -27,6 +27,10 @@ void accumulate(Stats& s, const Stats& c) {
   s.visibilityTests += c.visibilityTests;
   s.worstGapWorld = std::max(s.worstGapWorld, c.worstGapWorld);
   s.worstGapPixels = std::max(s.worstGapPixels, c.worstGapPixels);
+  s.cracksOffScreen += c.cracksOffScreen;
+  s.tJunctionsOffScreen += c.tJunctionsOffScreen;
+  s.worstGapWorldOnScreen = std::max(s.worstGapWorldOnScreen, c.worstGapWorldOnScreen);
+  s.worstGapPixelsOnScreen = std::max(s.worstGapPixelsOnScreen, c.worstGapPixelsOnScreen);
 }
 
 SweepResult sweep(const Terrain& terrain, const std::vector<Camera>& cameras, const CheckOptions& options,
@@ -62,9 +66,11 @@ SweepResult sweep(const Terrain& terrain, const std::vector<Camera>& cameras, co
       cr.hasHole = !rep.holes.empty();
       if (cr.hasHole) cr.firstHole = rep.holes.front();
       cr.hasFinding = false;
+      // The worst of the findings that count (CameraResult::worst).
+      const bool all = options.countOffScreen;
       for (const Finding& f : rep.findings) {
-        if (f.classification == Classification::Match) continue;
-        if (!cr.hasFinding || f.gapWorld > cr.worst.gapWorld) {
+        if (f.classification == Classification::Match || (!all && !f.onScreen)) continue;
+        if (!cr.hasFinding || (all ? f.gapWorld > cr.worst.gapWorld : f.onScreenGapWorld > cr.worst.onScreenGapWorld)) {
           cr.worst = f;
           cr.hasFinding = true;
         }

@@ -516,6 +516,10 @@ struct CheckOptions {
   // Denormal hull factors (--flush-denormals on|off|auto): On/Off override the scene's lod.flush_denormals and the
   // driver's rule (denormalRule). tessellator.flushDenormals is the rule of lod/'s C++ path under Auto.
   DenormalFlush flushDenormals = DenormalFlush::Auto;
+  // Findings the camera cannot see (Finding::onScreen false) count like the others: sweep's CameraResult::worst is
+  // chosen among all findings. The Report and its Stats are the same either way (Stats keeps both numbers); pass
+  // the same choice to verdictOf. The cli's --offscreen (whole-mesh comparisons, strict CI).
+  bool countOffScreen = false;
 };
 
 // The denormal rule one check runs with, and where it came from: the first that is not Auto of
@@ -570,13 +574,28 @@ struct Finding {
   Partitioning partitioning = Partitioning::FractionalEven; // the tessellator's partitioning (both sides)
   glm::vec3 edgeStart{}, edgeEnd{}; // the shared edge's ends (flat corners, world)
   // Crack: the vertex farthest from the other side's polyline and that distance (exact with Epeck; converted to
-  // double for printing). T-junction / match: 0.
+  // double for printing), whether or not the camera sees it. T-junction / match: 0.
   double gapWorld = 0;
   // gapWorld in pixels at the vertex's view depth, with lod's projection (lod::makeCamera): gapWorld *
   // projection[1][1] * viewport.y / 2 / depth, depth = -(view * vertex).z (0 if at or behind the eye plane).
   double gapPixels = 0;
   glm::vec3 gapVertex{};
   int gapSide = 0;             // 0: the vertex is on side a, 1: on side b
+  // On screen (docs/verify.md, "On screen"): false only when the finding is proven outside the view frustum (near
+  // and far planes included): every triangle of a strip zipped between its two sides has its box outside one plane.
+  // Occlusion by other terrain is not considered. Matches: true.
+  bool onScreen = true;
+  // Crack on screen: the widest the gap is where the camera may see it: the largest of (1) the distance of each
+  // off-polyline vertex whose gap segment (to the nearest point of the other side) is not proven off screen (exact
+  // as gapWorld) and (2) the width (double) where either side's edge crosses the frustum's boundary; when neither
+  // exists (no part of either edge in view, but the strip may be), gapWorld at gapVertex. onScreenGapVertex: where it
+  // was measured (a vertex, or a point where an edge leaves the view). Pixels there, but never nearer than the near
+  // plane: onScreenGapWorld * projection[1][1] * viewport.y / 2 / max(depth, camera.near). Off screen, T-junction,
+  // match: 0.
+  double onScreenGapWorld = 0;
+  double onScreenGapPixels = 0;
+  glm::vec3 onScreenGapVertex{};
+  int onScreenGapSide = 0;     // 0: measured on side a, 1: on side b
 };
 
 // The LOD's record of one side in words: the fix names (lod::fixName, in bit order), then the neighbour rule
@@ -622,6 +641,10 @@ struct Hole {
   // the y where the surface was seen: a culled-while-visible hole with visiblePoint.y outside it is a height bound
   // too small.
   float lodBoxMinY = 0, lodBoxMaxY = 0;
+  // On screen (docs/verify.md, "On screen"): true for every reported hole. A hole is never proven off screen: a
+  // patch whose surface box is outside the frustum is Invisible and no hole; Visible holes have a point inside the
+  // frustum; Undecided ones may be on screen and count as on screen.
+  bool onScreen = true;
 };
 
 const char* toString(HoleKind k);  // "discarded", "culled_while_visible"
@@ -648,6 +671,16 @@ struct Stats {
   int64_t factorDiffs = 0;
   int64_t factorDiffsTessellation = 0;
   int64_t denormalFactors = 0; // hull factors the source returned as denormals (DenormalFactor), flushed or not
+  // On screen (docs/verify.md, "On screen"). cracks, tJunctions, worstGapWorld and worstGapPixels above count every
+  // finding (whole-mesh comparisons); of them, these are proven off screen (Finding::onScreen false): the factors
+  // that made them belong to this camera, so no other camera sees them either. verdictOf counts only the on-screen
+  // ones unless asked for all. Holes are on screen by construction (Hole::onScreen).
+  int64_t cracksOffScreen = 0;
+  int64_t tJunctionsOffScreen = 0;
+  double worstGapWorldOnScreen = 0;  // the maxima of Finding::onScreenGapWorld / onScreenGapPixels
+  double worstGapPixelsOnScreen = 0;
+  int64_t cracksOnScreen() const { return cracks - cracksOffScreen; }
+  int64_t tJunctionsOnScreen() const { return tJunctions - tJunctionsOffScreen; }
 };
 
 struct Report {
@@ -724,7 +757,9 @@ struct CameraResult {
   std::string error;             // the camera could not be checked (Report::error); done is false
   Stats stats;
   bool hasFinding = false;
-  Finding worst;                 // the finding with the largest gap (first crack or T-junction if no gap)
+  // The finding with the largest gap (first crack or T-junction if no gap) among the findings that count: the
+  // on-screen ones by their onScreenGapWorld, or with CheckOptions::countOffScreen all of them by gapWorld.
+  Finding worst;
   bool hasHole = false;
   Hole firstHole;                // the first hole in layout order
 };
@@ -764,15 +799,18 @@ struct SweepResult {
 
 // The verdict of a report or a sweep, in one place (the cli turns it into words and an exit status).
 enum class Verdict : uint8_t {
-  Watertight,      // at least one shared edge classified, every one a match, no hole, every camera checked
+  Watertight,      // at least one shared edge classified, every one a match, no hole, every camera checked (by
+                   // default: every finding off screen; see verdictOf)
   TJunctionsOnly,  // as Watertight but some T-junctions (no gap now; a gap once displacement differs)
   Cracks,          // at least one crack (holes may come with them)
   Holes,           // at least one hole, no crack
   NothingChecked,  // no shared edge was classified (and no crack or hole): not clean
   Unchecked,       // some cameras could not be checked (and no crack or hole): not clean
 };
-Verdict verdictOf(const Stats& s);
-Verdict verdictOf(const SweepResult& r);
+// countOffScreen false (default): cracks and T-junctions proven off screen (Stats::cracksOffScreen,
+// tJunctionsOffScreen) do not count; true: every finding counts (CheckOptions::countOffScreen, the cli's --offscreen).
+Verdict verdictOf(const Stats& s, bool countOffScreen = false);
+Verdict verdictOf(const SweepResult& r, bool countOffScreen = false);
 
 // Adds one camera's (or one shard's) stats to a total: every count summed, the worst gaps the maxima. What sweep
 // does per camera; merging shards does it per shard.

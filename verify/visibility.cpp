@@ -3,6 +3,7 @@
 // Both in double from lod's float matrices, so the test does not inherit the float rounding of the LOD's own cull.
 #include "verify/internal.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace fftess::verify::detail {
@@ -30,6 +31,46 @@ bool FrustumTest::boxOutside(const glm::dvec3& lo, const glm::dvec3& hi) const {
     if (n[0] * x + n[1] * y + n[2] * z + n[3] < 0) return true;
   }
   return false;
+}
+
+// The same planes; a box counts as outside a plane only by a margin: at the corner tested, the plane's value
+// (w +- x, w +- y, w +- z of the clip matrix's rows) must be below -2^-16 * sum over c of (|m[3][c]| + |m[k][c]|) *
+// M_c, M_c = max(|lo_c|, |hi_c|) (M_3 = 1): a bound on the magnitudes a GPU's float clip coordinates w and x (y, z)
+// of any point of the box are rounded relative to (view, then projection: a few roundings of 2^-24 each). The margin
+// is 2^8 times that, so nothing a GPU may draw is called off screen. Monotone: a box inside a box proven off screen
+// is proven off screen (its value is no larger, its margin no larger). The clip matrix itself is the double product
+// of lod's float matrices (as boxOutside).
+bool FrustumTest::boxOffScreen(const glm::dvec3& lo, const glm::dvec3& hi) const {
+  static constexpr int kRow[6] = {0, 0, 1, 1, 2, 2};
+  static constexpr double kSign[6] = {1, -1, 1, -1, 1, -1};
+  for (int p = 0; p < 6; ++p) {
+    double n[4];
+    for (int c = 0; c < 4; ++c) n[c] = m_[3][c] + kSign[p] * m_[kRow[p]][c];
+    const double x = n[0] >= 0 ? hi.x : lo.x, y = n[1] >= 0 ? hi.y : lo.y, z = n[2] >= 0 ? hi.z : lo.z;
+    const double value = n[0] * x + n[1] * y + n[2] * z + n[3];
+    const double at[4] = {std::fmax(std::fabs(lo.x), std::fabs(hi.x)), std::fmax(std::fabs(lo.y), std::fabs(hi.y)),
+                          std::fmax(std::fabs(lo.z), std::fabs(hi.z)), 1};
+    double scale = 0;
+    for (int c = 0; c < 4; ++c) scale += (std::fabs(m_[3][c]) + std::fabs(m_[kRow[p]][c])) * at[c];
+    if (value < -0x1p-16 * scale) return true;
+  }
+  return false;
+}
+
+bool FrustumTest::clipSegment(const glm::dvec3& p, const glm::dvec3& q, double& t0, double& t1) const {
+  static constexpr int kRow[6] = {0, 0, 1, 1, 2, 2};
+  static constexpr double kSign[6] = {1, -1, 1, -1, 1, -1};
+  for (int k = 0; k < 6; ++k) {
+    double n[4];
+    for (int c = 0; c < 4; ++c) n[c] = m_[3][c] + kSign[k] * m_[kRow[k]][c];
+    const double dp = n[0] * p.x + n[1] * p.y + n[2] * p.z + n[3];
+    const double dq = n[0] * q.x + n[1] * q.y + n[2] * q.z + n[3];
+    if (dp < 0 && dq < 0) return false;
+    if (dp < 0) t0 = std::max(t0, dp / (dp - dq)); // enters the plane's inside at this t
+    if (dq < 0) t1 = std::min(t1, dp / (dp - dq)); // leaves it
+    if (t0 > t1) return false;
+  }
+  return true;
 }
 
 bool FrustumTest::inside(const glm::vec3& p) const {
