@@ -144,6 +144,33 @@ std::string verdictWords(vf::Verdict verdict, const vf::SweepResult& res, size_t
   return "?";
 }
 
+// The cameras of a sweep by index (vf::CameraSet): the generator option given, else the scene's camera path, else a
+// flyover of kDefaultFlyover.
+static vf::CameraSet cameraSet(const SweepArgs& a, const vf::Terrain& terrain, uint64_t seed) {
+  if (a.orbit > 0) return vf::CameraSet::orbit(terrain, size_t(a.orbit));
+  if (a.flyover > 0) return vf::CameraSet::flyover(terrain, size_t(a.flyover));
+  if (a.random > 0) return vf::CameraSet::random(terrain, size_t(a.random), seed);
+  if (!terrain.scene().cameraPath.empty()) return vf::CameraSet::path(terrain);
+  return vf::CameraSet::flyover(terrain, kDefaultFlyover);
+}
+
+static std::string cameraWords(const SweepArgs& a, const vf::Terrain& terrain, uint64_t seed) {
+  if (a.orbit > 0) return "orbit of " + std::to_string(a.orbit);
+  if (a.flyover > 0) return "flyover of " + std::to_string(a.flyover);
+  if (a.random > 0) return std::to_string(a.random) + " random, seed " + std::to_string(seed);
+  if (!terrain.scene().cameraPath.empty()) return "the scene's camera path";
+  return "flyover of " + std::to_string(kDefaultFlyover) + ", the scene has no camera path";
+}
+
+// The sweep picture draws every camera of the run (the path joined in order, the map's extent), so --svg, and only
+// --svg, holds them all in memory.
+static std::vector<vf::Camera> svgCameras(const vf::CameraSet& cams) {
+  std::vector<vf::Camera> out;
+  out.reserve(cams.size());
+  for (size_t i = 0; i < cams.size(); ++i) out.push_back(cams.at(i));
+  return out;
+}
+
 // --shard K/N: 1 <= K <= N, both whole numbers.
 static void parseShard(const std::string& text, size_t& k, size_t& n) {
   k = 0, n = 1;
@@ -190,22 +217,14 @@ int runSweep(const SweepArgs& a) {
   // was done are still written. A second Ctrl-C kills the process.
   InterruptGuard interrupts;
   const std::atomic<bool>* cancel = InterruptGuard::flag();
-  std::vector<vf::Camera> cams; // every camera of the run (global indices), also when sharded
-  std::string how;
-  size_t requestedAll = 0;
-  if (a.orbit > 0) cams = vf::orbitCameras(terrain, a.orbit, 0, 0, cancel), how = "orbit of " + std::to_string(a.orbit), requestedAll = size_t(a.orbit);
-  else if (a.flyover > 0) cams = vf::flyoverCameras(terrain, a.flyover, 0, cancel), how = "flyover of " + std::to_string(a.flyover), requestedAll = size_t(a.flyover);
-  else if (a.random > 0)
-    cams = vf::randomCameras(terrain, a.random, seed, cancel), how = std::to_string(a.random) + " random, seed " + std::to_string(seed), requestedAll = size_t(a.random);
-  else if (!scene.cameraPath.empty()) cams = vf::pathCameras(terrain), how = "the scene's camera path";
-  else cams = vf::flyoverCameras(terrain, kDefaultFlyover, 0, cancel), how = "flyover of " + std::to_string(kDefaultFlyover) + ", the scene has no camera path";
-  if (requestedAll == 0) requestedAll = cams.size();
+  // Every camera of the run (global indices, also when sharded), computed from its index when needed: memory does not
+  // depend on the camera count, and there is no setup to wait for.
+  const vf::CameraSet cams = cameraSet(a, terrain, seed);
+  const std::string how = cameraWords(a, terrain, seed);
+  const size_t requestedAll = cams.size();
   // This run's share: global index g = shardK + local * shardN.
   auto shareOf = [&](size_t total) { return total > shardK ? (total - shardK + shardN - 1) / shardN : 0; };
   const size_t requested = shareOf(requestedAll);
-  std::vector<vf::Camera> mine;
-  mine.reserve(shareOf(cams.size()));
-  for (size_t g = shardK; g < cams.size(); g += shardN) mine.push_back(cams[g]);
   auto global = [&](size_t local) { return shardK + local * shardN; };
   const bool jsonToStdout = a.json == "-";
   const bool talk = !a.quiet && !jsonToStdout;
@@ -268,20 +287,21 @@ int runSweep(const SweepArgs& a) {
       if (c.stats.cracks > 0) ++crackCameras;
       else if (c.stats.tJunctions > 0) ++tjCameras;
       if (!a.svg.empty()) {
-        dots.push_back(svgCamera(g, cams[g], c));
+        dots.push_back(svgCamera(g, cams.at(g), c));
         if (c.hasHole) holes.push_back({c.firstHole.patch.index, "camera " + std::to_string(g) + ": " + holeCause(c.firstHole).detail});
       }
     }
     if (!jsonFile) return;
-    pending.emplace(c.cameraIndex, sweepCameraJson(g, cams[g], c));
+    pending.emplace(c.cameraIndex, sweepCameraJson(g, cams.at(g), c));
     flushPending(false);
   };
   if (talk)
     std::fprintf(stderr, "fftess sweep %s: %s, %zu cameras (%s)%s\n", a.scene.c_str(), label.c_str(), requested,
                  how.c_str(), sharded ? (", shard " + a.shard).c_str() : "");
   vf::SweepResult res;
-  if (!cancel->load()) res = vf::sweep(terrain, mine, opt, so); // else interrupted during camera generation
-  res.cancelled = res.cancelled || cams.size() < requestedAll; // interrupted while the cameras were generated
+  if (!cancel->load())
+    res = vf::sweep(terrain, requested, [&](size_t local) { return cams.at(global(local)); }, opt, so);
+  res.cancelled = res.cancelled || (cancel->load() && res.camerasDone + res.camerasInvalid < requested);
   progress.finish();
   const double elapsed = progress.elapsed();
   const std::vector<std::string> order = tally.order();
@@ -321,7 +341,7 @@ int runSweep(const SweepArgs& a) {
       text += "  causes (findings of each cause, cameras where it appeared, the first camera where it appeared):\n";
       for (const std::string& k : order) {
         const CauseInfo& c = causes.at(k);
-        const vf::Camera& cam = cams[c.first];
+        const vf::Camera cam = cams.at(c.first);
         std::snprintf(buf, sizeof buf, "    %-75s %7lld findings on %5zu cameras, first #%zu eye (%.1f, %.1f, %.1f)\n",
                       k.c_str(), static_cast<long long>(c.findings), c.cameras, c.first, static_cast<double>(cam.eye.x),
                       static_cast<double>(cam.eye.y), static_cast<double>(cam.eye.z));
@@ -329,7 +349,7 @@ int runSweep(const SweepArgs& a) {
         text += "      e.g. " + c.detail + "\n";
       }
     }
-    text += "verdict: " + verdictWords(verdict, res, crackCameras, holeCameras, mine.size()) + "\n";
+    text += "verdict: " + verdictWords(verdict, res, crackCameras, holeCameras, requested) + "\n";
   }
   if (jsonFile) {
     flushPending(true);
@@ -347,7 +367,7 @@ int runSweep(const SweepArgs& a) {
     std::vector<size_t> firsts;
     for (const std::string& k : order) firsts.push_back(causes.at(k).first);
     std::sort(dots.begin(), dots.end(), [](const SvgCamera& x, const SvgCamera& y) { return x.index < y.index; });
-    svgFile->buffer() = sweepSvg(terrain, cams, dots, holes, firsts, a.random > 0, "fftess sweep " + a.scene);
+    svgFile->buffer() = sweepSvg(terrain, svgCameras(cams), dots, holes, firsts, a.random > 0, "fftess sweep " + a.scene);
   }
   AtomicFile* files[2];
   size_t nFiles = 0;
