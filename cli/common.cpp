@@ -1,4 +1,5 @@
 #include "common.h"
+#include "progress.h"
 
 #include <atomic>
 #include <cerrno>
@@ -32,7 +33,28 @@ extern "C" void onFatalSignal(int sig) {
   for (int i = 0; i < kMaxTemps; ++i)
     if (gTempUsed[i].load()) ::unlink(gTemps[i]);
   std::signal(sig, SIG_DFL);
-  std::raise(sig);
+  std::raise(sig); // delivered when the handler returns (the signal is blocked in it): the default action
+}
+
+// Every signal whose default action ends the process (SIGKILL and SIGSTOP cannot be caught).
+void installCleanup() {
+  static bool done = false;
+  if (done) return;
+  done = true;
+  const int fatal[] = {SIGHUP,  SIGINT,  SIGQUIT, SIGILL,  SIGTRAP,   SIGABRT, SIGBUS,  SIGFPE,  SIGUSR1,
+                       SIGSEGV, SIGUSR2, SIGPIPE, SIGALRM, SIGTERM,   SIGSTKFLT, SIGXCPU, SIGXFSZ, SIGVTALRM,
+                       SIGPROF, SIGIO,   SIGPWR,  SIGSYS};
+  auto install = [](int sig) { // only where nobody else handles the signal (an ignored one stays ignored)
+    struct sigaction old;
+    if (::sigaction(sig, nullptr, &old) != 0 || (old.sa_flags & SA_SIGINFO) || old.sa_handler != SIG_DFL) return;
+    struct sigaction sa {};
+    sa.sa_handler = onFatalSignal;
+    sigfillset(&sa.sa_mask); // one handler at a time: a second signal waits, then finds the files gone
+    sa.sa_flags = SA_RESTART;
+    ::sigaction(sig, &sa, nullptr);
+  };
+  for (int sig : fatal) install(sig);
+  for (int sig = SIGRTMIN; sig <= SIGRTMAX; ++sig) install(sig);
 }
 
 int registerTemp(const std::string& path) { // from the main thread only
@@ -41,10 +63,7 @@ int registerTemp(const std::string& path) { // from the main thread only
     if (gTempUsed[i].load()) continue;
     std::memcpy(gTemps[i], path.c_str(), path.size() + 1);
     gTempUsed[i].store(true);
-    for (int sig : {SIGINT, SIGTERM, SIGHUP}) { // only where nobody else handles the signal
-      struct sigaction old;
-      if (::sigaction(sig, nullptr, &old) == 0 && old.sa_handler == SIG_DFL) std::signal(sig, onFatalSignal);
-    }
+    installCleanup();
     return i;
   }
   return -1;
@@ -55,7 +74,7 @@ void unregisterTemp(int slot) {
 }
 
 [[noreturn]] void cannotWrite(const std::string& path, const std::string& why) {
-  throw UsageError("cannot write " + quoteToken(path) + ": " + why);
+  throw UsageError("cannot write " + quotePath(path) + ": " + why);
 }
 
 } // namespace
@@ -107,7 +126,7 @@ static void writeAll(int fd, const std::string& data, const std::string& path) {
     const ssize_t n = ::write(fd, data.data() + done, data.size() - done);
     if (n < 0) {
       if (errno == EINTR) continue;
-      throw std::runtime_error("writing " + quoteToken(path) + " failed: " + std::strerror(errno));
+      throw std::runtime_error("writing " + quotePath(path) + " failed: " + std::strerror(errno));
     }
     done += static_cast<size_t>(n);
   }
@@ -121,7 +140,7 @@ void AtomicFile::write() {
   ::fchmod(fd_, 0644);
   const int rc = ::close(fd_);
   fd_ = -1;
-  if (rc != 0) throw std::runtime_error("writing " + quoteToken(path_) + " failed: " + std::strerror(errno));
+  if (rc != 0) throw std::runtime_error("writing " + quotePath(path_) + " failed: " + std::strerror(errno));
 }
 
 void AtomicFile::publish() {
@@ -135,9 +154,9 @@ void AtomicFile::publish() {
     if (directFd_ < 0) stream(std::string()); // opens it: an empty report still reaches a FIFO's reader as EOF
     const int fd = directFd_;
     directFd_ = -1;
-    if (::close(fd) != 0) throw std::runtime_error("writing " + quoteToken(path_) + " failed: " + std::strerror(errno));
+    if (::close(fd) != 0) throw std::runtime_error("writing " + quotePath(path_) + " failed: " + std::strerror(errno));
   } else if (std::rename(tmp_.c_str(), target_.c_str()) != 0) {
-    throw std::runtime_error("writing " + quoteToken(path_) + " failed: " + std::strerror(errno));
+    throw std::runtime_error("writing " + quotePath(path_) + " failed: " + std::strerror(errno));
   } else {
     unregisterTemp(tempSlot_); // renamed: the name is the report now, a signal must not remove it
     tempSlot_ = -1;
@@ -145,12 +164,30 @@ void AtomicFile::publish() {
   published_ = true;
 }
 
+// Opens a FIFO, device or /dev/stdout for writing. A FIFO without a reader is waited for without blocking in open(),
+// so a Ctrl-C is answered at once: it throws Interrupted when SIGINT arrives during the wait (with InterruptGuard; with
+// the default action the signal ends the process and its temporary files, onFatalSignal).
+static int openDirect(const std::string& target, const std::string& path) {
+  const bool wasCancelled = InterruptGuard::flag()->load();
+  for (;;) {
+    const int fd = ::open(target.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC | O_NONBLOCK);
+    if (fd >= 0) {
+      ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
+      return fd;
+    }
+    if (errno != ENXIO && errno != EINTR) return -1; // ENXIO: a FIFO with no reader yet
+    if (!wasCancelled && InterruptGuard::flag()->load())
+      throw Interrupted("interrupted while waiting for a reader of " + quotePath(path) + ": the reports were not written");
+    ::usleep(20 * 1000);
+  }
+}
+
 void AtomicFile::stream(const std::string& s) {
   if (path_ == "-") {
     writeStdout(s);
   } else if (direct_) {
-    if (directFd_ < 0) directFd_ = ::open(target_.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
-    if (directFd_ < 0) throw std::runtime_error("writing " + quoteToken(path_) + " failed: " + std::strerror(errno));
+    if (directFd_ < 0) directFd_ = openDirect(target_, path_);
+    if (directFd_ < 0) throw std::runtime_error("writing " + quotePath(path_) + " failed: " + std::strerror(errno));
     writeAll(directFd_, s, path_);
   } else {
     writeAll(fd_, s, path_);
@@ -227,7 +264,7 @@ std::string fractionOf65536(int64_t units2) {
   return s + "/65536";
 }
 
-UsageError::UsageError(const std::string& what) : std::runtime_error(printable(what)) {}
+UsageError::UsageError(const std::string& what) : std::runtime_error(printable(what, kMaxMessageBytes)) {}
 
 // Length of the valid UTF-8 sequence at s[i] (no overlongs, no surrogates, <= U+10FFFF), 0 if invalid.
 static size_t utf8Length(const std::string& s, size_t i) {
@@ -267,6 +304,8 @@ std::string printable(const std::string& s, size_t maxBytes) {
 }
 
 std::string quoteToken(const std::string& s) { return "'" + printable(s, 80) + "'"; }
+
+std::string quotePath(const std::string& s) { return "'" + printable(s, std::string::npos) + "'"; }
 
 std::string xmlEscape(const std::string& s) {
   std::string o;

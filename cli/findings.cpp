@@ -206,7 +206,7 @@ std::string statsText(const vf::Stats& s) {
 // ---- shared plumbing ---------------------------------------------------------------------------------------------
 ReportFiles::ReportFiles(const SceneArgs& a) {
   if (!a.json.empty() && !a.svg.empty() && a.json == a.svg && a.json != "-")
-    throw UsageError("--json and --svg name the same file " + quoteToken(a.json));
+    throw UsageError("--json and --svg name the same file " + quotePath(a.json));
   if (!a.json.empty()) json_ = std::make_unique<AtomicFile>(a.json);
   if (!a.svg.empty()) svg_ = std::make_unique<AtomicFile>(a.svg);
 }

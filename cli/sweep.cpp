@@ -205,7 +205,7 @@ int runSweep(const SweepArgs& a) {
   const bool sharded = !a.shard.empty();
   // Output paths are checked before the work (as ReportFiles does; the JSON streams, so it is handled here).
   if (!a.json.empty() && !a.svg.empty() && a.json == a.svg && a.json != "-")
-    throw UsageError("--json and --svg name the same file " + quoteToken(a.json));
+    throw UsageError("--json and --svg name the same file " + quotePath(a.json));
   std::unique_ptr<AtomicFile> jsonFile, svgFile;
   if (!a.json.empty()) jsonFile = std::make_unique<AtomicFile>(a.json);
   if (!a.svg.empty()) svgFile = std::make_unique<AtomicFile>(a.svg);
