@@ -12,6 +12,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <vector>
+
 namespace fftess::cli {
 
 namespace {
@@ -79,22 +81,29 @@ void unregisterTemp(int slot) {
 
 } // namespace
 
+// The file a path finally names: symlinks followed one by one (a dangling link names the file to create), magic
+// links under /proc and /dev left as they are. False with why set on a loop or an unreadable link.
+static bool followLinks(const std::string& path, std::string& target, std::string& why) {
+  target = path;
+  for (int hops = 0;; ++hops) {
+    struct stat st;
+    if (::lstat(target.c_str(), &st) != 0 || !S_ISLNK(st.st_mode)) return true;
+    if (hops >= 40) return why = "too many levels of symbolic links", false;
+    std::string link(4096, '\0');
+    const ssize_t n = ::readlink(target.c_str(), link.data(), link.size());
+    if (n < 0 || static_cast<size_t>(n) >= link.size()) return why = std::strerror(errno), false;
+    link.resize(static_cast<size_t>(n));
+    if (under(target, "/proc/") || under(target, "/dev/")) return true; // magic links (/dev/stdout): as they are
+    target = link.front() == '/' ? link : dirOf(target) + "/" + link;
+  }
+}
+
 AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
   if (path_ == "-") return;
   if (path_.empty()) cannotWrite(path_, "empty path");
   // Follow symlinks ourselves (a dangling link names the file to create); never rename over the link.
-  target_ = path_;
-  for (int hops = 0;; ++hops) {
-    struct stat st;
-    if (::lstat(target_.c_str(), &st) != 0 || !S_ISLNK(st.st_mode)) break;
-    if (hops >= 40) cannotWrite(path_, "too many levels of symbolic links");
-    std::string link(4096, '\0');
-    const ssize_t n = ::readlink(target_.c_str(), link.data(), link.size());
-    if (n < 0 || static_cast<size_t>(n) >= link.size()) cannotWrite(path_, std::strerror(errno));
-    link.resize(static_cast<size_t>(n));
-    if (under(target_, "/proc/") || under(target_, "/dev/")) break; // magic links (/dev/stdout): open them as they are
-    target_ = link.front() == '/' ? link : dirOf(target_) + "/" + link;
-  }
+  std::string why;
+  if (!followLinks(path_, target_, why)) cannotWrite(path_, why);
   struct stat st;
   if (::stat(target_.c_str(), &st) == 0) {
     existed_ = true;
@@ -112,6 +121,60 @@ AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
 }
 
 SignalHandler removeTempsAndDie() { return onFatalSignal; }
+
+namespace {
+
+// What a path finally names, for comparing files: an existing file by device and inode (hard links, symlinks, "./x"
+// and "x" all compare equal), a new one by its resolved directory and name. skip: stdout ("-") or a character device
+// (/dev/null may take several outputs).
+struct FileId {
+  bool skip = false, exists = false;
+  dev_t dev = 0;
+  ino_t ino = 0;
+  std::string resolved;
+};
+
+FileId fileId(const std::string& path) {
+  FileId id;
+  struct stat st;
+  if (path == "-" || path.empty()) return id.skip = true, id;
+  if (::stat(path.c_str(), &st) == 0) {
+    id.skip = S_ISCHR(st.st_mode);
+    id.exists = true, id.dev = st.st_dev, id.ino = st.st_ino;
+    return id;
+  }
+  std::string target, why;
+  if (!followLinks(path, target, why)) target = path;
+  const size_t slash = target.find_last_of('/');
+  const std::string name = slash == std::string::npos ? target : target.substr(slash + 1);
+  char* dir = ::realpath(dirOf(target).c_str(), nullptr);
+  id.resolved = (dir ? std::string(dir) : dirOf(target)) + "/" + name;
+  std::free(dir);
+  return id;
+}
+
+bool sameFile(const FileId& a, const FileId& b) {
+  if (a.skip || b.skip || a.exists != b.exists) return false;
+  return a.exists ? a.dev == b.dev && a.ino == b.ino : a.resolved == b.resolved;
+}
+
+} // namespace
+
+void refuseSameFiles(const std::vector<FileArg>& outputs, const std::vector<FileArg>& inputs) {
+  std::vector<FileId> ids;
+  for (const FileArg& o : outputs) ids.push_back(fileId(o.path));
+  for (size_t i = 0; i < outputs.size(); ++i) {
+    if (outputs[i].path.empty()) continue;
+    for (size_t k = 0; k < i; ++k)
+      if (!outputs[k].path.empty() && sameFile(ids[k], ids[i]))
+        throw UsageError(outputs[k].option + " " + quotePath(outputs[k].path) + " and " + outputs[i].option + " " +
+                         quotePath(outputs[i].path) + " are the same file: one output would replace the other");
+    for (const FileArg& in : inputs)
+      if (!in.path.empty() && sameFile(fileId(in.path), ids[i]))
+        throw UsageError(outputs[i].option + " " + quotePath(outputs[i].path) + " is the same file as " + in.option + " " +
+                         quotePath(in.path) + ": writing it would replace the input");
+  }
+}
 
 AtomicFile::~AtomicFile() {
   if (fd_ >= 0) ::close(fd_);

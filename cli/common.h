@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace fftess::cli {
 
@@ -70,6 +71,17 @@ private:
 // one with it; SIGTERM, SIGHUP): the handler unlinks them and re-raises the signal with its default action.
 using SignalHandler = void (*)(int);
 SignalHandler removeTempsAndDie();
+
+// A file named on the command line, for refuseSameFiles: the option (or argument name) and the path as given.
+struct FileArg {
+  std::string option;
+  std::string path; // "" = not given (skipped)
+};
+// Refuses (UsageError naming both options and paths) two outputs that are the same file, or an output that is one of
+// the inputs. Compared by the file finally named, not by spelling: symlinks followed, an existing file by st_dev +
+// st_ino (hard links, "./x" and "x"), a new one by its resolved directory and name. "-" (stdout) and character devices
+// (/dev/null) are never refused. Call before any work and before AtomicFile claims the outputs.
+void refuseSameFiles(const std::vector<FileArg>& outputs, const std::vector<FileArg>& inputs = {});
 
 // Writes several reports all or nothing: every temporary file is written first, then all are published; if one
 // fails, the ones already published that did not exist before are removed and the error is rethrown.

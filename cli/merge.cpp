@@ -74,6 +74,9 @@ vf::Stats statsOf(const json& j) {
 int runMerge(const MergeArgs& a) {
   if (a.inputs.empty()) throw UsageError("merge: no reports");
   std::unique_ptr<AtomicFile> out;
+  std::vector<FileArg> inputs;
+  for (const std::string& p : a.inputs) inputs.push_back({"REPORT", p});
+  refuseSameFiles({{"--json", a.json}}, inputs);
   if (!a.json.empty()) out = std::make_unique<AtomicFile>(a.json); // the path is checked before the work
   std::vector<json> shards;
   for (const std::string& p : a.inputs) shards.push_back(readReport(p));

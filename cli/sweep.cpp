@@ -90,9 +90,13 @@ CLI::App* addSweep(CLI::App& app, SweepArgs& a) {
               "Exit status: 0 watertight, 1 cracks or holes found, nothing checked or a camera that could not be checked, "
               "2 bad usage or scene, 3 internal error.");
   addSceneOptions(sub, a);
-  sub->add_option("--orbit", a.orbit, "N cameras on a circle around the terrain, looking at its centre");
-  sub->add_option("--flyover", a.flyover, "N cameras on a straight flight across the terrain");
-  sub->add_option("--random", a.random, "N cameras at random positions and directions (see --seed)");
+  // The *Given flags: a count given as -1 is refused like any other count below 1, never taken for "not given".
+  sub->add_option_function<int>("--orbit", [&a](const int& n) { a.orbit = n, a.orbitGiven = true; },
+                                "N cameras on a circle around the terrain, looking at its centre");
+  sub->add_option_function<int>("--flyover", [&a](const int& n) { a.flyover = n, a.flyoverGiven = true; },
+                                "N cameras on a straight flight across the terrain");
+  sub->add_option_function<int>("--random", [&a](const int& n) { a.random = n, a.randomGiven = true; },
+                                "N cameras at random positions and directions (see --seed)");
   sub->add_option("--seed", a.seed, "Seed for --random")->capture_default_str();
   sub->add_option("-j,--threads", a.threads, "Worker threads (default 0: all cores)")->capture_default_str();
   sub->add_option("--label", a.label, "Name for this run in the summary (default: the scene's name)");
@@ -193,19 +197,18 @@ static void parseShard(const std::string& text, size_t& k, size_t& n) {
 }
 
 int runSweep(const SweepArgs& a) {
-  const int generators = (a.orbit >= 0) + (a.flyover >= 0) + (a.random >= 0);
+  const int generators = a.orbitGiven + a.flyoverGiven + a.randomGiven;
   if (generators > 1) throw UsageError("sweep: give only one of --orbit, --flyover, --random");
-  if (a.orbit == 0 || a.orbit < -1) throw UsageError("--orbit " + std::to_string(a.orbit) + ": must be >= 1");
-  if (a.flyover == 0 || a.flyover < -1) throw UsageError("--flyover " + std::to_string(a.flyover) + ": must be >= 1");
-  if (a.random == 0 || a.random < -1) throw UsageError("--random " + std::to_string(a.random) + ": must be >= 1");
+  if (a.orbitGiven && a.orbit < 1) throw UsageError("--orbit " + std::to_string(a.orbit) + ": must be >= 1");
+  if (a.flyoverGiven && a.flyover < 1) throw UsageError("--flyover " + std::to_string(a.flyover) + ": must be >= 1");
+  if (a.randomGiven && a.random < 1) throw UsageError("--random " + std::to_string(a.random) + ": must be >= 1");
   if (a.threads < 0) throw UsageError("--threads " + std::to_string(a.threads) + ": must be >= 0");
   const uint64_t seed = parseSeed(a.seed);
   size_t shardK = 0, shardN = 1;
   parseShard(a.shard, shardK, shardN);
   const bool sharded = !a.shard.empty();
   // Output paths are checked before the work (as ReportFiles does; the JSON streams, so it is handled here).
-  if (!a.json.empty() && !a.svg.empty() && a.json == a.svg && a.json != "-")
-    throw UsageError("--json and --svg name the same file " + quotePath(a.json));
+  refuseSameFiles(reportArgs(a), sceneInputs(a, nullptr));
   std::unique_ptr<AtomicFile> jsonFile, svgFile;
   if (!a.json.empty()) jsonFile = std::make_unique<AtomicFile>(a.json);
   if (!a.svg.empty()) svgFile = std::make_unique<AtomicFile>(a.svg);

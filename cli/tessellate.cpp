@@ -380,6 +380,7 @@ void appendHashLine(std::string& out, const BatchPatch& bp, const std::string& b
 
 int runTessellate(const TessellateArgs& a) {
   if (a.threads < 0) throw UsageError("tessellate: --threads must be >= 0 (0: one per hardware thread)");
+  if (a.patches.empty() && a.input != "-") refuseSameFiles({{"-o", a.output}}, {{"INPUT", a.input}});
   LineSource source(a);
 
   // Pass 1: check every line.

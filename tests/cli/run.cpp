@@ -82,7 +82,8 @@ TimedResult runWith(const std::vector<std::string>& args, const RunOptions& o) {
   writeFile(err, "");
   posix_spawn_file_actions_t fa;
   posix_spawn_file_actions_init(&fa);
-  posix_spawn_file_actions_addopen(&fa, 0, in.c_str(), O_RDONLY, 0);
+  if (o.closeStdin) posix_spawn_file_actions_addclose(&fa, 0);
+  else posix_spawn_file_actions_addopen(&fa, 0, in.c_str(), O_RDONLY, 0);
   if (o.stdoutPath.empty())
     posix_spawn_file_actions_addopen(&fa, 1, out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
   else

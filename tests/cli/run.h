@@ -21,6 +21,7 @@ Result run(const std::vector<std::string>& args, const std::string& input = "");
 // a text or after a delay, and a hook that runs while the child runs (e.g. reading a FIFO the child writes).
 struct RunOptions {
   std::string input;
+  bool closeStdin = false;           // start the program with descriptor 0 closed (`<&-`); input is ignored
   std::string stdoutPath;            // "" = captured in Result::out
   std::string sigintWhenErr;         // send SIGINT once stderr contains this ("" = not by text)
   double sigintAfter = -1;           // seconds after the start (or after sigintWhenErr matched); < 0: no SIGINT
