@@ -231,6 +231,8 @@ void AtomicFile::publish() {
 // so a Ctrl-C is answered at once: it throws Interrupted when SIGINT arrives during the wait (with InterruptGuard; with
 // the default action the signal ends the process and its temporary files, onFatalSignal).
 static int openDirect(const std::string& target, const std::string& path) {
+  struct stat st;
+  if (::stat(target.c_str(), &st) != 0 || !S_ISFIFO(st.st_mode)) return ::open(target.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
   const bool wasCancelled = InterruptGuard::flag()->load();
   for (;;) {
     const int fd = ::open(target.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC | O_NONBLOCK);
@@ -238,7 +240,7 @@ static int openDirect(const std::string& target, const std::string& path) {
       ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
       return fd;
     }
-    if (errno != ENXIO && errno != EINTR) return -1; // ENXIO: a FIFO with no reader yet
+    if (errno != ENXIO && errno != EINTR) return -1; // ENXIO: no reader yet
     if (!wasCancelled && InterruptGuard::flag()->load())
       throw Interrupted("interrupted while waiting for a reader of " + quotePath(path) + ": the reports were not written");
     ::usleep(20 * 1000);
