@@ -166,12 +166,12 @@ static std::string cameraWords(const SweepArgs& a, const vf::Terrain& terrain, u
   return "flyover of " + std::to_string(kDefaultFlyover) + ", the scene has no camera path";
 }
 
-// The sweep picture draws every camera of the run (the path joined in order, the map's extent), so --svg, and only
-// --svg, holds them all in memory.
-static std::vector<vf::Camera> svgCameras(const vf::CameraSet& cams) {
+// The sweep picture draws the cameras of the run (the path joined in order, the map's extent) up to `end` (all of
+// them; an interrupted run's up to the last one checked), so --svg, and only --svg, holds them in memory.
+static std::vector<vf::Camera> svgCameras(const vf::CameraSet& cams, size_t end) {
   std::vector<vf::Camera> out;
-  out.reserve(cams.size());
-  for (size_t i = 0; i < cams.size(); ++i) out.push_back(cams.at(i));
+  out.reserve(std::min(end, cams.size()));
+  for (size_t i = 0; i < end && i < cams.size(); ++i) out.push_back(cams.at(i));
   return out;
 }
 
@@ -254,6 +254,7 @@ int runSweep(const SweepArgs& a) {
   std::vector<SvgHole> holes;
   size_t crackCameras = 0, tjCameras = 0, holeCameras = 0;
   size_t firstInvalid = SIZE_MAX;
+  size_t endChecked = 0; // 1 + the highest global index checked
   std::string firstInvalidError;
 
   // Progress on stderr: a bar on a terminal, a plain line every few seconds otherwise, nothing with --quiet.
@@ -284,6 +285,7 @@ int runSweep(const SweepArgs& a) {
   };
   so.onCamera = [&](const vf::CameraResult& c) {
     const size_t g = global(c.cameraIndex);
+    endChecked = std::max(endChecked, g + 1);
     if (!c.error.empty() && g < firstInvalid) firstInvalid = g, firstInvalidError = c.error;
     if (c.done) {
       if (c.stats.holes > 0) ++holeCameras;
@@ -370,7 +372,7 @@ int runSweep(const SweepArgs& a) {
     std::vector<size_t> firsts;
     for (const std::string& k : order) firsts.push_back(causes.at(k).first);
     std::sort(dots.begin(), dots.end(), [](const SvgCamera& x, const SvgCamera& y) { return x.index < y.index; });
-    svgFile->buffer() = sweepSvg(terrain, svgCameras(cams), dots, holes, firsts, a.random > 0, "fftess sweep " + a.scene);
+    svgFile->buffer() = sweepSvg(terrain, svgCameras(cams, res.cancelled ? endChecked : cams.size()), dots, holes, firsts, a.random > 0, "fftess sweep " + a.scene);
   }
   AtomicFile* files[2];
   size_t nFiles = 0;
