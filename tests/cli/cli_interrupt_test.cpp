@@ -129,9 +129,14 @@ TEST_CASE("interrupt: every fatal signal removes the temporary report files", "[
     const std::string d = scratch("signal-" + std::to_string(sig));
     clitest::RunOptions o;
     o.signal = sig;
-    o.sigintAfter = 0.15; // the scene loads and the reports' temporary files exist; check --mesh takes seconds
+    bool temps = false; // the reports' temporary files exist when the signal is sent (check --mesh takes seconds)
+    o.whileRunning = [&](pid_t) {
+      for (int waited = 0; !temps && waited < 20000; waited += 5, ::usleep(5000)) temps = !noTempFiles(d);
+    };
+    o.sigintAfter = 0;
     const auto r = runWith({"check", scene, "--mesh", "--json", d + "/c.json", "--svg", d + "/c.svg"}, o);
     INFO("signal " << sig << ", stderr: " << r.err);
+    REQUIRE(temps);
     REQUIRE(r.interrupted);
     CHECK_FALSE(r.watchdogFired);
     CHECK(r.status == 128 + sig); // the default action, after the cleanup
