@@ -216,8 +216,9 @@ int runSweep(const SweepArgs& a) {
   const vf::Scene& scene = terrain.scene();
   vf::CheckOptions opt = checkOptions(a, terrain);
   opt.maxFindings = static_cast<size_t>(-1); // every finding reaches onReport, so the cause counts are complete
-  // Ctrl-C from here on (camera generation, the sweep, the reports) stops the work; the summary and reports of what
-  // was done are still written. A second Ctrl-C kills the process.
+  // Ctrl-C from here on (the sweep, the reports) stops the work; the summary and reports of what was done are still
+  // written. A second Ctrl-C kills the process (temporary files removed). Once the work is done, a first Ctrl-C while a
+  // report waits for a FIFO's reader ends that wait (AtomicFile: Interrupted, exit 130).
   InterruptGuard interrupts;
   const std::atomic<bool>* cancel = InterruptGuard::flag();
   // Every camera of the run (global indices, also when sharded), computed from its index when needed: memory does not
