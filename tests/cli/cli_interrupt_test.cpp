@@ -90,8 +90,8 @@ TEST_CASE("interrupt: the first Ctrl-C while a report waits for a FIFO's reader 
   ::unlink(fifo.c_str());
   REQUIRE(::mkfifo(fifo.c_str(), 0644) == 0);
   clitest::RunOptions o;
-  o.sigintWhenErr = "fftess sweep "; // the header: the sweep starts; 3 cameras take well under a second
-  o.sigintAfter = 1.5;
+  o.sigintWhenErr = "3/3 cameras"; // the last progress line: the sweep is done, the reports are being written
+  o.sigintAfter = 0.5;
   const auto r = runWith({"sweep", kRings, "--orbit", "3", "--json", fifo, "--svg", svg}, o);
   REQUIRE(r.interrupted);
   INFO("exit " << r.exitAfterSigint << " s after SIGINT; stderr: " << r.err);
