@@ -202,9 +202,9 @@ std::string fmt(const char* f, double v) {
 BenchTable runBenchTable(const BenchReportArgs& a) {
   BenchTable t;
   const vf::SceneResult base = vf::loadScene(a.scene, a.overrides);
-  if (!base) throw UsageError(base.error);
+  if (!base) throw UsageError(loaderMessage(a.scene, base.error));
   const vf::TerrainResult bt = vf::prepareTerrain(base.scene);
-  if (!bt) throw UsageError(bt.error);
+  if (!bt) throw UsageError(loaderMessage(a.scene, bt.error));
   t.scene = a.scene;
   t.patches = bt.terrain.patchCount();
   t.cameras = vf::randomCameras(bt.terrain, a.cameras, a.seed);

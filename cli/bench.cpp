@@ -65,6 +65,7 @@ static int runBenchReport(const BenchArgs& a) {
   } catch (const std::exception&) {
     throw UsageError("--seed " + quoteToken(a.seed) + ": expected a whole number");
   }
+  refuseSameFiles({{"--markdown", a.markdown}, {"--json", a.json}, {"--svg", a.svg}}, {{"--scene", a.scene}});
   std::unique_ptr<AtomicFile> md, js, svg; // paths checked before the work
   if (!a.markdown.empty()) md = std::make_unique<AtomicFile>(a.markdown);
   if (!a.json.empty()) js = std::make_unique<AtomicFile>(a.json);

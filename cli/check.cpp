@@ -21,7 +21,9 @@ CLI::App* addCheck(CLI::App& app, CheckArgs& a) {
               "Exit status: 0 watertight, 1 cracks or holes found or nothing checked, 2 bad usage or scene, 3 internal "
               "error.");
   addSceneOptions(sub, a);
-  sub->add_option("--path-camera", a.pathCamera, "Use camera N of the scene's [[camera_path]] instead of [camera]");
+  sub->add_option_function<int>(
+      "--path-camera", [&a](const int& n) { a.pathCamera = n, a.pathCameraGiven = true; },
+      "Use camera N of the scene's [[camera_path]] instead of [camera] (0 is the first)");
   sub->add_option("--show", a.show, "Finding lines to print (default 20; all are in --json)")->capture_default_str();
   sub->add_flag("--mesh", a.mesh, "Also run the whole-mesh check (full tessellation) and compare the two verdicts");
   return sub;
@@ -29,11 +31,13 @@ CLI::App* addCheck(CLI::App& app, CheckArgs& a) {
 
 int runCheck(const CheckArgs& a) {
   if (a.show < 0) throw UsageError("--show " + std::to_string(a.show) + ": must be >= 0");
+  if (a.pathCameraGiven && a.pathCamera < 0)
+    throw UsageError("--path-camera " + std::to_string(a.pathCamera) + ": must be >= 0 (0 is the path's first camera)");
   ReportFiles reports(a); // output paths are checked before the work
   const vf::Terrain terrain = load(a); // the one terrain build of this command
   const vf::Scene& scene = terrain.scene();
   vf::Camera cam = scene.camera;
-  if (a.pathCamera >= 0) {
+  if (a.pathCameraGiven) {
     if (static_cast<size_t>(a.pathCamera) >= scene.cameraPath.size())
       throw UsageError("--path-camera " + std::to_string(a.pathCamera) + ": the scene's camera path has " +
                        std::to_string(scene.cameraPath.size()) + " cameras");

@@ -25,12 +25,14 @@ struct SceneArgs {
 
 struct CheckArgs : SceneArgs {
   int pathCamera = -1; // --path-camera N: the scene path's camera N instead of [camera]
+  bool pathCameraGiven = false; // --path-camera was given (any value, negative ones refused)
   int show = 20;       // finding lines printed
   bool mesh = false;   // also run the whole-mesh check and compare
 };
 
 struct SweepArgs : SceneArgs {
   int orbit = -1, flyover = -1, random = -1; // -1: not given; given counts must be >= 1
+  bool orbitGiven = false, flyoverGiven = false, randomGiven = false; // the option was given (-1 included: refused)
   std::string seed = "1";                     // --seed: a decimal 0 .. 2^64-1, checked by runSweep
   int threads = 0;
   std::string label;   // --label TEXT: name printed in the summary (default: the scene name)

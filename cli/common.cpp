@@ -1,4 +1,5 @@
 #include "common.h"
+#include "progress.h"
 
 #include <atomic>
 #include <cerrno>
@@ -10,6 +11,8 @@
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
+
+#include <vector>
 
 namespace fftess::cli {
 
@@ -32,7 +35,28 @@ extern "C" void onFatalSignal(int sig) {
   for (int i = 0; i < kMaxTemps; ++i)
     if (gTempUsed[i].load()) ::unlink(gTemps[i]);
   std::signal(sig, SIG_DFL);
-  std::raise(sig);
+  std::raise(sig); // delivered when the handler returns (the signal is blocked in it): the default action
+}
+
+// Every signal whose default action ends the process (SIGKILL and SIGSTOP cannot be caught).
+void installCleanup() {
+  static bool done = false;
+  if (done) return;
+  done = true;
+  const int fatal[] = {SIGHUP,  SIGINT,  SIGQUIT, SIGILL,  SIGTRAP,   SIGABRT, SIGBUS,  SIGFPE,  SIGUSR1,
+                       SIGSEGV, SIGUSR2, SIGPIPE, SIGALRM, SIGTERM,   SIGSTKFLT, SIGXCPU, SIGXFSZ, SIGVTALRM,
+                       SIGPROF, SIGIO,   SIGPWR,  SIGSYS};
+  auto install = [](int sig) { // only where nobody else handles the signal (an ignored one stays ignored)
+    struct sigaction old;
+    if (::sigaction(sig, nullptr, &old) != 0 || (old.sa_flags & SA_SIGINFO) || old.sa_handler != SIG_DFL) return;
+    struct sigaction sa {};
+    sa.sa_handler = onFatalSignal;
+    sigfillset(&sa.sa_mask); // one handler at a time: a second signal waits, then finds the files gone
+    sa.sa_flags = SA_RESTART;
+    ::sigaction(sig, &sa, nullptr);
+  };
+  for (int sig : fatal) install(sig);
+  for (int sig = SIGRTMIN; sig <= SIGRTMAX; ++sig) install(sig);
 }
 
 int registerTemp(const std::string& path) { // from the main thread only
@@ -41,10 +65,7 @@ int registerTemp(const std::string& path) { // from the main thread only
     if (gTempUsed[i].load()) continue;
     std::memcpy(gTemps[i], path.c_str(), path.size() + 1);
     gTempUsed[i].store(true);
-    for (int sig : {SIGINT, SIGTERM, SIGHUP}) { // only where nobody else handles the signal
-      struct sigaction old;
-      if (::sigaction(sig, nullptr, &old) == 0 && old.sa_handler == SIG_DFL) std::signal(sig, onFatalSignal);
-    }
+    installCleanup();
     return i;
   }
   return -1;
@@ -55,27 +76,34 @@ void unregisterTemp(int slot) {
 }
 
 [[noreturn]] void cannotWrite(const std::string& path, const std::string& why) {
-  throw UsageError("cannot write " + quoteToken(path) + ": " + why);
+  throw UsageError("cannot write " + quotePath(path) + ": " + why);
 }
 
 } // namespace
+
+// The file a path finally names: symlinks followed one by one (a dangling link names the file to create), magic
+// links under /proc and /dev left as they are. False with why set on a loop or an unreadable link.
+static bool followLinks(const std::string& path, std::string& target, std::string& why) {
+  target = path;
+  for (int hops = 0;; ++hops) {
+    struct stat st;
+    if (::lstat(target.c_str(), &st) != 0 || !S_ISLNK(st.st_mode)) return true;
+    if (hops >= 40) return why = "too many levels of symbolic links", false;
+    std::string link(4096, '\0');
+    const ssize_t n = ::readlink(target.c_str(), link.data(), link.size());
+    if (n < 0 || static_cast<size_t>(n) >= link.size()) return why = std::strerror(errno), false;
+    link.resize(static_cast<size_t>(n));
+    if (under(target, "/proc/") || under(target, "/dev/")) return true; // magic links (/dev/stdout): as they are
+    target = link.front() == '/' ? link : dirOf(target) + "/" + link;
+  }
+}
 
 AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
   if (path_ == "-") return;
   if (path_.empty()) cannotWrite(path_, "empty path");
   // Follow symlinks ourselves (a dangling link names the file to create); never rename over the link.
-  target_ = path_;
-  for (int hops = 0;; ++hops) {
-    struct stat st;
-    if (::lstat(target_.c_str(), &st) != 0 || !S_ISLNK(st.st_mode)) break;
-    if (hops >= 40) cannotWrite(path_, "too many levels of symbolic links");
-    std::string link(4096, '\0');
-    const ssize_t n = ::readlink(target_.c_str(), link.data(), link.size());
-    if (n < 0 || static_cast<size_t>(n) >= link.size()) cannotWrite(path_, std::strerror(errno));
-    link.resize(static_cast<size_t>(n));
-    if (under(target_, "/proc/") || under(target_, "/dev/")) break; // magic links (/dev/stdout): open them as they are
-    target_ = link.front() == '/' ? link : dirOf(target_) + "/" + link;
-  }
+  std::string why;
+  if (!followLinks(path_, target_, why)) cannotWrite(path_, why);
   struct stat st;
   if (::stat(target_.c_str(), &st) == 0) {
     existed_ = true;
@@ -94,6 +122,60 @@ AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
 
 SignalHandler removeTempsAndDie() { return onFatalSignal; }
 
+namespace {
+
+// What a path finally names, for comparing files: an existing file by device and inode (hard links, symlinks, "./x"
+// and "x" all compare equal), a new one by its resolved directory and name. skip: stdout ("-") or a character device
+// (/dev/null may take several outputs).
+struct FileId {
+  bool skip = false, exists = false;
+  dev_t dev = 0;
+  ino_t ino = 0;
+  std::string resolved;
+};
+
+FileId fileId(const std::string& path) {
+  FileId id;
+  struct stat st;
+  if (path == "-" || path.empty()) return id.skip = true, id;
+  if (::stat(path.c_str(), &st) == 0) {
+    id.skip = S_ISCHR(st.st_mode);
+    id.exists = true, id.dev = st.st_dev, id.ino = st.st_ino;
+    return id;
+  }
+  std::string target, why;
+  if (!followLinks(path, target, why)) target = path;
+  const size_t slash = target.find_last_of('/');
+  const std::string name = slash == std::string::npos ? target : target.substr(slash + 1);
+  char* dir = ::realpath(dirOf(target).c_str(), nullptr);
+  id.resolved = (dir ? std::string(dir) : dirOf(target)) + "/" + name;
+  std::free(dir);
+  return id;
+}
+
+bool sameFile(const FileId& a, const FileId& b) {
+  if (a.skip || b.skip || a.exists != b.exists) return false;
+  return a.exists ? a.dev == b.dev && a.ino == b.ino : a.resolved == b.resolved;
+}
+
+} // namespace
+
+void refuseSameFiles(const std::vector<FileArg>& outputs, const std::vector<FileArg>& inputs) {
+  std::vector<FileId> ids;
+  for (const FileArg& o : outputs) ids.push_back(fileId(o.path));
+  for (size_t i = 0; i < outputs.size(); ++i) {
+    if (outputs[i].path.empty()) continue;
+    for (size_t k = 0; k < i; ++k)
+      if (!outputs[k].path.empty() && sameFile(ids[k], ids[i]))
+        throw UsageError(outputs[k].option + " " + quotePath(outputs[k].path) + " and " + outputs[i].option + " " +
+                         quotePath(outputs[i].path) + " are the same file: one output would replace the other");
+    for (const FileArg& in : inputs)
+      if (!in.path.empty() && sameFile(fileId(in.path), ids[i]))
+        throw UsageError(outputs[i].option + " " + quotePath(outputs[i].path) + " is the same file as " + in.option + " " +
+                         quotePath(in.path) + ": writing it would replace the input");
+  }
+}
+
 AtomicFile::~AtomicFile() {
   if (fd_ >= 0) ::close(fd_);
   if (directFd_ >= 0) ::close(directFd_);
@@ -107,7 +189,7 @@ static void writeAll(int fd, const std::string& data, const std::string& path) {
     const ssize_t n = ::write(fd, data.data() + done, data.size() - done);
     if (n < 0) {
       if (errno == EINTR) continue;
-      throw std::runtime_error("writing " + quoteToken(path) + " failed: " + std::strerror(errno));
+      throw std::runtime_error("writing " + quotePath(path) + " failed: " + std::strerror(errno));
     }
     done += static_cast<size_t>(n);
   }
@@ -121,7 +203,7 @@ void AtomicFile::write() {
   ::fchmod(fd_, 0644);
   const int rc = ::close(fd_);
   fd_ = -1;
-  if (rc != 0) throw std::runtime_error("writing " + quoteToken(path_) + " failed: " + std::strerror(errno));
+  if (rc != 0) throw std::runtime_error("writing " + quotePath(path_) + " failed: " + std::strerror(errno));
 }
 
 void AtomicFile::publish() {
@@ -135,9 +217,9 @@ void AtomicFile::publish() {
     if (directFd_ < 0) stream(std::string()); // opens it: an empty report still reaches a FIFO's reader as EOF
     const int fd = directFd_;
     directFd_ = -1;
-    if (::close(fd) != 0) throw std::runtime_error("writing " + quoteToken(path_) + " failed: " + std::strerror(errno));
+    if (::close(fd) != 0) throw std::runtime_error("writing " + quotePath(path_) + " failed: " + std::strerror(errno));
   } else if (std::rename(tmp_.c_str(), target_.c_str()) != 0) {
-    throw std::runtime_error("writing " + quoteToken(path_) + " failed: " + std::strerror(errno));
+    throw std::runtime_error("writing " + quotePath(path_) + " failed: " + std::strerror(errno));
   } else {
     unregisterTemp(tempSlot_); // renamed: the name is the report now, a signal must not remove it
     tempSlot_ = -1;
@@ -145,12 +227,32 @@ void AtomicFile::publish() {
   published_ = true;
 }
 
+// Opens a FIFO, device or /dev/stdout for writing. A FIFO without a reader is waited for without blocking in open(),
+// so a Ctrl-C is answered at once: it throws Interrupted when SIGINT arrives during the wait (with InterruptGuard; with
+// the default action the signal ends the process and its temporary files, onFatalSignal).
+static int openDirect(const std::string& target, const std::string& path) {
+  struct stat st;
+  if (::stat(target.c_str(), &st) != 0 || !S_ISFIFO(st.st_mode)) return ::open(target.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
+  const bool wasCancelled = InterruptGuard::flag()->load();
+  for (;;) {
+    const int fd = ::open(target.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC | O_NONBLOCK);
+    if (fd >= 0) {
+      ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
+      return fd;
+    }
+    if (errno != ENXIO && errno != EINTR) return -1; // ENXIO: no reader yet
+    if (!wasCancelled && InterruptGuard::flag()->load())
+      throw Interrupted("interrupted while waiting for a reader of " + quotePath(path) + ": the reports were not written");
+    ::usleep(20 * 1000);
+  }
+}
+
 void AtomicFile::stream(const std::string& s) {
   if (path_ == "-") {
     writeStdout(s);
   } else if (direct_) {
-    if (directFd_ < 0) directFd_ = ::open(target_.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
-    if (directFd_ < 0) throw std::runtime_error("writing " + quoteToken(path_) + " failed: " + std::strerror(errno));
+    if (directFd_ < 0) directFd_ = openDirect(target_, path_);
+    if (directFd_ < 0) throw std::runtime_error("writing " + quotePath(path_) + " failed: " + std::strerror(errno));
     writeAll(directFd_, s, path_);
   } else {
     writeAll(fd_, s, path_);
@@ -227,7 +329,7 @@ std::string fractionOf65536(int64_t units2) {
   return s + "/65536";
 }
 
-UsageError::UsageError(const std::string& what) : std::runtime_error(printable(what)) {}
+UsageError::UsageError(const std::string& what) : std::runtime_error(printable(what, kMaxMessageBytes)) {}
 
 // Length of the valid UTF-8 sequence at s[i] (no overlongs, no surrogates, <= U+10FFFF), 0 if invalid.
 static size_t utf8Length(const std::string& s, size_t i) {
@@ -267,6 +369,8 @@ std::string printable(const std::string& s, size_t maxBytes) {
 }
 
 std::string quoteToken(const std::string& s) { return "'" + printable(s, 80) + "'"; }
+
+std::string quotePath(const std::string& s) { return "'" + printable(s, std::string::npos) + "'"; }
 
 std::string xmlEscape(const std::string& s) {
   std::string o;

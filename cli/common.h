@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace fftess::cli {
 
@@ -16,9 +17,16 @@ enum ExitStatus : int {
 };
 
 // Bad usage or bad input; what() is the complete one-line reason (argument name or file:line, and the bad token).
-// Bad bytes never reach the terminal: the message goes through printable().
+// Bad bytes never reach the terminal: the message goes through printable(), cut only past kMaxMessageBytes (room for
+// several whole paths of PATH_MAX bytes, escaped: paths are never cut; tokens from files are cut by quoteToken).
+constexpr size_t kMaxMessageBytes = 65536;
 struct UsageError : std::runtime_error {
   explicit UsageError(const std::string& what);
+};
+
+// Ctrl-C answered while the work was already done (waiting for a FIFO's reader): exit 130, the reports not written.
+struct Interrupted : std::runtime_error {
+  using std::runtime_error::runtime_error;
 };
 
 // s with control bytes and bytes that are not UTF-8 escaped as \xHH, cut after maxBytes with "... (N bytes)".
@@ -64,6 +72,17 @@ private:
 using SignalHandler = void (*)(int);
 SignalHandler removeTempsAndDie();
 
+// A file named on the command line, for refuseSameFiles: the option (or argument name) and the path as given.
+struct FileArg {
+  std::string option;
+  std::string path; // "" = not given (skipped)
+};
+// Refuses (UsageError naming both options and paths) two outputs that are the same file, or an output that is one of
+// the inputs. Compared by the file finally named, not by spelling: symlinks followed, an existing file by st_dev +
+// st_ino (hard links, "./x" and "x"), a new one by its resolved directory and name. "-" (stdout) and character devices
+// (/dev/null) are never refused. Call before any work and before AtomicFile claims the outputs.
+void refuseSameFiles(const std::vector<FileArg>& outputs, const std::vector<FileArg>& inputs = {});
+
 // Writes several reports all or nothing: every temporary file is written first, then all are published; if one
 // fails, the ones already published that did not exist before are removed and the error is rethrown.
 void commitAll(AtomicFile* const* files, size_t count);
@@ -80,6 +99,9 @@ std::string formatNumber(double v);           // for human text: up to 6 signifi
 std::string fixed16(uint32_t v);              // 16.16 value as 0xHHHHHHHH
 std::string fractionOf65536(int64_t units2);  // value given in 1/131072 units -> "k/65536" with .5 when needed
 std::string quoteToken(const std::string& s); // 'token', escaped as printable(), tokens over 80 bytes cut
+// 'path', escaped as printable() but never cut: a path the user gave is always shown whole (quoteToken is for tokens
+// from file contents).
+std::string quotePath(const std::string& s);
 std::string xmlEscape(const std::string& s);  // & < > " as XML entities (SVG text and attributes)
 
 // Factor tokens, batch lines and the hex output format: tessellator/batch.h (fftess::parseFactor and friends).

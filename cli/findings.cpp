@@ -44,11 +44,19 @@ static std::string shorthandNamed(const SceneArgs& a, std::string error) {
   return error;
 }
 
+std::string loaderMessage(const std::string& scene, const std::string& error) {
+  if (error.compare(0, scene.size(), scene) == 0) return printable(scene, std::string::npos) + printable(error.substr(scene.size()));
+  return printable(error);
+}
+
 vf::Terrain load(const SceneArgs& a) {
   vf::SceneResult r = vf::loadScene(a.scene, overridesOf(a));
-  if (!r) throw UsageError(r.error.empty() ? "cannot load scene '" + a.scene + "'" : shorthandNamed(a, r.error));
+  if (!r)
+    throw UsageError(r.error.empty() ? "cannot load scene " + quotePath(a.scene)
+                                     : loaderMessage(a.scene, shorthandNamed(a, r.error)));
+  refuseSameFiles(reportArgs(a), sceneInputs(a, &r.scene)); // the files the scene reads are inputs too
   vf::TerrainResult t = vf::prepareTerrain(r.scene);
-  if (!t) throw UsageError(a.scene + ": " + t.error);
+  if (!t) throw UsageError(loaderMessage(a.scene, a.scene + ": " + t.error));
   return t.terrain;
 }
 
@@ -275,9 +283,23 @@ std::string statsText(const vf::Stats& s, bool countOffScreen) {
   return o;
 }
 // ---- shared plumbing ---------------------------------------------------------------------------------------------
+std::vector<FileArg> reportArgs(const SceneArgs& a) { return {{"--json", a.json}, {"--svg", a.svg}}; }
+
+std::vector<FileArg> sceneInputs(const SceneArgs& a, const vf::Scene* scene) {
+  std::vector<FileArg> in{{"SCENE", a.scene}};
+  if (!scene) return in;
+  in.push_back({"(the scene's lod.shader)", scene->lod.shader});
+  const std::string& raw = scene->displacement.file; // relative to the scene file's folder
+  if (!raw.empty()) {
+    const size_t slash = a.scene.find_last_of('/');
+    const std::string dir = slash == std::string::npos ? "." : a.scene.substr(0, slash + 1);
+    in.push_back({"(the scene's displacement.file)", raw.front() == '/' ? raw : dir + "/" + raw});
+  }
+  return in;
+}
+
 ReportFiles::ReportFiles(const SceneArgs& a) {
-  if (!a.json.empty() && !a.svg.empty() && a.json == a.svg && a.json != "-")
-    throw UsageError("--json and --svg name the same file " + quoteToken(a.json));
+  refuseSameFiles(reportArgs(a), sceneInputs(a, nullptr));
   if (!a.json.empty()) json_ = std::make_unique<AtomicFile>(a.json);
   if (!a.svg.empty()) svg_ = std::make_unique<AtomicFile>(a.svg);
 }

@@ -56,12 +56,20 @@ std::vector<std::string> overridesOf(const SceneArgs& a); // --eye/--target as o
 // The scene with its --set overrides, prepared once for the whole command (vf::prepareTerrain); throws UsageError
 // with the loader's message.
 vf::Terrain load(const SceneArgs& a);
+// A scene loader's message: the scene path it starts with stays whole, the rest (keys and values from the file or
+// from --set, of any length) is cut like any token (printable()).
+std::string loaderMessage(const std::string& scene, const std::string& error);
 vf::CheckOptions checkOptions(const SceneArgs& a);        // --kernel, --flush-denormals, --offscreen
 // The same, plus the GPU LOD provider the scene asks for (lod.shader, lod.evaluate = "gpu"; cli/gpu_lod.h).
 vf::CheckOptions checkOptions(const SceneArgs& a, const vf::Terrain& terrain);
 void addSceneOptions(CLI::App* sub, SceneArgs& a);
 // kExitFindings on cracks, holes, nothing checked, unchecked cameras (and T-junctions if asked); else kExitClean.
 int verdictStatus(const SceneArgs& a, vf::Verdict v);
+
+// --json and --svg as refuseSameFiles outputs; the inputs of a scene: SCENE, and with the loaded scene the files it
+// reads (lod.shader, displacement.file). load() refuses reports that are one of those.
+std::vector<FileArg> reportArgs(const SceneArgs& a);
+std::vector<FileArg> sceneInputs(const SceneArgs& a, const vf::Scene* scene);
 
 // The --json and --svg reports of one command: both paths are checked when this is built (before the work:
 // UsageError naming the path), and commit() writes both all or nothing (AtomicFile, commitAll).

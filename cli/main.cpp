@@ -6,7 +6,10 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cerrno>
 #include <cstdio>
+#include <fcntl.h>
+#include <unistd.h>
 #include <string>
 #include <exception>
 #include <new>
@@ -14,8 +17,23 @@
 #include "check.h"
 #include "compare_cmd.h"
 
+// A standard stream the caller closed (`<&-`, `>&-`) is opened on /dev/null the wrong way round: reading a closed stdin
+// or writing a closed stdout then fails with EBADF and is reported (never read as empty input or written to
+// nowhere), and no file this process opens (a report, a temporary file) can take descriptor 0, 1 or 2.
+static void occupyClosedStdStreams() {
+  for (int fd = 0; fd <= 2; ++fd) {
+    if (::fcntl(fd, F_GETFD) != -1 || errno != EBADF) continue;
+    const int got = ::open("/dev/null", fd == 0 ? O_WRONLY : O_RDONLY);
+    if (got >= 0 && got != fd) {
+      ::dup2(got, fd);
+      ::close(got);
+    }
+  }
+}
+
 int main(int argc, char** argv) {
   using namespace fftess::cli;
+  occupyClosedStdStreams();
   CLI::App app{"fftess " FFTESS_VERSION
                ": bit-exact D3D11 tessellator emulator and terrain crack checker.\n"
                "Run 'fftess SUBCOMMAND --help' for details and an example."};
@@ -82,6 +100,9 @@ int main(int argc, char** argv) {
     }
     std::fprintf(stderr, "fftess: error: no subcommand (see fftess --help)\n");
     return kExitUsage;
+  } catch (const Interrupted& e) {
+    std::fprintf(stderr, "fftess: %s\n", e.what());
+    return 130;
   } catch (const UsageError& e) {
     std::fprintf(stderr, "fftess: error: %s\n", e.what());
     return kExitUsage;

@@ -35,17 +35,17 @@ namespace {
 
 json readReport(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw UsageError("merge: cannot read " + quoteToken(path));
+  if (!in) throw UsageError("merge: cannot read " + quotePath(path));
   json j;
   try {
     j = json::parse(in);
   } catch (const std::exception& e) {
-    throw UsageError("merge: " + quoteToken(path) + ": not JSON (" + e.what() + ")");
+    throw UsageError("merge: " + quotePath(path) + ": not JSON (" + e.what() + ")");
   }
   if (!j.is_object() || j.value("kind", "") != "sweep")
-    throw UsageError("merge: " + quoteToken(path) + ": not a sweep report (\"kind\": \"sweep\")");
+    throw UsageError("merge: " + quotePath(path) + ": not a sweep report (\"kind\": \"sweep\")");
   if (j.value("version", 0) != kReportVersion)
-    throw UsageError("merge: " + quoteToken(path) + ": report version " + j.value("version", json(0)).dump() +
+    throw UsageError("merge: " + quotePath(path) + ": report version " + j.value("version", json(0)).dump() +
                      ", this fftess merges version " + std::to_string(kReportVersion));
   return j;
 }
@@ -79,6 +79,9 @@ vf::Stats statsOf(const json& j) {
 int runMerge(const MergeArgs& a) {
   if (a.inputs.empty()) throw UsageError("merge: no reports");
   std::unique_ptr<AtomicFile> out;
+  std::vector<FileArg> inputs;
+  for (const std::string& p : a.inputs) inputs.push_back({"REPORT", p});
+  refuseSameFiles({{"--json", a.json}}, inputs);
   if (!a.json.empty()) out = std::make_unique<AtomicFile>(a.json); // the path is checked before the work
   std::vector<json> shards;
   for (const std::string& p : a.inputs) shards.push_back(readReport(p));
@@ -106,19 +109,19 @@ int runMerge(const MergeArgs& a) {
     json h = shards[i];
     for (auto it = header.begin(); it != header.end(); ++it)
       if (h.value(it.key(), json()) != it.value())
-        throw UsageError("merge: " + quoteToken(a.inputs[i]) + ": \"" + it.key() + "\" differs from " +
-                         quoteToken(a.inputs[0]) + "'s: not a shard of the same sweep");
+        throw UsageError("merge: " + quotePath(a.inputs[i]) + ": \"" + it.key() + "\" differs from " +
+                         quotePath(a.inputs[0]) + "'s: not a shard of the same sweep");
     const json shard = h.value("shard", json());
     if (shard.is_null()) {
       if (shards.size() != 1)
-        throw UsageError("merge: " + quoteToken(a.inputs[i]) + " is a whole sweep (no \"shard\"), not a shard");
+        throw UsageError("merge: " + quotePath(a.inputs[i]) + " is a whole sweep (no \"shard\"), not a shard");
       count = 1, seen.assign(1, 1);
       continue;
     }
     const size_t k = shard.at("index"), n = shard.at("count");
     if (i == 0) count = n, seen.assign(n, 0);
     if (n != count || k < 1 || k > n)
-      throw UsageError("merge: " + quoteToken(a.inputs[i]) + ": shard " + std::to_string(k) + "/" + std::to_string(n) +
+      throw UsageError("merge: " + quotePath(a.inputs[i]) + ": shard " + std::to_string(k) + "/" + std::to_string(n) +
                        " does not belong with " + std::to_string(count) + " shards");
     if (seen[k - 1]) throw UsageError("merge: shard " + std::to_string(k) + "/" + std::to_string(n) + " given twice");
     seen[k - 1] = 1;

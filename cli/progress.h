@@ -30,8 +30,9 @@ private:
 };
 
 // While an instance lives, the first SIGINT sets flag() (the work stops and reports are still written); the second
-// one kills the process (the default action is restored after the first). The previous handler comes back on
-// destruction.
+// one kills the process (after the first, SIGINT removes the temporary report files and takes its default action).
+// flag() is also watched where the process would otherwise wait with the signal unanswered (AtomicFile waiting for a
+// FIFO's reader). The previous handler comes back on destruction.
 class InterruptGuard {
 public:
   InterruptGuard();

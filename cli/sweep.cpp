@@ -93,9 +93,13 @@ CLI::App* addSweep(CLI::App& app, SweepArgs& a) {
               "Exit status: 0 watertight, 1 cracks or holes found, nothing checked or a camera that could not be checked, "
               "2 bad usage or scene, 3 internal error.");
   addSceneOptions(sub, a);
-  sub->add_option("--orbit", a.orbit, "N cameras on a circle around the terrain, looking at its centre");
-  sub->add_option("--flyover", a.flyover, "N cameras on a straight flight across the terrain");
-  sub->add_option("--random", a.random, "N cameras at random positions and directions (see --seed)");
+  // The *Given flags: a count given as -1 is refused like any other count below 1, never taken for "not given".
+  sub->add_option_function<int>("--orbit", [&a](const int& n) { a.orbit = n, a.orbitGiven = true; },
+                                "N cameras on a circle around the terrain, looking at its centre");
+  sub->add_option_function<int>("--flyover", [&a](const int& n) { a.flyover = n, a.flyoverGiven = true; },
+                                "N cameras on a straight flight across the terrain");
+  sub->add_option_function<int>("--random", [&a](const int& n) { a.random = n, a.randomGiven = true; },
+                                "N cameras at random positions and directions (see --seed)");
   sub->add_option("--seed", a.seed, "Seed for --random")->capture_default_str();
   sub->add_option("-j,--threads", a.threads, "Worker threads (default 0: all cores)")->capture_default_str();
   sub->add_option("--label", a.label, "Name for this run in the summary (default: the scene's name)");
@@ -156,6 +160,33 @@ std::string verdictWords(vf::Verdict verdict, const vf::SweepResult& res, size_t
          (off.empty() ? "" : " (" + off + ")");
 }
 
+// The cameras of a sweep by index (vf::CameraSet): the generator option given, else the scene's camera path, else a
+// flyover of kDefaultFlyover.
+static vf::CameraSet cameraSet(const SweepArgs& a, const vf::Terrain& terrain, uint64_t seed) {
+  if (a.orbit > 0) return vf::CameraSet::orbit(terrain, size_t(a.orbit));
+  if (a.flyover > 0) return vf::CameraSet::flyover(terrain, size_t(a.flyover));
+  if (a.random > 0) return vf::CameraSet::random(terrain, size_t(a.random), seed);
+  if (!terrain.scene().cameraPath.empty()) return vf::CameraSet::path(terrain);
+  return vf::CameraSet::flyover(terrain, kDefaultFlyover);
+}
+
+static std::string cameraWords(const SweepArgs& a, const vf::Terrain& terrain, uint64_t seed) {
+  if (a.orbit > 0) return "orbit of " + std::to_string(a.orbit);
+  if (a.flyover > 0) return "flyover of " + std::to_string(a.flyover);
+  if (a.random > 0) return std::to_string(a.random) + " random, seed " + std::to_string(seed);
+  if (!terrain.scene().cameraPath.empty()) return "the scene's camera path";
+  return "flyover of " + std::to_string(kDefaultFlyover) + ", the scene has no camera path";
+}
+
+// The sweep picture draws the cameras of the run (the path joined in order, the map's extent) up to `end` (all of
+// them; an interrupted run's up to the last one checked), so --svg, and only --svg, holds them in memory.
+static std::vector<vf::Camera> svgCameras(const vf::CameraSet& cams, size_t end) {
+  std::vector<vf::Camera> out;
+  out.reserve(std::min(end, cams.size()));
+  for (size_t i = 0; i < end && i < cams.size(); ++i) out.push_back(cams.at(i));
+  return out;
+}
+
 // --shard K/N: 1 <= K <= N, both whole numbers.
 static void parseShard(const std::string& text, size_t& k, size_t& n) {
   k = 0, n = 1;
@@ -178,19 +209,18 @@ static void parseShard(const std::string& text, size_t& k, size_t& n) {
 }
 
 int runSweep(const SweepArgs& a) {
-  const int generators = (a.orbit >= 0) + (a.flyover >= 0) + (a.random >= 0);
+  const int generators = a.orbitGiven + a.flyoverGiven + a.randomGiven;
   if (generators > 1) throw UsageError("sweep: give only one of --orbit, --flyover, --random");
-  if (a.orbit == 0 || a.orbit < -1) throw UsageError("--orbit " + std::to_string(a.orbit) + ": must be >= 1");
-  if (a.flyover == 0 || a.flyover < -1) throw UsageError("--flyover " + std::to_string(a.flyover) + ": must be >= 1");
-  if (a.random == 0 || a.random < -1) throw UsageError("--random " + std::to_string(a.random) + ": must be >= 1");
+  if (a.orbitGiven && a.orbit < 1) throw UsageError("--orbit " + std::to_string(a.orbit) + ": must be >= 1");
+  if (a.flyoverGiven && a.flyover < 1) throw UsageError("--flyover " + std::to_string(a.flyover) + ": must be >= 1");
+  if (a.randomGiven && a.random < 1) throw UsageError("--random " + std::to_string(a.random) + ": must be >= 1");
   if (a.threads < 0) throw UsageError("--threads " + std::to_string(a.threads) + ": must be >= 0");
   const uint64_t seed = parseSeed(a.seed);
   size_t shardK = 0, shardN = 1;
   parseShard(a.shard, shardK, shardN);
   const bool sharded = !a.shard.empty();
   // Output paths are checked before the work (as ReportFiles does; the JSON streams, so it is handled here).
-  if (!a.json.empty() && !a.svg.empty() && a.json == a.svg && a.json != "-")
-    throw UsageError("--json and --svg name the same file " + quoteToken(a.json));
+  refuseSameFiles(reportArgs(a), sceneInputs(a, nullptr));
   std::unique_ptr<AtomicFile> jsonFile, svgFile;
   if (!a.json.empty()) jsonFile = std::make_unique<AtomicFile>(a.json);
   if (!a.svg.empty()) svgFile = std::make_unique<AtomicFile>(a.svg);
@@ -198,26 +228,19 @@ int runSweep(const SweepArgs& a) {
   const vf::Scene& scene = terrain.scene();
   vf::CheckOptions opt = checkOptions(a, terrain);
   opt.maxFindings = static_cast<size_t>(-1); // every finding reaches onReport, so the cause counts are complete
-  // Ctrl-C from here on (camera generation, the sweep, the reports) stops the work; the summary and reports of what
-  // was done are still written. A second Ctrl-C kills the process.
+  // Ctrl-C from here on (the sweep, the reports) stops the work; the summary and reports of what was done are still
+  // written. A second Ctrl-C kills the process (temporary files removed). Once the work is done, a first Ctrl-C while a
+  // report waits for a FIFO's reader ends that wait (AtomicFile: Interrupted, exit 130).
   InterruptGuard interrupts;
   const std::atomic<bool>* cancel = InterruptGuard::flag();
-  std::vector<vf::Camera> cams; // every camera of the run (global indices), also when sharded
-  std::string how;
-  size_t requestedAll = 0;
-  if (a.orbit > 0) cams = vf::orbitCameras(terrain, a.orbit, 0, 0, cancel), how = "orbit of " + std::to_string(a.orbit), requestedAll = size_t(a.orbit);
-  else if (a.flyover > 0) cams = vf::flyoverCameras(terrain, a.flyover, 0, cancel), how = "flyover of " + std::to_string(a.flyover), requestedAll = size_t(a.flyover);
-  else if (a.random > 0)
-    cams = vf::randomCameras(terrain, a.random, seed, cancel), how = std::to_string(a.random) + " random, seed " + std::to_string(seed), requestedAll = size_t(a.random);
-  else if (!scene.cameraPath.empty()) cams = vf::pathCameras(terrain), how = "the scene's camera path";
-  else cams = vf::flyoverCameras(terrain, kDefaultFlyover, 0, cancel), how = "flyover of " + std::to_string(kDefaultFlyover) + ", the scene has no camera path";
-  if (requestedAll == 0) requestedAll = cams.size();
+  // Every camera of the run (global indices, also when sharded), computed from its index when needed: memory does not
+  // depend on the camera count, and there is no setup to wait for.
+  const vf::CameraSet cams = cameraSet(a, terrain, seed);
+  const std::string how = cameraWords(a, terrain, seed);
+  const size_t requestedAll = cams.size();
   // This run's share: global index g = shardK + local * shardN.
   auto shareOf = [&](size_t total) { return total > shardK ? (total - shardK + shardN - 1) / shardN : 0; };
   const size_t requested = shareOf(requestedAll);
-  std::vector<vf::Camera> mine;
-  mine.reserve(shareOf(cams.size()));
-  for (size_t g = shardK; g < cams.size(); g += shardN) mine.push_back(cams[g]);
   auto global = [&](size_t local) { return shardK + local * shardN; };
   const bool jsonToStdout = a.json == "-";
   const bool talk = !a.quiet && !jsonToStdout;
@@ -245,6 +268,7 @@ int runSweep(const SweepArgs& a) {
   std::vector<SvgHole> holes;
   size_t crackCameras = 0, tjCameras = 0, holeCameras = 0;
   size_t firstInvalid = SIZE_MAX;
+  size_t endChecked = 0; // 1 + the highest global index checked
   std::string firstInvalidError;
 
   // Progress on stderr: a bar on a terminal, a plain line every few seconds otherwise, nothing with --quiet.
@@ -276,6 +300,7 @@ int runSweep(const SweepArgs& a) {
   };
   so.onCamera = [&](const vf::CameraResult& c) {
     const size_t g = global(c.cameraIndex);
+    endChecked = std::max(endChecked, g + 1);
     if (!c.error.empty() && g < firstInvalid) firstInvalid = g, firstInvalidError = c.error;
     if (c.done) {
       if (c.stats.holes > 0) ++holeCameras;
@@ -283,20 +308,21 @@ int runSweep(const SweepArgs& a) {
       if ((all ? c.stats.cracks : c.stats.cracksOnScreen()) > 0) ++crackCameras;
       else if ((all ? c.stats.tJunctions : c.stats.tJunctionsOnScreen()) > 0) ++tjCameras;
       if (!a.svg.empty()) {
-        dots.push_back(svgCamera(g, cams[g], c, all));
+        dots.push_back(svgCamera(g, cams.at(g), c, all));
         if (c.hasHole) holes.push_back({c.firstHole.patch.index, "camera " + std::to_string(g) + ": " + holeCause(c.firstHole).detail});
       }
     }
     if (!jsonFile) return;
-    pending.emplace(c.cameraIndex, sweepCameraJson(g, cams[g], c));
+    pending.emplace(c.cameraIndex, sweepCameraJson(g, cams.at(g), c));
     flushPending(false);
   };
   if (talk)
     std::fprintf(stderr, "fftess sweep %s: %s, %zu cameras (%s)%s\n", a.scene.c_str(), label.c_str(), requested,
                  how.c_str(), sharded ? (", shard " + a.shard).c_str() : "");
   vf::SweepResult res;
-  if (!cancel->load()) res = vf::sweep(terrain, mine, opt, so); // else interrupted during camera generation
-  res.cancelled = res.cancelled || cams.size() < requestedAll; // interrupted while the cameras were generated
+  if (!cancel->load())
+    res = vf::sweep(terrain, requested, [&](size_t local) { return cams.at(global(local)); }, opt, so);
+  res.cancelled = res.cancelled || (cancel->load() && res.camerasDone + res.camerasInvalid < requested);
   progress.finish();
   const double elapsed = progress.elapsed();
   const std::vector<std::string> order = tally.order();
@@ -336,7 +362,7 @@ int runSweep(const SweepArgs& a) {
       text += "  causes (findings of each cause, cameras where it appeared, the first camera where it appeared):\n";
       for (const std::string& k : order) {
         const CauseInfo& c = causes.at(k);
-        const vf::Camera& cam = cams[c.first];
+        const vf::Camera cam = cams.at(c.first);
         std::snprintf(buf, sizeof buf, "    %-75s %7lld findings on %5zu cameras, first #%zu eye (%.1f, %.1f, %.1f)\n",
                       k.c_str(), static_cast<long long>(c.findings), c.cameras, c.first, static_cast<double>(cam.eye.x),
                       static_cast<double>(cam.eye.y), static_cast<double>(cam.eye.z));
@@ -344,7 +370,7 @@ int runSweep(const SweepArgs& a) {
         text += "      e.g. " + c.detail + "\n";
       }
     }
-    text += "verdict: " + verdictWords(verdict, res, crackCameras, holeCameras, mine.size(), a.offscreen) + "\n";
+    text += "verdict: " + verdictWords(verdict, res, crackCameras, holeCameras, requested, a.offscreen) + "\n";
   }
   if (jsonFile) {
     flushPending(true);
@@ -362,7 +388,8 @@ int runSweep(const SweepArgs& a) {
     std::vector<size_t> firsts;
     for (const std::string& k : order) firsts.push_back(causes.at(k).first);
     std::sort(dots.begin(), dots.end(), [](const SvgCamera& x, const SvgCamera& y) { return x.index < y.index; });
-    svgFile->buffer() = sweepSvg(terrain, cams, dots, holes, firsts, a.random > 0, "fftess sweep " + a.scene, a.offscreen);
+    svgFile->buffer() = sweepSvg(terrain, svgCameras(cams, res.cancelled ? endChecked : cams.size()), dots, holes,
+                                 firsts, a.random > 0, "fftess sweep " + a.scene, a.offscreen);
   }
   AtomicFile* files[2];
   size_t nFiles = 0;

@@ -22,6 +22,9 @@
 namespace fftess::cli {
 namespace {
 
+// Longest input line read (a batch line is under 200 bytes).
+constexpr size_t kMaxLineBytes = size_t(1) << 20;
+
 struct BatchPatch {
   int line = 0;       // 1-based line number in the input
   int index = 0;      // 0-based patch number: counts every patch line, malformed ones included
@@ -280,12 +283,11 @@ public:
     } else {
       name_ = a.input;
       file_ = std::fopen(a.input.c_str(), "rb");
-      if (!file_) throw UsageError("tessellate: cannot open input '" + a.input + "': " + std::strerror(errno));
+      if (!file_) throw UsageError("tessellate: cannot open input " + quotePath(a.input) + ": " + std::strerror(errno));
       owned_ = true;
     }
   }
   ~LineSource() {
-    std::free(buf_);
     if (owned_ && file_) std::fclose(file_);
     if (spool_) std::fclose(spool_);
   }
@@ -293,7 +295,9 @@ public:
   LineSource& operator=(const LineSource&) = delete;
   const std::string& name() const { return name_; }
 
-  // Next line without its '\n' (as std::getline). False at the end.
+  // Next line without its '\n' (as std::getline). False at the end. A read error, or a line longer than
+  // kMaxLineBytes (no batch line comes close: /dev/zero, a binary file), is a UsageError naming the input and line:
+  // never taken for the end of the input, and memory stays bounded.
   bool next(std::string& line) {
     if (memory_) {
       if (pos_ >= memory_->size()) return false;
@@ -301,21 +305,31 @@ public:
       return true;
     }
     FILE* f = secondPass_ && spool_ ? spool_ : file_;
-    const ssize_t n = ::getline(&buf_, &cap_, f);
-    if (n < 0) {
-      if (std::ferror(f))
-        throw UsageError(f == stdin ? std::string("tessellate: cannot read standard input")
-                                    : "tessellate: cannot read input '" + name_ + "'");
-      return false;
+    line.clear();
+    bool any = false;
+    for (int c; (c = getc_unlocked(f)) != EOF;) {
+      any = true;
+      if (c == '\n') break;
+      if (line.size() >= kMaxLineBytes)
+        throw UsageError("tessellate: " + inputWords() + ":" + std::to_string(lines_ + 1) + ": line longer than " +
+                         std::to_string(kMaxLineBytes) + " bytes (not a batch file?)");
+      line += static_cast<char>(c);
     }
-    line.assign(buf_, size_t(n) - (n > 0 && buf_[n - 1] == '\n' ? 1 : 0));
-    if (!secondPass_ && spool_ && std::fwrite(buf_, 1, size_t(n), spool_) != size_t(n))
-      throw std::runtime_error(std::string("tessellate: spooling standard input failed: ") + std::strerror(errno));
+    if (std::ferror(f)) throw UsageError("tessellate: cannot read " + inputWords() + ": " + std::strerror(errno));
+    if (any && !secondPass_ && spool_) {
+      line += '\n';
+      const bool ok = std::fwrite(line.data(), 1, line.size(), spool_) == line.size();
+      line.pop_back();
+      if (!ok) throw std::runtime_error(std::string("tessellate: spooling standard input failed: ") + std::strerror(errno));
+    }
+    if (!any) return false;
+    ++lines_;
     return true;
   }
   void rewind() {
     secondPass_ = true;
     pos_ = 0;
+    lines_ = 0;
     if (spool_) std::rewind(spool_);
     else if (file_) std::rewind(file_);
   }
@@ -327,9 +341,9 @@ private:
   FILE* spool_ = nullptr;
   bool owned_ = false;
   bool secondPass_ = false;
-  char* buf_ = nullptr;
-  size_t cap_ = 0;
+  size_t lines_ = 0;
   std::string name_;
+  std::string inputWords() const { return file_ == stdin ? std::string("standard input") : "input " + quotePath(name_); }
 };
 
 // Output written as it is produced: stdout, or FILE as AtomicFile writes it (a temporary file renamed over a regular
@@ -366,6 +380,7 @@ void appendHashLine(std::string& out, const BatchPatch& bp, const std::string& b
 
 int runTessellate(const TessellateArgs& a) {
   if (a.threads < 0) throw UsageError("tessellate: --threads must be >= 0 (0: one per hardware thread)");
+  if (a.patches.empty() && a.input != "-") refuseSameFiles({{"-o", a.output}}, {{"INPUT", a.input}});
   LineSource source(a);
 
   // Pass 1: check every line.
@@ -386,7 +401,7 @@ int runTessellate(const TessellateArgs& a) {
       if (isPatch) ++patchCount;
     }
   }
-  for (const std::string& e : errors) std::fprintf(stderr, "fftess: error: %s\n", e.c_str());
+  for (const std::string& e : errors) std::fprintf(stderr, "fftess: error: %s\n", printable(e, kMaxMessageBytes).c_str());
   if (errorCount > 20) std::fprintf(stderr, "fftess: error: ... and %zu more malformed lines\n", errorCount - 20);
   if (errorCount > 0 && !a.keepGoing) return kExitUsage;
 

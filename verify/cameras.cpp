@@ -1,4 +1,5 @@
-// Cameras for sweeps: the scene's path, an orbit, a flyover and seeded random positions.
+// Cameras for sweeps: the scene's path, an orbit, a flyover and seeded random positions, each computed from its
+// index when needed (CameraSet), so that memory does not depend on the camera count.
 #include "verify/internal.h"
 
 #include <cmath>
@@ -8,30 +9,15 @@ namespace fftess::verify {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+constexpr uint64_t kGolden = 0x9e3779b97f4a7c15ull; // splitmix64's increment
+constexpr uint64_t kDrawsPerRandomCamera = 5;
 
-Camera like(const Terrain& t, glm::vec3 eye, glm::vec3 target) {
-  Camera c = t.scene().camera;
-  c.eye = eye;
-  c.target = target;
-  c.up = glm::vec3{0, 1, 0};
-  return c;
-}
-
-struct Geometry {
-  double cx, cz, size;
-};
-
-Geometry geometry(const Terrain& t) {
-  const Extent& e = t.extent();
-  return {0.5 * (double(e.minX) + e.maxX), 0.5 * (double(e.minZ) + e.maxZ),
-          std::fmax(double(e.maxX) - e.minX, double(e.maxZ) - e.minZ)};
-}
-
-// splitmix64: the same sequence on every platform.
+// splitmix64: the same sequence on every platform. Counter-based: the state after k draws is seed + k * kGolden, so
+// random camera i (draws 5i+1 .. 5i+5) is computed from (seed, i) alone.
 struct Rng {
   uint64_t s;
   uint64_t next() {
-    uint64_t z = (s += 0x9e3779b97f4a7c15ull);
+    uint64_t z = (s += kGolden);
     z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
     z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
     return z ^ (z >> 31);
@@ -40,9 +26,91 @@ struct Rng {
 };
 
 // Checked every 4096 cameras: cheap, and a Ctrl-C is seen within milliseconds.
-bool cancelled(const std::atomic<bool>* cancel, int i) { return cancel && (i & 4095) == 0 && cancel->load(); }
+bool cancelled(const std::atomic<bool>* cancel, size_t i) { return cancel && (i & 4095) == 0 && cancel->load(); }
+
+std::vector<Camera> materialise(const CameraSet& set, const std::atomic<bool>* cancel) {
+  std::vector<Camera> out;
+  for (size_t i = 0; i < set.size() && !cancelled(cancel, i); ++i) out.push_back(set.at(i));
+  return out;
+}
 
 } // namespace
+
+CameraSet::CameraSet(Kind kind, const Terrain& terrain, size_t count) : kind_(kind), count_(count) {
+  base_ = terrain.scene().camera;
+  base_.up = glm::vec3{0, 1, 0};
+  const Extent& e = terrain.extent();
+  cx_ = 0.5 * (double(e.minX) + e.maxX);
+  cz_ = 0.5 * (double(e.minZ) + e.maxZ);
+  size_ = std::fmax(double(e.maxX) - e.minX, double(e.maxZ) - e.minZ);
+}
+
+CameraSet CameraSet::path(const Terrain& terrain) {
+  CameraSet s(Kind::List, terrain, 0);
+  const Scene& scene = terrain.scene();
+  s.list_ = scene.cameraPath.empty() ? std::vector<Camera>{scene.camera} : scene.cameraPath;
+  s.count_ = s.list_.size();
+  return s;
+}
+
+CameraSet CameraSet::orbit(const Terrain& terrain, size_t count, float radius, float height) {
+  CameraSet s(Kind::Orbit, terrain, count);
+  s.radius_ = radius > 0 ? radius : 0.5 * s.size_;
+  s.height_ = height > 0 ? height : 0.25 * s.radius_;
+  return s;
+}
+
+CameraSet CameraSet::flyover(const Terrain& terrain, size_t count, float height) {
+  CameraSet s(Kind::Flyover, terrain, count);
+  s.height_ = height > 0 ? height : 0.02 * s.size_ + std::fabs(double(terrain.scene().displacement.heightScale));
+  return s;
+}
+
+CameraSet CameraSet::random(const Terrain& terrain, size_t count, uint64_t seed) {
+  CameraSet s(Kind::Random, terrain, count);
+  s.seed_ = seed;
+  return s;
+}
+
+Camera CameraSet::looking(glm::vec3 eye, glm::vec3 target) const {
+  Camera c = base_;
+  c.eye = eye;
+  c.target = target;
+  return c;
+}
+
+// Each formula is the one the generators used when they made all cameras in a loop (same operations, same order).
+Camera CameraSet::at(size_t i) const {
+  const double cx = cx_, cz = cz_, size = size_;
+  switch (kind_) {
+  case Kind::List: return list_.at(i);
+  case Kind::Orbit: {
+    const double a = 2 * kPi * double(i) / double(std::max<size_t>(count_, 1));
+    return looking(glm::vec3{float(cx + radius_ * std::cos(a)), float(height_), float(cz + radius_ * std::sin(a))},
+                   glm::vec3{float(cx), 0.0f, float(cz)});
+  }
+  case Kind::Flyover: {
+    const double half = 0.5 * size, step = 0.05 * size, h = height_;
+    const double s = count_ > 1 ? double(i) / double(count_ - 1) : 0.5;
+    const double x = cx - half + s * size, z = cz - half + s * size;
+    return looking(glm::vec3{float(x), float(h), float(z)},
+                   glm::vec3{float(x + step), float(h - 0.3 * step), float(z + step)});
+  }
+  case Kind::Random: {
+    Rng rng{seed_ + uint64_t(i) * kDrawsPerRandomCamera * kGolden}; // wraps mod 2^64 like the sequential state
+    const double x = cx + (rng.uniform() - 0.5) * size;
+    const double z = cz + (rng.uniform() - 0.5) * size;
+    const double h = (1.0 - rng.uniform()) * 0.25 * size; // (0, 25%]
+    const double yaw = rng.uniform() * 2 * kPi;
+    const double pitch = -rng.uniform() * kPi / 3;
+    const double d = 0.05 * size;
+    return looking(glm::vec3{float(x), float(h), float(z)},
+                   glm::vec3{float(x + d * std::cos(pitch) * std::cos(yaw)), float(h + d * std::sin(pitch)),
+                             float(z + d * std::cos(pitch) * std::sin(yaw))});
+  }
+  }
+  return base_;
+}
 
 std::vector<Camera> pathCameras(const Terrain& terrain) {
   const Scene& scene = terrain.scene();
@@ -52,49 +120,15 @@ std::vector<Camera> pathCameras(const Terrain& terrain) {
 
 std::vector<Camera> orbitCameras(const Terrain& terrain, int count, float radius, float height,
                                  const std::atomic<bool>* cancel) {
-  const Geometry g = geometry(terrain);
-  const double r = radius > 0 ? radius : 0.5 * g.size;
-  const double h = height > 0 ? height : 0.25 * r;
-  std::vector<Camera> out;
-  for (int i = 0; i < count && !cancelled(cancel, i); ++i) {
-    const double a = 2 * kPi * i / std::max(count, 1);
-    out.push_back(like(terrain, glm::vec3{float(g.cx + r * std::cos(a)), float(h), float(g.cz + r * std::sin(a))},
-                       glm::vec3{float(g.cx), 0.0f, float(g.cz)}));
-  }
-  return out;
+  return materialise(CameraSet::orbit(terrain, size_t(std::max(count, 0)), radius, height), cancel);
 }
 
 std::vector<Camera> flyoverCameras(const Terrain& terrain, int count, float height, const std::atomic<bool>* cancel) {
-  const Geometry g = geometry(terrain);
-  const double h = height > 0 ? height : 0.02 * g.size + std::fabs(double(terrain.scene().displacement.heightScale));
-  std::vector<Camera> out;
-  const double half = 0.5 * g.size, step = 0.05 * g.size;
-  for (int i = 0; i < count && !cancelled(cancel, i); ++i) {
-    const double s = count > 1 ? double(i) / (count - 1) : 0.5;
-    const double x = g.cx - half + s * g.size, z = g.cz - half + s * g.size;
-    out.push_back(like(terrain, glm::vec3{float(x), float(h), float(z)},
-                       glm::vec3{float(x + step), float(h - 0.3 * step), float(z + step)}));
-  }
-  return out;
+  return materialise(CameraSet::flyover(terrain, size_t(std::max(count, 0)), height), cancel);
 }
 
 std::vector<Camera> randomCameras(const Terrain& terrain, int count, uint64_t seed, const std::atomic<bool>* cancel) {
-  const Geometry g = geometry(terrain);
-  Rng rng{seed};
-  std::vector<Camera> out;
-  for (int i = 0; i < count && !cancelled(cancel, i); ++i) {
-    const double x = g.cx + (rng.uniform() - 0.5) * g.size;
-    const double z = g.cz + (rng.uniform() - 0.5) * g.size;
-    const double h = (1.0 - rng.uniform()) * 0.25 * g.size; // (0, 25%]
-    const double yaw = rng.uniform() * 2 * kPi;
-    const double pitch = -rng.uniform() * kPi / 3;
-    const double d = 0.05 * g.size;
-    const glm::vec3 eye{float(x), float(h), float(z)};
-    glm::vec3 target{float(x + d * std::cos(pitch) * std::cos(yaw)), float(h + d * std::sin(pitch)),
-                float(z + d * std::cos(pitch) * std::sin(yaw))};
-    out.push_back(like(terrain, eye, target));
-  }
-  return out;
+  return materialise(CameraSet::random(terrain, size_t(std::max(count, 0)), seed), cancel);
 }
 
 } // namespace fftess::verify

@@ -1,5 +1,6 @@
-// Sweep driver: cameras on T threads, one terrain shared read-only, one edge cache (and scratch) per thread. Per
-// camera only aggregates are kept (and, with keepCameras, a CameraResult): memory does not grow with the cameras.
+// Sweep driver: cameras on T threads, one terrain shared read-only, one edge cache (and scratch) per thread. Each
+// camera is made when a thread takes it (cameraAt), and per camera only aggregates are kept (and, with keepCameras, a
+// CameraResult): memory does not grow with the cameras.
 #include "verify/internal.h"
 
 #include <algorithm>
@@ -35,18 +36,23 @@ void accumulate(Stats& s, const Stats& c) {
 
 SweepResult sweep(const Terrain& terrain, const std::vector<Camera>& cameras, const CheckOptions& options,
                   const SweepOptions& sweepOptions) {
+  return sweep(terrain, cameras.size(), [&cameras](size_t i) { return cameras[i]; }, options, sweepOptions);
+}
+
+SweepResult sweep(const Terrain& terrain, size_t count, const std::function<Camera(size_t)>& cameraAt,
+                  const CheckOptions& options, const SweepOptions& sweepOptions) {
   SweepResult out;
   if (sweepOptions.keepCameras) {
-    out.cameras.resize(cameras.size());
-    for (size_t i = 0; i < cameras.size(); ++i) out.cameras[i].cameraIndex = i;
+    out.cameras.resize(count);
+    for (size_t i = 0; i < count; ++i) out.cameras[i].cameraIndex = i;
   }
-  if (sweepOptions.keepReports) out.reports.resize(cameras.size());
+  if (sweepOptions.keepReports) out.reports.resize(count);
 
   const Scene& scene = terrain.scene();
 
   int threads = sweepOptions.threads > 0 ? sweepOptions.threads
                                          : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  threads = static_cast<int>(std::min<size_t>(static_cast<size_t>(threads), std::max<size_t>(cameras.size(), 1)));
+  threads = static_cast<int>(std::min<size_t>(static_cast<size_t>(threads), std::max<size_t>(count, 1)));
 
   std::atomic<size_t> next{0};
   std::mutex mutex; // serialises the callbacks and the aggregates
@@ -57,8 +63,8 @@ SweepResult sweep(const Terrain& terrain, const std::vector<Camera>& cameras, co
     for (;;) {
       if (sweepOptions.cancel && sweepOptions.cancel->load()) return;
       const size_t i = next.fetch_add(1);
-      if (i >= cameras.size()) return;
-      Report rep = detail::checkTerrain(terrain.data(), cameras[i], options, cache);
+      if (i >= count) return;
+      Report rep = detail::checkTerrain(terrain.data(), cameraAt(i), options, cache);
       cr.cameraIndex = i;
       cr.done = rep.error.empty();
       cr.error = rep.error;
@@ -88,7 +94,7 @@ SweepResult sweep(const Terrain& terrain, const std::vector<Camera>& cameras, co
         if (sweepOptions.onReport) sweepOptions.onReport(i, rep);
         if (sweepOptions.onCamera) sweepOptions.onCamera(cr);
         ++done;
-        if (sweepOptions.progress) sweepOptions.progress(done, cameras.size());
+        if (sweepOptions.progress) sweepOptions.progress(done, count);
       }
       if (sweepOptions.keepReports) out.reports[i] = std::move(rep);
     }
@@ -98,7 +104,7 @@ SweepResult sweep(const Terrain& terrain, const std::vector<Camera>& cameras, co
   worker();
   for (auto& th : pool) th.join();
 
-  out.cancelled = sweepOptions.cancel && sweepOptions.cancel->load() && out.camerasDone + out.camerasInvalid < cameras.size();
+  out.cancelled = sweepOptions.cancel && sweepOptions.cancel->load() && out.camerasDone + out.camerasInvalid < count;
   return out;
 }
 

@@ -750,6 +750,32 @@ std::vector<Camera> flyoverCameras(const Terrain& terrain, int count, float heig
 std::vector<Camera> randomCameras(const Terrain& terrain, int count, uint64_t seed,
                                   const std::atomic<bool>* cancel = nullptr);
 
+// The same cameras by index: CameraSet::at(i) is camera i of the generator above with the same arguments (the same
+// floats), computed when asked for (a random camera from (seed, i): splitmix64 is counter-based), so a set of any
+// size costs the same memory; path() keeps the scene's list. at(i) needs i < size(); safe to call from several
+// threads at once.
+class CameraSet {
+public:
+  static CameraSet path(const Terrain& terrain);
+  static CameraSet orbit(const Terrain& terrain, size_t count, float radius = 0, float height = 0);
+  static CameraSet flyover(const Terrain& terrain, size_t count, float height = 0);
+  static CameraSet random(const Terrain& terrain, size_t count, uint64_t seed);
+  size_t size() const { return count_; }
+  Camera at(size_t i) const;
+
+private:
+  enum class Kind : uint8_t { List, Orbit, Flyover, Random };
+  CameraSet(Kind kind, const Terrain& terrain, size_t count);
+  Camera looking(glm::vec3 eye, glm::vec3 target) const;
+  Kind kind_;
+  size_t count_;
+  Camera base_;                 // the scene camera (fov, near, far, viewport), up = +y
+  double cx_ = 0, cz_ = 0, size_ = 0; // the extent's centre and larger side
+  double radius_ = 0, height_ = 0;    // orbit radius; orbit / flyover height
+  uint64_t seed_ = 0;
+  std::vector<Camera> list_;    // path()
+};
+
 
 struct CameraResult {
   size_t cameraIndex = 0;
@@ -820,6 +846,10 @@ const char* toString(Verdict v); // "watertight", "t_junctions", "cracks", "hole
 // Checks every camera against the one prepared terrain (shared read-only by the threads).
 SweepResult sweep(const Terrain& terrain, const std::vector<Camera>& cameras, const CheckOptions& options = {},
                   const SweepOptions& sweepOptions = {});
+// The same over `count` cameras made when needed: cameraAt(i) (i < count; called from the worker threads, possibly at
+// once) is camera i. Memory does not grow with count unless SweepOptions::keepCameras / keepReports ask for it.
+SweepResult sweep(const Terrain& terrain, size_t count, const std::function<Camera(size_t)>& cameraAt,
+                  const CheckOptions& options = {}, const SweepOptions& sweepOptions = {});
 
 // Names as the scene format spells them.
 const char* toString(Classification c);

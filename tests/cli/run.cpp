@@ -12,6 +12,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <sys/stat.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -81,7 +82,8 @@ TimedResult runWith(const std::vector<std::string>& args, const RunOptions& o) {
   writeFile(err, "");
   posix_spawn_file_actions_t fa;
   posix_spawn_file_actions_init(&fa);
-  posix_spawn_file_actions_addopen(&fa, 0, in.c_str(), O_RDONLY, 0);
+  if (o.closeStdin) posix_spawn_file_actions_addclose(&fa, 0);
+  else posix_spawn_file_actions_addopen(&fa, 0, in.c_str(), O_RDONLY, 0);
   if (o.stdoutPath.empty())
     posix_spawn_file_actions_addopen(&fa, 1, out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
   else
@@ -94,34 +96,48 @@ TimedResult runWith(const std::vector<std::string>& args, const RunOptions& o) {
   argv.push_back(nullptr);
   pid_t pid = 0;
   TimedResult r;
-  if (posix_spawn(&pid, binary(), &fa, nullptr, argv.data(), environ) != 0) {
-    posix_spawn_file_actions_destroy(&fa);
-    throw std::runtime_error(std::string("cannot start ") + binary());
-  }
+  // The child starts with every signal at its default action and none blocked, whatever this process inherited.
+  posix_spawnattr_t attr;
+  posix_spawnattr_init(&attr);
+  sigset_t every, none;
+  sigfillset(&every);
+  sigemptyset(&none);
+  posix_spawnattr_setsigdefault(&attr, &every);
+  posix_spawnattr_setsigmask(&attr, &none);
+  posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETSIGMASK);
+  const int spawned = posix_spawn(&pid, binary(), &fa, &attr, argv.data(), environ);
+  posix_spawnattr_destroy(&attr);
   posix_spawn_file_actions_destroy(&fa);
+  if (spawned != 0) throw std::runtime_error(std::string("cannot start ") + binary());
   if (o.whileRunning) o.whileRunning(pid);
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
   auto since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
   int st = 0;
+  struct rusage usage {};
   if (o.sigintAfter >= 0) {
     bool matched = o.sigintWhenErr.empty();
     auto from = start;
     Clock::time_point sent;
     for (;;) {
-      if (::waitpid(pid, &st, WNOHANG) == pid) break;
+      if (::wait4(pid, &st, WNOHANG, &usage) == pid) break;
       if (!matched && readFile(err).find(o.sigintWhenErr) != std::string::npos) matched = true, from = Clock::now();
       if (matched && !r.interrupted && since(from) >= o.sigintAfter) {
-        ::kill(pid, SIGINT);
+        ::kill(pid, o.signal);
         r.interrupted = true;
         sent = Clock::now();
+      }
+      if (r.interrupted && !r.watchdogFired && since(sent) >= o.watchdog) {
+        ::kill(pid, SIGKILL);
+        r.watchdogFired = true;
       }
       ::usleep(2000);
     }
     if (r.interrupted) r.exitAfterSigint = since(sent);
   } else {
-    ::waitpid(pid, &st, 0);
+    ::wait4(pid, &st, 0, &usage);
   }
+  r.maxRssKb = usage.ru_maxrss;
   r.status = WIFEXITED(st) ? WEXITSTATUS(st) : 128 + WTERMSIG(st);
   if (o.stdoutPath.empty()) r.out = readFile(out);
   r.err = readFile(err);

@@ -21,14 +21,19 @@ Result run(const std::vector<std::string>& args, const std::string& input = "");
 // a text or after a delay, and a hook that runs while the child runs (e.g. reading a FIFO the child writes).
 struct RunOptions {
   std::string input;
+  bool closeStdin = false;           // start the program with descriptor 0 closed (`<&-`); input is ignored
   std::string stdoutPath;            // "" = captured in Result::out
   std::string sigintWhenErr;         // send SIGINT once stderr contains this ("" = not by text)
   double sigintAfter = -1;           // seconds after the start (or after sigintWhenErr matched); < 0: no SIGINT
   std::function<void(pid_t)> whileRunning; // called once right after the start, before waiting
+  int signal = 2;                    // the signal sigintAfter sends (SIGINT; any other to test fatal signals)
+  double watchdog = 10;              // seconds after the signal: SIGKILL if still running (TimedResult::watchdogFired)
 };
 struct TimedResult : Result {
-  bool interrupted = false;          // SIGINT was sent
-  double exitAfterSigint = -1;       // seconds from SIGINT to exit
+  bool interrupted = false;          // the signal was sent
+  double exitAfterSigint = -1;       // seconds from the signal to exit
+  bool watchdogFired = false;        // still running `watchdog` seconds after the signal: killed
+  long maxRssKb = -1;                // the child's peak resident set size (wait4's ru_maxrss)
 };
 TimedResult runWith(const std::vector<std::string>& args, const RunOptions& options);
 // The binary under test (FFTESS_TEST_BINARY in the environment overrides the built one).

@@ -3,6 +3,7 @@
 #include "verify_test_util.h"
 
 #include <atomic>
+#include <cstring>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -30,6 +31,67 @@ TEST_CASE("camera generators are deterministic and sized", "[verify][sweep]") {
     CHECK(cam.eye.x <= e.maxX);
     CHECK(cam.eye.y > 0);
   }
+}
+
+namespace {
+
+// FNV-1a over the bits of each camera's eye, target, up, fov, near and far.
+uint64_t cameraHash(const std::vector<Camera>& cams) {
+  uint64_t h = 1469598103934665603ull;
+  for (const Camera& c : cams) {
+    const float f[] = {c.eye.x, c.eye.y, c.eye.z, c.target.x, c.target.y, c.target.z,
+                       c.up.x,  c.up.y,  c.up.z,  c.fovY,     c.nearZ,    c.farZ};
+    unsigned char b[sizeof f];
+    std::memcpy(b, f, sizeof f);
+    for (unsigned char x : b) h = (h ^ x) * 1099511628211ull;
+  }
+  return h;
+}
+
+std::vector<Camera> all(const CameraSet& set) {
+  std::vector<Camera> out;
+  for (size_t i = 0; i < set.size(); ++i) out.push_back(set.at(i));
+  return out;
+}
+
+} // namespace
+
+// Golden: the hashes are those of the cameras the generators made before CameraSet (every camera generated in one
+// loop, the random ones from one running splitmix64 state), so sweeps, shards and golden reports keep their cameras.
+TEST_CASE("camera sets by index are the cameras the generators always made", "[verify][sweep]") {
+  const Terrain terrain = prepared(loadExample("rings_small.toml"));
+  CHECK(cameraHash(all(CameraSet::random(terrain, 1000, 7))) == 0xcffe029e8ff9356dull);
+  CHECK(cameraHash(all(CameraSet::orbit(terrain, 100))) == 0x6a68f00765d32d09ull);
+  CHECK(cameraHash(all(CameraSet::flyover(terrain, 100))) == 0x982323460fb32557ull);
+  // Far into a huge set without making the cameras before it: camera 2999999 of seed 20260611.
+  const CameraSet huge = CameraSet::random(terrain, 100000000, 20260611);
+  CHECK(huge.size() == 100000000);
+  CHECK(cameraHash({huge.at(2999999)}) == 0x71f23a4796add795ull);
+  // The vector generators are the sets, camera for camera.
+  CHECK(cameraHash(randomCameras(terrain, 1000, 7)) == 0xcffe029e8ff9356dull);
+  CHECK(cameraHash(orbitCameras(terrain, 7, 30.0f, 12.0f)) == cameraHash(all(CameraSet::orbit(terrain, 7, 30.0f, 12.0f))));
+  CHECK(cameraHash(flyoverCameras(terrain, 1)) == cameraHash(all(CameraSet::flyover(terrain, 1))));
+  CHECK(cameraHash(pathCameras(terrain)) == cameraHash(all(CameraSet::path(terrain))));
+}
+
+TEST_CASE("sweep over cameras by index makes only the cameras it checks", "[verify][sweep]") {
+  const Terrain terrain = prepared(loadExample("rings_small.toml"));
+  const CameraSet set = CameraSet::random(terrain, 100000000, 1);
+  std::atomic<bool> cancel{false};
+  std::atomic<size_t> made{0};
+  SweepOptions so;
+  so.threads = 2;
+  so.cancel = &cancel;
+  so.keepCameras = false;
+  so.progress = [&](size_t done, size_t total) {
+    CHECK(total == set.size());
+    if (done >= 5) cancel = true;
+  };
+  const SweepResult r = sweep(terrain, set.size(), [&](size_t i) { return ++made, set.at(i); }, {}, so);
+  CHECK(r.cancelled);
+  CHECK(r.camerasDone >= 5);
+  CHECK(made.load() <= r.camerasDone + 2); // one more per thread at most
+  CHECK(r.cameras.empty());
 }
 
 TEST_CASE("scene camera path", "[verify][sweep]") {
