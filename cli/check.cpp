@@ -18,8 +18,8 @@ CLI::App* addCheck(CLI::App& app, CheckArgs& a) {
               "  fftess check docs/examples/terrain.toml\n"
               "  fftess check docs/examples/terrain.toml --set lod.adjacency_clamp=integer --json report.json "
               "--svg report.svg\n"
-              "Exit status: 0 watertight, 1 cracks or holes found or nothing checked, 2 bad usage or scene, 3 internal "
-              "error.");
+              "Exit status: 0 watertight, 1 cracks or holes found, undecided visibility or nothing checked (or "
+              "--mesh disagrees with the edge check), 2 bad usage or scene, 3 internal error.");
   addSceneOptions(sub, a);
   sub->add_option("--path-camera", a.pathCamera, "Use camera N of the scene's [[camera_path]] instead of [camera]");
   sub->add_option("--show", a.show, "Finding lines to print (default 20; all are in --json)")->capture_default_str();
@@ -71,12 +71,16 @@ int runCheck(const CheckArgs& a) {
       if (shown++ >= a.show) break;
       text += holeLine(h) + "\n";
     }
+    for (const vf::Hole& h : r.undecided) {
+      if (shown++ >= a.show) break;
+      text += holeLine(h) + "\n";
+    }
     for (const vf::Finding& f : r.findings) {
       if (f.classification == vf::Classification::Match) continue;
       if (shown++ >= a.show) break;
       text += findingLine(f) + "\n";
     }
-    const int64_t nonMatch = r.stats.cracks + r.stats.tJunctions + r.stats.holes;
+    const int64_t nonMatch = r.stats.cracks + r.stats.tJunctions + r.stats.holes + r.stats.undecided;
     if (shown > a.show || nonMatch > a.show)
       text += "  ... " + std::to_string(nonMatch - a.show) + " more findings (--show N, or --json FILE)\n";
   }
@@ -101,9 +105,15 @@ int runCheck(const CheckArgs& a) {
       words = "NOTHING CHECKED: no shared edge was classified (every patch culled or out of view, or the layout has "
               "no shared edge); not a clean verdict";
       break;
+    case vf::Verdict::Undecided:
+      words = "UNDECIDED: " + std::to_string(r.stats.undecided) +
+              " patches not drawn could be neither proven visible nor invisible (listed above); not a clean verdict";
+      break;
     case vf::Verdict::TJunctionsOnly: words = "watertight now (T-junctions)"; break;
     default: words = "watertight"; break;
     }
+    if (r.stats.undecided > 0 && verdict != vf::Verdict::Undecided)
+      words += " (and " + std::to_string(r.stats.undecided) + " patches of undecided visibility)";
     text += "verdict: " + words + "\n";
   }
   // Reports first (atomically), then the text: a failure writing a report leaves no partial file.

@@ -66,6 +66,7 @@ vf::Stats statsOf(const json& j) {
   s.visibilityTests = j.at("visibility_tests");
   s.worstGapWorld = j.at("worst_gap_world");
   s.worstGapPixels = j.at("worst_gap_pixels");
+  s.undecided = j.at("undecided");
   return s;
 }
 
@@ -126,6 +127,7 @@ int runMerge(const MergeArgs& a) {
     res.camerasDone += s.at("cameras_done").get<size_t>();
     res.camerasInvalid += s.at("cameras_invalid").get<size_t>();
     res.camerasNothingChecked += s.at("cameras_nothing_checked").get<size_t>();
+    res.camerasUndecided += s.at("cameras_undecided").get<size_t>();
     res.cancelled = res.cancelled || s.at("cancelled").get<bool>();
     vf::accumulate(res.total, statsOf(s.at("stats")));
   }

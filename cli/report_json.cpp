@@ -81,7 +81,8 @@ json statsJson(const vf::Stats& s) {
           {"cracks", s.cracks},             {"holes", s.holes},                  {"holes_discarded", s.holesDiscarded},
           {"holes_culled_while_visible", s.holesCulledVisible}, {"culled_undecided", s.culledUndecided},
           {"visibility_tests", s.visibilityTests},
-          {"worst_gap_world", s.worstGapWorld}, {"worst_gap_pixels", s.worstGapPixels}};
+          {"worst_gap_world", s.worstGapWorld}, {"worst_gap_pixels", s.worstGapPixels},
+          {"undecided", s.undecided}};
 }
 
 json holeJson(const vf::Hole& h) {
@@ -104,6 +105,12 @@ json holeJson(const vf::Hole& h) {
   j["lod"] = lodJson(h.lod);
   j["midpoint_w"] = formatFloat(h.midpointW);
   j["lod_box_y"] = json::array({h.lodBoxMinY, h.lodBoxMaxY});
+  j["domain_point"] = h.visibility == vf::Visibility::Invisible ? json(nullptr)
+                                                                : json::array({h.domainPoint.u, h.domainPoint.v});
+  if (h.visibility == vf::Visibility::Undecided) {
+    j["undecided_side"] = h.undecidedSide;
+    j["budget_exhausted"] = h.budgetExhausted;
+  }
   return j;
 }
 
@@ -148,6 +155,9 @@ json checkJson(const SceneArgs& a, const vf::Terrain& terrain, const vf::Camera&
   json hs = json::array();
   for (const vf::Hole& h : r.holes) hs.push_back(holeJson(h));
   j["holes"] = hs;
+  json us = json::array();
+  for (const vf::Hole& h : r.undecided) us.push_back(holeJson(h));
+  j["undecided"] = us;
   if (mesh)
     j["mesh"] = {{"triangles", mesh->triangles}, {"vertices", mesh->vertices}, {"border_edges", mesh->borderEdges},
                  {"inner_border_edges", mesh->innerBorderEdges}, {"flagged_patch_edges", mesh->flagged.size()}};
@@ -176,6 +186,7 @@ json sweepCameraJson(size_t globalIndex, const vf::Camera& cam, const vf::Camera
     return jc;
   }
   jc["first_hole"] = c.hasHole ? holeJson(c.firstHole) : json(nullptr);
+  jc["first_undecided"] = c.hasUndecided ? holeJson(c.firstUndecided) : json(nullptr);
   jc["stats"] = statsJson(c.stats);
   jc["worst"] = c.hasFinding ? findingJson(c.worst) : json(nullptr);
   return jc;
@@ -190,6 +201,7 @@ json sweepSummaryJson(size_t requested, const vf::SweepResult& res, const std::v
   if (res.cancelled) j["cameras_not_done"] = requested - res.camerasDone; // not listed one by one
   j["cameras_invalid"] = res.camerasInvalid;
   j["cameras_nothing_checked"] = res.camerasNothingChecked;
+  j["cameras_undecided"] = res.camerasUndecided;
   j["stats"] = statsJson(res.total);
   j["verdict"] = vf::toString(vf::verdictOf(res));
   json cs = json::array();

@@ -166,6 +166,10 @@ Report checkTerrain(const TerrainData& t, const Camera& camera, const CheckOptio
     lod::TileNeighbours wrong = P.tile;
     wrong.size[fault.edge] = fault.size;
     factors[static_cast<size_t>(fault.patch)] = patchLod(t, P, wrong, lodCamera);
+  } else if (faultPatch && fault.kind == Fault::Kind::CullPatch) {
+    lod::PatchLod& c = factors[static_cast<size_t>(fault.patch)];
+    c.why.culled = true; // as a wrong frustum test culls: every factor 0
+    for (float& f : c.factors) f = 0.0f;
   } else if (faultPatch) {
     float& f = factors[static_cast<size_t>(fault.patch)].factors[fault.edge];
     f = perturbFactor(fault, f);
@@ -179,10 +183,13 @@ Report checkTerrain(const TerrainData& t, const Camera& camera, const CheckOptio
   std::vector<char>& culled = cache.culled;
   culled.assign(n, 0);
   const FrustumTest frustum(lodCamera);
+  VisibilityLimits limits;
+  limits.maxDepth = options.visibilityDepth;
+  limits.maxSubRectangles = std::max<int64_t>(1, options.visibilityBudget);
   for (size_t i = 0; i < n; ++i) {
     const bool lodCulled = factors[i].why.culled;
     // A patch lod/ culled is not drawn whatever its factors: no edge query, no domain point (only the hole check's
-    // grid below, when its box touches the frustum).
+    // visibility decision below, when its box touches the frustum).
     int discardEdge = -1;
     for (int e = 0; e < 4 && !lodCulled; ++e) {
       ep[i][e] = &cache.get(factors[i].factors[e], rep.work);
@@ -193,24 +200,18 @@ Report checkTerrain(const TerrainData& t, const Camera& camera, const CheckOptio
     culled[i] = 1;
     ++rep.stats.culledPatches;
     const TerrainPatch& P = t.patches[i];
-    glm::vec3 point{};
-    if (lodCulled) {
-      const Visibility vis = patchVisibility(t, P, domainCam.at(i), frustum, options.visibilityGrid, &point, rep.work);
-      if (vis != Visibility::Invisible) ++rep.stats.visibilityTests;
-      if (vis == Visibility::Undecided) ++rep.stats.culledUndecided;
-      if (vis != Visibility::Visible) continue;
-    }
-    Visibility vis = Visibility::Visible;
-    if (!lodCulled) {
-      vis = patchVisibility(t, P, domainCam.at(i), frustum, options.visibilityGrid, &point, rep.work);
-      if (vis == Visibility::Invisible) continue; // not drawn, not on screen: no hole
-      ++rep.stats.visibilityTests;
-    }
+    const VisibilityDecision vis = patchVisibility(t, P, domainCam.at(i), frustum, limits, rep.work);
+    if (vis.visibility == Visibility::Invisible && vis.subRectangles == 0) continue; // its whole box is outside
+    ++rep.stats.visibilityTests;
+    if (vis.visibility == Visibility::Invisible) continue; // not on screen: no hole
     Hole h;
     h.kind = lodCulled ? HoleKind::CulledWhileVisible : HoleKind::Discarded;
     h.patch = P.ref;
-    h.visibility = vis;
-    h.visiblePoint = point;
+    h.visibility = vis.visibility;
+    h.visiblePoint = vis.point;
+    h.domainPoint = vis.at;
+    h.undecidedSide = vis.visibility == Visibility::Undecided ? vis.side : 0.0f;
+    h.budgetExhausted = vis.workBound;
     h.edge = lodCulled || discardEdge < 0 ? -1 : discardEdge;
     const int e = h.edge < 0 ? 0 : h.edge;
     h.hullFactor = factors[i].factors[e];
@@ -228,6 +229,14 @@ Report checkTerrain(const TerrainData& t, const Camera& camera, const CheckOptio
     if (P.lod.useHeightBounds) {
       h.lodBoxMinY = std::fmin(h.lodBoxMinY, P.lod.minHeight);
       h.lodBoxMaxY = std::fmax(h.lodBoxMaxY, P.lod.maxHeight);
+    }
+    if (vis.visibility == Visibility::Undecided) {
+      // Neither proven visible nor invisible: never clean (Verdict::Undecided), listed with the hole's record.
+      ++rep.stats.undecided;
+      if (lodCulled) ++rep.stats.culledUndecided;
+      if (rep.undecided.size() < options.maxFindings) rep.undecided.push_back(h);
+      else rep.truncated = true;
+      continue;
     }
     ++rep.stats.holes;
     ++(lodCulled ? rep.stats.holesCulledVisible : rep.stats.holesDiscarded);
@@ -411,6 +420,7 @@ Report checkScene(const Terrain& terrain, const Camera& camera, const CheckOptio
 Verdict verdictOf(const Stats& s) {
   if (s.cracks > 0) return Verdict::Cracks;
   if (s.holes > 0) return Verdict::Holes;
+  if (s.undecided > 0) return Verdict::Undecided;
   if (s.edgesChecked == 0) return Verdict::NothingChecked;
   if (s.tJunctions > 0) return Verdict::TJunctionsOnly;
   return Verdict::Watertight;
@@ -418,7 +428,7 @@ Verdict verdictOf(const Stats& s) {
 
 Verdict verdictOf(const SweepResult& r) {
   const Verdict v = verdictOf(r.total);
-  if (v == Verdict::Cracks || v == Verdict::Holes) return v;
+  if (v == Verdict::Cracks || v == Verdict::Holes || v == Verdict::Undecided) return v;
   if (r.camerasInvalid > 0) return Verdict::Unchecked;
   return v;
 }
@@ -431,6 +441,7 @@ const char* toString(Verdict v) {
   case Verdict::Holes: return "holes";
   case Verdict::NothingChecked: return "nothing_checked";
   case Verdict::Unchecked: return "unchecked";
+  case Verdict::Undecided: return "undecided";
   }
   return "?";
 }

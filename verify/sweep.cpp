@@ -20,6 +20,7 @@ void accumulate(Stats& s, const Stats& c) {
   s.holesDiscarded += c.holesDiscarded;
   s.holesCulledVisible += c.holesCulledVisible;
   s.culledUndecided += c.culledUndecided;
+  s.undecided += c.undecided;
   s.factorsCompared += c.factorsCompared;
   s.factorDiffs += c.factorDiffs;
   s.factorDiffsTessellation += c.factorDiffsTessellation;
@@ -60,6 +61,8 @@ SweepResult sweep(const Terrain& terrain, const std::vector<Camera>& cameras, co
       cr.stats = rep.stats;
       cr.hasHole = !rep.holes.empty();
       if (cr.hasHole) cr.firstHole = rep.holes.front();
+      cr.hasUndecided = !rep.undecided.empty();
+      if (cr.hasUndecided) cr.firstUndecided = rep.undecided.front();
       cr.hasFinding = false;
       for (const Finding& f : rep.findings) {
         if (f.classification == Classification::Match) continue;
@@ -74,6 +77,7 @@ SweepResult sweep(const Terrain& terrain, const std::vector<Camera>& cameras, co
         if (cr.done) {
           ++out.camerasDone;
           if (cr.stats.edgesChecked == 0) ++out.camerasNothingChecked;
+          if (cr.stats.undecided > 0) ++out.camerasUndecided;
           out.work += rep.work;
           accumulate(out.total, cr.stats);
         }
