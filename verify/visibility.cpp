@@ -69,27 +69,33 @@ void bilinearRange(const double c[4], double u0, double u1, double v0, double v1
   lo -= pad, hi += pad;
 }
 
+// How far the domain shader's float bilinear interpolation (domain.formula, two stages, either order) of four float
+// values c can be from their exact bilinear interpolation, with a factor 2 of margin. u = 2^-24, mag = max |c|,
+// span = max c - min c. lerp forms (a + t*(b - a), fma(t, b - a, a)): per stage 2u*|b - a| + u*|result|, so
+// 4u*span + 2u*mag over the two stages; blend forms (a*(1 - t) + b*t, fma(b, t, a*(1 - t))): 1 - t, both products
+// and the sum round with errors of the operands' size, 4u*mag per stage, 8u*mag in all.
+double lerpPad(LerpFormula f, const double c[4]) {
+  double lo = c[0], hi = c[0], mag = 0;
+  for (int k = 0; k < 4; ++k) lo = std::fmin(lo, c[k]), hi = std::fmax(hi, c[k]), mag = std::fmax(mag, std::fabs(c[k]));
+  const double u = 0x1p-24;
+  const bool blend = f == LerpFormula::Blend || f == LerpFormula::BlendFma;
+  return 2 * (blend ? 8 * u * mag : 4 * u * (hi - lo) + 2 * u * mag) + 1e-300;
+}
+
 // Per patch, fixed over the decision: what the sub-rectangle boxes need.
 struct BoxMaker {
   const TerrainData& t;
   const TerrainPatch& p;
   const PatchDomain* cam;
   double cx[4], cz[4], tu[4], tv[4]; // corner x, z and texture coordinates
-  double padXZ = 0, padTex = 0;
+  double padX = 0, padZ = 0, padU = 0, padV = 0; // lerpPad of each
   int levelLo = 0, levelHi = 0;     // the mip levels the domain shader can sample on this patch
   double morphReach = 0;            // geomorph: how far (domain units) an inserted vertex reads its neighbours
 
   BoxMaker(const TerrainData& td, const TerrainPatch& tp, const PatchDomain* c) : t(td), p(tp), cam(c) {
-    double mag = 0, magTex = 0;
-    for (int k = 0; k < 4; ++k) {
-      cx[k] = p.corners[k].x, cz[k] = p.corners[k].z, tu[k] = p.tex[k][0], tv[k] = p.tex[k][1];
-      mag = std::fmax(mag, std::fmax(std::fabs(cx[k]), std::fabs(cz[k])));
-      magTex = std::fmax(magTex, std::fmax(std::fabs(tu[k]), std::fabs(tv[k])));
-    }
-    // The domain shader's lerps (any domain.formula / order) stay within a few ulp of the exact bilinear value of
-    // the corners: 2^-20 of the corners' magnitude is 16 ulp.
-    padXZ = mag * 0x1p-20 + 1e-30;
-    padTex = magTex * 0x1p-20 + 1e-30;
+    for (int k = 0; k < 4; ++k) cx[k] = p.corners[k].x, cz[k] = p.corners[k].z, tu[k] = p.tex[k][0], tv[k] = p.tex[k][1];
+    const LerpFormula f = t.scene.domain.formula;
+    padX = lerpPad(f, cx), padZ = lerpPad(f, cz), padU = lerpPad(f, tu), padV = lerpPad(f, tv);
     const Displacement& d = t.scene.displacement;
     const int top = d.mips ? static_cast<int>(d.mips->size()) : 0;
     if (cam && d.mip != MipMode::None) {
@@ -118,8 +124,8 @@ struct BoxMaker {
   // The conservative box of the displaced surface over r.
   void box(const SubRect& r, glm::dvec3& lo, glm::dvec3& hi) const {
     const double u0 = r.u0, v0 = r.v0, u1 = u0 + r.side(), v1 = v0 + r.side();
-    bilinearRange(cx, u0, u1, v0, v1, padXZ, lo.x, hi.x);
-    bilinearRange(cz, u0, u1, v0, v1, padXZ, lo.z, hi.z);
+    bilinearRange(cx, u0, u1, v0, v1, padX, lo.x, hi.x);
+    bilinearRange(cz, u0, u1, v0, v1, padZ, lo.z, hi.z);
     lo.y = hi.y = 0;
     if (t.scene.displacement.kind == DisplacementKind::None) return; // y = 0 exactly
     heightRange(std::fmax(0.0, u0 - morphReach), std::fmin(1.0, u1 + morphReach), std::fmax(0.0, v0 - morphReach),
@@ -137,16 +143,16 @@ struct BoxMaker {
       // tx = (x - minX) * invSizeX in float: within 2^-23 (relative) of the exact value at the float x, and x lies
       // in the padded range.
       double xlo, xhi, zlo, zhi;
-      bilinearRange(cx, u0, u1, v0, v1, padXZ, xlo, xhi);
-      bilinearRange(cz, u0, u1, v0, v1, padXZ, zlo, zhi);
+      bilinearRange(cx, u0, u1, v0, v1, padX, xlo, xhi);
+      bilinearRange(cz, u0, u1, v0, v1, padZ, zlo, zhi);
       const double ix = t.invSizeX, iz = t.invSizeZ;
       txLo = (xlo - t.extent.minX) * ix, txHi = (xhi - t.extent.minX) * ix;
       tzLo = (zlo - t.extent.minZ) * iz, tzHi = (zhi - t.extent.minZ) * iz;
       txLo -= std::fabs(txLo) * 0x1p-22, txHi += std::fabs(txHi) * 0x1p-22;
       tzLo -= std::fabs(tzLo) * 0x1p-22, tzHi += std::fabs(tzHi) * 0x1p-22;
     } else {
-      bilinearRange(tu, u0, u1, v0, v1, padTex, txLo, txHi);
-      bilinearRange(tv, u0, u1, v0, v1, padTex, tzLo, tzHi);
+      bilinearRange(tu, u0, u1, v0, v1, padU, txLo, txHi);
+      bilinearRange(tv, u0, u1, v0, v1, padV, tzLo, tzHi);
     }
     double lo = INFINITY, hi = -INFINITY;
     for (int l = levelLo; l <= levelHi; ++l) {
@@ -160,12 +166,13 @@ struct BoxMaker {
       // Per texel cell [c, c + 1) the sample blends the same four (clamped) texels with weights in a range ([f0, 1]
       // in the first cell, [0, f1] in the last, [0, 1] between): a bilinear function of the weights, whose extremes
       // lie at the corners of that range.
-      for (int64_t cz = sz.c0; cz <= sz.c1; ++cz)
-        for (int64_t cx = sx.c0; cx <= sx.c1; ++cx) {
-          const int x0 = clampIndex(cx, w), x1 = clampIndex(cx + 1, w), z0 = clampIndex(cz, h), z1 = clampIndex(cz + 1, h);
+      for (int64_t cellZ = sz.c0; cellZ <= sz.c1; ++cellZ)
+        for (int64_t cellX = sx.c0; cellX <= sx.c1; ++cellX) {
+          const int x0 = clampIndex(cellX, w), x1 = clampIndex(cellX + 1, w);
+          const int z0 = clampIndex(cellZ, h), z1 = clampIndex(cellZ + 1, h);
           const double a = at(x0, z0), b = at(x1, z0), c = at(x0, z1), e = at(x1, z1);
-          const double fx[2] = {cx == sx.c0 ? sx.f0 : 0.0, cx == sx.c1 ? sx.f1 : 1.0};
-          const double fz[2] = {cz == sz.c0 ? sz.f0 : 0.0, cz == sz.c1 ? sz.f1 : 1.0};
+          const double fx[2] = {cellX == sx.c0 ? sx.f0 : 0.0, cellX == sx.c1 ? sx.f1 : 1.0};
+          const double fz[2] = {cellZ == sz.c0 ? sz.f0 : 0.0, cellZ == sz.c1 ? sz.f1 : 1.0};
           for (int k = 0; k < 4; ++k) {
             const double x = fx[k & 1], z = fz[k >> 1];
             const double v = (a + x * (b - a)) * (1 - z) + (c + x * (e - c)) * z;
