@@ -82,8 +82,8 @@ int runMerge(const MergeArgs& a) {
   // One sweep: same header (scene, overrides, cameras), shards 1..N each once (or one unsharded report).
   json header = shards[0];
   for (const char* k : {"cameras", "shard", "cameras_total", "cameras_done", "cancelled", "cameras_not_done",
-                        "cameras_invalid", "cameras_nothing_checked", "stats", "verdict", "causes", "work",
-                        "terrain_work"})
+                        "cameras_invalid", "cameras_nothing_checked", "cameras_undecided", "stats", "verdict",
+                        "causes", "work", "terrain_work"})
     header.erase(k);
   size_t count = 0;
   std::vector<char> seen;
