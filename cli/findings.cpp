@@ -152,8 +152,9 @@ static Cause undecidedCause(const vf::Hole& h) {
                   double(h.undecidedSide), double(h.domainPoint.u), double(h.domainPoint.v));
   else
     std::snprintf(buf, sizeof buf,
-                  "; visibility undecided: a sub-rectangle of side %g at u %g, v %g straddles a frustum plane with no "
-                  "point inside (the surface grazes the view)",
+                  "; visibility undecided: a sub-rectangle of side %g at u %g, v %g (the finest) still touches the "
+                  "view frustum, and no point evaluated in it is in view (a view smaller than it, or a surface that "
+                  "grazes the view)",
                   double(h.undecidedSide), double(h.domainPoint.u), double(h.domainPoint.v));
   const std::string key = h.kind == vf::HoleKind::CulledWhileVisible ? "undecided: culled (lod " + scheme + ")"
                                                                      : "undecided: discarded (lod " + scheme + ")";
