@@ -168,6 +168,8 @@ std::string checkSvg(const vf::Terrain& terrain, const vf::Report& r, const std:
   }
   o += "</g>\n<g id=\"holes\">\n";
   for (const vf::Hole& h : r.holes) svgHole(o, terrain, v, h, "hole: " + holeCause(h).detail);
+  o += "</g>\n<g id=\"undecided\">\n"; // patches not drawn, visibility undecided: filled like holes
+  for (const vf::Hole& h : r.undecided) svgHole(o, terrain, v, h, "undecided: " + holeCause(h).detail);
   o += "</g>\n";
   std::snprintf(buf, sizeof buf,
                 "<text class=\"t\" x=\"20\" y=\"%.0f\">%lld edges checked: %lld match, %lld T-junctions (orange), "
@@ -186,7 +188,7 @@ SvgCamera svgCamera(size_t globalIndex, const vf::Camera& cam, const vf::CameraR
   d.index = globalIndex;
   d.x = cam.eye.x, d.z = cam.eye.z;
   d.cracks = c.stats.cracks;
-  d.verdict = c.stats.cracks > 0 || c.stats.holes > 0 ? 'b' : c.stats.tJunctions > 0 ? 'w' : 'o';
+  d.verdict = c.stats.cracks > 0 || c.stats.holes > 0 || c.stats.undecided > 0 ? 'b' : c.stats.tJunctions > 0 ? 'w' : 'o';
   d.crackMark = c.hasFinding && c.stats.cracks > 0;
   if (d.crackMark) d.gx = c.worst.gapVertex.x, d.gz = c.worst.gapVertex.z;
   return d;
@@ -248,7 +250,7 @@ std::string sweepSvg(const vf::Terrain& terrain, const std::vector<vf::Camera>& 
   }
   std::snprintf(buf, sizeof buf,
                 "<text class=\"t\" x=\"20\" y=\"%.0f\">%zu cameras from above. Dots: green clean, orange T-junctions, "
-                "red cracks or holes.</text>\n<text class=\"t\" x=\"20\" y=\"%.0f\">Circles: worst crack of each camera; "
+                "red cracks, holes or undecided patches.</text>\n<text class=\"t\" x=\"20\" y=\"%.0f\">Circles: worst crack of each camera; "
                 "filled patches: each camera's first hole. "
                 "Numbers: first camera of each cause (in summary order).</text>\n",
                 H + 20, dots.size(), H + 40);
