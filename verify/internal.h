@@ -238,6 +238,10 @@ struct VisibilityDecision {
   bool workBound = false;      // Undecided because maxSubRectangles was reached
   int64_t subRectangles = 0;   // boxes built
 };
+// The conservative box of the displaced surface over the sub-rectangle [u0, u0 + 2^-depth] x [v0, v0 + 2^-depth]
+// (u0, v0 multiples of 2^-depth): every evalDomain(t, p, u, v, domain) with (u, v) in it lies inside [lo, hi].
+void surfaceBox(const TerrainData& t, const TerrainPatch& p, const PatchDomain* domain, float u0, float v0, int depth,
+                glm::dvec3& lo, glm::dvec3& hi);
 // Adds the domain evaluations to work (domainEvaluations, visibilityEvaluations).
 VisibilityDecision patchVisibility(const TerrainData& t, const TerrainPatch& p, const PatchDomain* domain,
                                    const FrustumTest& frustum, const VisibilityLimits& limits, WorkStats& work);

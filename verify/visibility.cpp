@@ -109,7 +109,9 @@ struct BoxMaker {
         nan = nan || std::isnan(l);
         lo = std::fmin(lo, l), hi = std::fmax(hi, l);
       }
-      lo = std::clamp(lo, 0.0, static_cast<double>(top)), hi = std::clamp(hi, 0.0, static_cast<double>(top));
+      // The interpolation rounds (a level of exactly 1 can come out as 0.99999994): widened by 2^-10 each way.
+      lo = std::clamp(lo - 0x1p-10, 0.0, static_cast<double>(top));
+      hi = std::clamp(hi + 0x1p-10, 0.0, static_cast<double>(top));
       levelLo = nan ? 0 : static_cast<int>(std::floor(lo));
       levelHi = std::min(top, static_cast<int>(std::floor(hi)) + 1);
     }
@@ -215,6 +217,11 @@ struct BoxMaker {
 };
 
 } // namespace
+
+void surfaceBox(const TerrainData& t, const TerrainPatch& p, const PatchDomain* domain, float u0, float v0, int depth,
+                glm::dvec3& lo, glm::dvec3& hi) {
+  BoxMaker(t, p, domain).box(SubRect{u0, v0, depth}, lo, hi);
+}
 
 // Breadth first, so that a patch with a large visible part is proven visible at a coarse level, and the work bound
 // cuts the finest level rather than one corner of the patch.
