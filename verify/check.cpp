@@ -118,6 +118,41 @@ float midpointW(const lod::Camera& cam, const TerrainPatch& p, int e) {
   return -z;
 }
 
+// The record of a patch not drawn whose visibility is not Invisible (a hole, or an undecided patch): how it was not
+// drawn (lod/'s cull, or the first edge whose factor made the tessellator discard it: discardEdge, -1 if none),
+// its factors, lod/'s record, the projection's w at that edge's midpoint, lod/'s box y range and the decision.
+Hole holeRecord(const TerrainData& t, const TerrainPatch& P, const lod::PatchLod& l, int discardEdge,
+                const VisibilityDecision& vis, const lod::Camera& lodCamera) {
+  const bool lodCulled = l.why.culled;
+  Hole h;
+  h.kind = lodCulled ? HoleKind::CulledWhileVisible : HoleKind::Discarded;
+  h.patch = P.ref;
+  h.visibility = vis.visibility;
+  h.visiblePoint = vis.point;
+  h.domainPoint = vis.at;
+  h.undecidedSide = vis.visibility == Visibility::Undecided ? vis.side : 0.0f;
+  h.budgetExhausted = vis.workBound;
+  h.edge = lodCulled || discardEdge < 0 ? -1 : discardEdge;
+  const int e = h.edge < 0 ? 0 : h.edge;
+  h.hullFactor = l.factors[e];
+  h.hullFactorBits = bitsOf(h.hullFactor);
+  for (int k = 0; k < 6; ++k) h.factors[k] = l.factors[k];
+  h.lod.why = l.why.factor[e];
+  h.lod.culled = lodCulled;
+  neighbourRule(t, P, e, h.lod);
+  h.midpointW = midpointW(lodCamera, P, e);
+  h.lodBoxMinY = h.lodBoxMaxY = P.lod.corners[0].y;
+  for (const glm::vec3& c : P.lod.corners) {
+    h.lodBoxMinY = std::fmin(h.lodBoxMinY, c.y);
+    h.lodBoxMaxY = std::fmax(h.lodBoxMaxY, c.y);
+  }
+  if (P.lod.useHeightBounds) {
+    h.lodBoxMinY = std::fmin(h.lodBoxMinY, P.lod.minHeight);
+    h.lodBoxMaxY = std::fmax(h.lodBoxMaxY, P.lod.maxHeight);
+  }
+  return h;
+}
+
 } // namespace
 
 Report checkTerrain(const TerrainData& t, const Camera& camera, const CheckOptions& options, EdgeCache& cache) {
@@ -204,32 +239,7 @@ Report checkTerrain(const TerrainData& t, const Camera& camera, const CheckOptio
     if (vis.visibility == Visibility::Invisible && vis.subRectangles == 0) continue; // its whole box is outside
     ++rep.stats.visibilityTests;
     if (vis.visibility == Visibility::Invisible) continue; // not on screen: no hole
-    Hole h;
-    h.kind = lodCulled ? HoleKind::CulledWhileVisible : HoleKind::Discarded;
-    h.patch = P.ref;
-    h.visibility = vis.visibility;
-    h.visiblePoint = vis.point;
-    h.domainPoint = vis.at;
-    h.undecidedSide = vis.visibility == Visibility::Undecided ? vis.side : 0.0f;
-    h.budgetExhausted = vis.workBound;
-    h.edge = lodCulled || discardEdge < 0 ? -1 : discardEdge;
-    const int e = h.edge < 0 ? 0 : h.edge;
-    h.hullFactor = factors[i].factors[e];
-    h.hullFactorBits = bitsOf(h.hullFactor);
-    for (int k = 0; k < 6; ++k) h.factors[k] = factors[i].factors[k];
-    h.lod.why = factors[i].why.factor[e];
-    h.lod.culled = lodCulled;
-    neighbourRule(t, P, e, h.lod);
-    h.midpointW = midpointW(lodCamera, P, e);
-    h.lodBoxMinY = h.lodBoxMaxY = P.lod.corners[0].y;
-    for (const glm::vec3& c : P.lod.corners) {
-      h.lodBoxMinY = std::fmin(h.lodBoxMinY, c.y);
-      h.lodBoxMaxY = std::fmax(h.lodBoxMaxY, c.y);
-    }
-    if (P.lod.useHeightBounds) {
-      h.lodBoxMinY = std::fmin(h.lodBoxMinY, P.lod.minHeight);
-      h.lodBoxMaxY = std::fmax(h.lodBoxMaxY, P.lod.maxHeight);
-    }
+    const Hole h = holeRecord(t, P, factors[i], discardEdge, vis, lodCamera);
     if (vis.visibility == Visibility::Undecided) {
       // Neither proven visible nor invisible: never clean (Verdict::Undecided), listed with the hole's record.
       ++rep.stats.undecided;
