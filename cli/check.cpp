@@ -7,10 +7,67 @@
 #include "report_json.h"
 #include "report_svg.h"
 
+#include <algorithm>
 #include <cstdio>
+#include <iterator>
 #include <stdexcept>
 
 namespace fftess::cli {
+
+namespace {
+
+// The patch edges only one of the two checks flags (--mesh): both empty when they agree.
+struct MeshDiff {
+  std::vector<vf::PatchEdgeRef> meshOnly, edgeOnly;
+  bool agree() const { return meshOnly.empty() && edgeOnly.empty(); }
+};
+
+MeshDiff meshDiff(const vf::Report& full, const vf::MeshReport& mesh) {
+  const std::vector<vf::PatchEdgeRef> edge = vf::flaggedPatchEdges(full);
+  MeshDiff d;
+  std::set_difference(mesh.flagged.begin(), mesh.flagged.end(), edge.begin(), edge.end(), std::back_inserter(d.meshOnly));
+  std::set_difference(edge.begin(), edge.end(), mesh.flagged.begin(), mesh.flagged.end(), std::back_inserter(d.edgeOnly));
+  return d;
+}
+
+// A disagreement in words: each patch edge only the mesh check flags, and each finding of the edge check on a
+// patch edge the mesh check does not flag (at most `show` lines of each).
+std::string meshDiffText(const vf::Terrain& terrain, const vf::Report& full, const MeshDiff& d, int show) {
+  const std::vector<vf::PatchGeometry> patches = terrain.patches();
+  std::string out = "  the whole-mesh check and the edge check disagree (a verifier bug; both findings follow):\n";
+  int n = 0;
+  for (const vf::PatchEdgeRef& e : d.meshOnly)
+    if (n++ < show)
+      out += "  mesh only  " + patchText(patches[static_cast<size_t>(e.patch)].ref) + " " + edgeName(e.edge) +
+             ": inner border edges of the whole mesh, no edge-check finding\n";
+  n = 0;
+  for (const vf::Finding& f : full.findings) {
+    if (f.classification == vf::Classification::Match) continue;
+    const vf::PatchEdgeRef a{f.a.patch.index, f.a.edge}, b{f.b.patch.index, f.b.edge};
+    if (!std::binary_search(d.edgeOnly.begin(), d.edgeOnly.end(), a) &&
+        !std::binary_search(d.edgeOnly.begin(), d.edgeOnly.end(), b))
+      continue;
+    if (n++ < show) out += "  edge only  " + findingLine(f) + " (the whole mesh has no border there)\n";
+  }
+  return out;
+}
+
+json meshDiffJson(const vf::Terrain& terrain, const MeshDiff& d) {
+  const std::vector<vf::PatchGeometry> patches = terrain.patches();
+  auto list = [&](const std::vector<vf::PatchEdgeRef>& v) {
+    json a = json::array();
+    for (const vf::PatchEdgeRef& e : v) {
+      const vf::PatchRef& p = patches[static_cast<size_t>(e.patch)].ref;
+      a.push_back({{"patch", {{"index", p.index}, {"ring", p.ring}, {"tile", p.tile}, {"patch", p.patch},
+                              {"level", p.level}}},
+                   {"edge", edgeName(e.edge)}});
+    }
+    return a;
+  };
+  return {{"agrees", d.agree()}, {"mesh_only", list(d.meshOnly)}, {"edge_check_only", list(d.edgeOnly)}};
+}
+
+} // namespace
 
 CLI::App* addCheck(CLI::App& app, CheckArgs& a) {
   CLI::App* sub = app.add_subcommand("check", "Check every shared patch edge of a scene from one camera");
@@ -18,8 +75,8 @@ CLI::App* addCheck(CLI::App& app, CheckArgs& a) {
               "  fftess check docs/examples/terrain.toml\n"
               "  fftess check docs/examples/terrain.toml --set lod.adjacency_clamp=integer --json report.json "
               "--svg report.svg\n"
-              "Exit status: 0 watertight, 1 cracks or holes found or nothing checked, 2 bad usage or scene, 3 internal "
-              "error.");
+              "Exit status: 0 watertight, 1 cracks or holes found, undecided visibility or nothing checked (or "
+              "--mesh disagrees with the edge check), 2 bad usage or scene, 3 internal error.");
   addSceneOptions(sub, a);
   sub->add_option_function<int>(
       "--path-camera", [&a](const int& n) { a.pathCamera = n, a.pathCameraGiven = true; },
@@ -75,6 +132,10 @@ int runCheck(const CheckArgs& a) {
       if (shown++ >= a.show) break;
       text += holeLine(h) + "\n";
     }
+    for (const vf::Hole& h : r.undecided) {
+      if (shown++ >= a.show) break;
+      text += holeLine(h) + "\n";
+    }
     // The findings on screen first, then those off screen (apart: not counted unless --offscreen).
     for (const bool onScreen : {true, false}) {
       bool header = onScreen;
@@ -87,22 +148,26 @@ int runCheck(const CheckArgs& a) {
         text += findingLine(f) + "\n";
       }
     }
-    const int64_t nonMatch = r.stats.cracks + r.stats.tJunctions + r.stats.holes;
+    const int64_t nonMatch = r.stats.cracks + r.stats.tJunctions + r.stats.holes + r.stats.undecided;
     if (shown > a.show || nonMatch > a.show)
       text += "  ... " + std::to_string(nonMatch - a.show) + " more findings (--show N, or --json FILE)\n";
   }
   vf::MeshReport mesh;
+  MeshDiff diff;
   if (a.mesh) {
     mesh = vf::checkSceneMesh(terrain, cam, opt);
-    const bool agree = vf::flaggedPatchEdges(full) == mesh.flagged;
-    if (!a.quiet && !jsonToStdout)
+    if (!mesh.error.empty()) throw UsageError(mesh.error);
+    diff = meshDiff(full, mesh);
+    if (!a.quiet && !jsonToStdout) {
       text += "whole-mesh check: " + std::to_string(mesh.triangles) + " triangles, " +
               std::to_string(mesh.innerBorderEdges) + " inner border edges on " + std::to_string(mesh.flagged.size()) +
-              " patch edges: " + (agree ? "agrees with the edge check" : "DISAGREES with the edge check") + "\n";
-    if (!agree) throw std::runtime_error("whole-mesh check and edge check disagree (a verifier bug)");
+              " patch edges: " + (diff.agree() ? "agrees with the edge check" : "DISAGREES with the edge check") + "\n";
+      if (!diff.agree()) text += meshDiffText(terrain, full, diff, a.show);
+    }
   }
   const vf::Verdict verdict = vf::verdictOf(r.stats, a.offscreen);
-  const int status = verdictStatus(a, verdict);
+  // A disagreement of the two checks is a finding (exit 1), reported with both sides, never a clean verdict.
+  const int status = diff.agree() ? verdictStatus(a, verdict) : kExitFindings;
   if (!a.quiet && !jsonToStdout) {
     std::string words;
     switch (verdict) {
@@ -112,14 +177,29 @@ int runCheck(const CheckArgs& a) {
       words = "NOTHING CHECKED: no shared edge was classified (every patch culled or out of view, or the layout has "
               "no shared edge); not a clean verdict";
       break;
+    case vf::Verdict::Undecided:
+      words = "UNDECIDED: " + std::to_string(r.stats.undecided) +
+              " patches not drawn could be neither proven visible nor invisible (listed above); not a clean verdict";
+      break;
     case vf::Verdict::TJunctionsOnly: words = "watertight now (T-junctions)"; break;
     default: words = "watertight"; break;
     }
+    if (r.stats.undecided > 0 && verdict != vf::Verdict::Undecided)
+      words += " (and " + std::to_string(r.stats.undecided) + " patches of undecided visibility)";
     const std::string off = offScreenWords(r.stats, a.offscreen);
-    text += "verdict: " + words + (off.empty() ? "" : " (" + off + ")") + "\n";
+    if (!off.empty()) words += " (" + off + ")";
+    if (!diff.agree()) words += "; the whole-mesh check DISAGREES with the edge check (exit 1)";
+    text += "verdict: " + words + "\n";
   }
   // Reports first (atomically), then the text: a failure writing a report leaves no partial file.
-  if (!a.json.empty()) reports.setJson(checkJson(a, terrain, cam, r, a.mesh ? &mesh : nullptr).dump(2) + "\n");
+  if (!a.json.empty()) {
+    json j = checkJson(a, terrain, cam, r, a.mesh ? &mesh : nullptr);
+    if (a.mesh) {
+      const json d = meshDiffJson(terrain, diff);
+      for (auto it = d.begin(); it != d.end(); ++it) j["mesh"][it.key()] = it.value();
+    }
+    reports.setJson(j.dump(2) + "\n");
+  }
   if (!a.svg.empty()) reports.setSvg(checkSvg(terrain, r, "fftess check " + a.scene, a.offscreen));
   reports.commit(); // all or nothing
   writeStdout(text);

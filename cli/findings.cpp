@@ -170,7 +170,36 @@ std::string findingLine(const vf::Finding& f) {
          ":" + gap + " " + findingCause(f).detail;
 }
 
+// A patch not drawn whose visibility stayed undecided (Report::undecided): which way it was not drawn, and where
+// the decision stopped.
+static Cause undecidedCause(const vf::Hole& h) {
+  const std::string scheme = vf::toString(h.lod.scheme);
+  std::string how;
+  if (h.kind == vf::HoleKind::CulledWhileVisible)
+    how = "culled by lod " + scheme;
+  else if (h.edge < 0)
+    how = "not drawn (patch dropped)";
+  else
+    how = "discarded by the tessellator: " + std::string(edgeName(h.edge)) + " factor " + formatFloat(h.hullFactor);
+  char buf[320];
+  if (h.budgetExhausted)
+    std::snprintf(buf, sizeof buf,
+                  "; visibility undecided: the work bound was reached (sub-rectangle of side %g at u %g, v %g still "
+                  "straddles a frustum plane)",
+                  double(h.undecidedSide), double(h.domainPoint.u), double(h.domainPoint.v));
+  else
+    std::snprintf(buf, sizeof buf,
+                  "; visibility undecided: a sub-rectangle of side %g at u %g, v %g (the finest) still touches the "
+                  "view frustum, and no point evaluated in it is in view (a view smaller than it, or a surface that "
+                  "grazes the view)",
+                  double(h.undecidedSide), double(h.domainPoint.u), double(h.domainPoint.v));
+  const std::string key = h.kind == vf::HoleKind::CulledWhileVisible ? "undecided: culled (lod " + scheme + ")"
+                                                                     : "undecided: discarded (lod " + scheme + ")";
+  return {key, how + buf};
+}
+
 Cause holeCause(const vf::Hole& h) {
+  if (h.visibility == vf::Visibility::Undecided) return undecidedCause(h);
   char buf[480];
   const std::string scheme = vf::toString(h.lod.scheme);
   if (h.kind == vf::HoleKind::CulledWhileVisible) {
@@ -216,7 +245,8 @@ Cause holeCause(const vf::Hole& h) {
 }
 
 std::string holeLine(const vf::Hole& h) {
-  return "hole       " + patchText(h.patch) + ": " + holeCause(h).detail;
+  return (h.visibility == vf::Visibility::Undecided ? "undecided  " : "hole       ") + patchText(h.patch) + ": " +
+         holeCause(h).detail;
 }
 
 std::string fmtWorld(double v) {
@@ -262,9 +292,10 @@ std::string statsText(const vf::Stats& s, bool countOffScreen) {
   o += "  cracks         " + countText(s.cracks, s.cracksOffScreen, countOffScreen) + "\n";
   o += "  holes          " + std::to_string(s.holes) + " (" + std::to_string(s.holesDiscarded) +
        " discarded by the tessellator, " + std::to_string(s.holesCulledVisible) + " culled while visible)\n";
-  if (s.culledUndecided > 0)
-    o += "  not decided    " + std::to_string(s.culledUndecided) +
-         " culled patches touch the view frustum's box test but no grid point is in view (not reported)\n";
+  if (s.undecided > 0)
+    o += "  undecided      " + std::to_string(s.undecided) + " (" + std::to_string(s.culledUndecided) + " culled, " +
+         std::to_string(s.undecided - s.culledUndecided) +
+         " discarded): patches not drawn, neither proven visible nor invisible (not clean)\n";
   const int64_t counted = countOffScreen ? s.cracks : s.cracksOnScreen();
   const bool differ = fmtWorld(s.worstGapWorld) != fmtWorld(s.worstGapWorldOnScreen) ||
                       fmtWorld(s.worstGapPixels) != fmtWorld(s.worstGapPixelsOnScreen); // as printed

@@ -71,6 +71,7 @@ vf::Stats statsOf(const json& j) {
   s.tJunctionsOffScreen = j.at("t_junctions_off_screen");
   s.worstGapWorldOnScreen = j.at("worst_gap_world_on_screen");
   s.worstGapPixelsOnScreen = j.at("worst_gap_pixels_on_screen");
+  s.undecided = j.at("undecided");
   return s;
 }
 
@@ -89,8 +90,8 @@ int runMerge(const MergeArgs& a) {
   // One sweep: same header (scene, overrides, cameras), shards 1..N each once (or one unsharded report).
   json header = shards[0];
   for (const char* k : {"cameras", "shard", "cameras_total", "cameras_done", "cancelled", "cameras_not_done",
-                        "cameras_invalid", "cameras_nothing_checked", "stats", "verdict", "causes", "work",
-                        "terrain_work"})
+                        "cameras_invalid", "cameras_nothing_checked", "cameras_undecided", "stats", "verdict",
+                        "causes", "work", "terrain_work"})
     header.erase(k);
   size_t count = 0;
   std::vector<char> seen;
@@ -145,6 +146,7 @@ int runMerge(const MergeArgs& a) {
     res.camerasDone += s.at("cameras_done").get<size_t>();
     res.camerasInvalid += s.at("cameras_invalid").get<size_t>();
     res.camerasNothingChecked += s.at("cameras_nothing_checked").get<size_t>();
+    res.camerasUndecided += s.at("cameras_undecided").get<size_t>();
     res.cancelled = res.cancelled || s.at("cancelled").get<bool>();
     vf::accumulate(res.total, statsOf(s.at("stats")));
   }

@@ -89,7 +89,7 @@ json statsJson(const vf::Stats& s) {
           {"worst_gap_world", s.worstGapWorld}, {"worst_gap_pixels", s.worstGapPixels},
           {"cracks_off_screen", s.cracksOffScreen}, {"t_junctions_off_screen", s.tJunctionsOffScreen},
           {"worst_gap_world_on_screen", s.worstGapWorldOnScreen},
-          {"worst_gap_pixels_on_screen", s.worstGapPixelsOnScreen}};
+          {"worst_gap_pixels_on_screen", s.worstGapPixelsOnScreen}, {"undecided", s.undecided}};
 }
 
 json holeJson(const vf::Hole& h) {
@@ -113,6 +113,12 @@ json holeJson(const vf::Hole& h) {
   j["midpoint_w"] = formatFloat(h.midpointW);
   j["lod_box_y"] = json::array({h.lodBoxMinY, h.lodBoxMaxY});
   j["on_screen"] = h.onScreen;
+  j["domain_point"] = h.visibility == vf::Visibility::Invisible ? json(nullptr)
+                                                                : json::array({h.domainPoint.u, h.domainPoint.v});
+  if (h.visibility == vf::Visibility::Undecided) {
+    j["undecided_side"] = h.undecidedSide;
+    j["budget_exhausted"] = h.budgetExhausted;
+  }
   return j;
 }
 
@@ -173,6 +179,9 @@ json checkJson(const SceneArgs& a, const vf::Terrain& terrain, const vf::Camera&
   json hs = json::array();
   for (const vf::Hole& h : r.holes) hs.push_back(holeJson(h));
   j["holes"] = hs;
+  json us = json::array();
+  for (const vf::Hole& h : r.undecided) us.push_back(holeJson(h));
+  j["undecided"] = us;
   j["denormals_flushed"] = r.denormalsFlushed;
   json ds = json::array();
   for (const vf::DenormalFactor& d : r.denormalFactors) ds.push_back(denormalJson(d));
@@ -205,6 +214,7 @@ json sweepCameraJson(size_t globalIndex, const vf::Camera& cam, const vf::Camera
     return jc;
   }
   jc["first_hole"] = c.hasHole ? holeJson(c.firstHole) : json(nullptr);
+  jc["first_undecided"] = c.hasUndecided ? holeJson(c.firstUndecided) : json(nullptr);
   jc["stats"] = statsJson(c.stats);
   jc["worst"] = c.hasFinding ? findingJson(c.worst) : json(nullptr);
   return jc;
@@ -219,6 +229,7 @@ json sweepSummaryJson(size_t requested, const vf::SweepResult& res, const std::v
   if (res.cancelled) j["cameras_not_done"] = requested - res.camerasDone; // not listed one by one
   j["cameras_invalid"] = res.camerasInvalid;
   j["cameras_nothing_checked"] = res.camerasNothingChecked;
+  j["cameras_undecided"] = res.camerasUndecided;
   j["stats"] = statsJson(res.total);
   j["verdict"] = vf::toString(vf::verdictOf(res, countOffScreen));
   json cs = json::array();

@@ -175,6 +175,8 @@ std::string checkSvg(const vf::Terrain& terrain, const vf::Report& r, const std:
   }
   o += "</g>\n<g id=\"holes\">\n";
   for (const vf::Hole& h : r.holes) svgHole(o, terrain, v, h, "hole: " + holeCause(h).detail);
+  o += "</g>\n<g id=\"undecided\">\n"; // patches not drawn, visibility undecided: filled like holes
+  for (const vf::Hole& h : r.undecided) svgHole(o, terrain, v, h, "undecided: " + holeCause(h).detail);
   o += "</g>\n";
   const int64_t off = r.stats.cracksOffScreen + r.stats.tJunctionsOffScreen;
   std::snprintf(buf, sizeof buf,
@@ -198,7 +200,7 @@ SvgCamera svgCamera(size_t globalIndex, const vf::Camera& cam, const vf::CameraR
   d.x = cam.eye.x, d.z = cam.eye.z;
   d.cracks = countOffScreen ? c.stats.cracks : c.stats.cracksOnScreen();
   const int64_t tJunctions = countOffScreen ? c.stats.tJunctions : c.stats.tJunctionsOnScreen();
-  d.verdict = d.cracks > 0 || c.stats.holes > 0 ? 'b' : tJunctions > 0 ? 'w' : 'o';
+  d.verdict = d.cracks > 0 || c.stats.holes > 0 || c.stats.undecided > 0 ? 'b' : tJunctions > 0 ? 'w' : 'o';
   d.crackMark = c.hasFinding && d.cracks > 0; // CameraResult::worst is a finding that counts
   const glm::vec3& at = countOffScreen ? c.worst.gapVertex : c.worst.onScreenGapVertex;
   if (d.crackMark) d.gx = at.x, d.gz = at.z;
@@ -261,7 +263,7 @@ std::string sweepSvg(const vf::Terrain& terrain, const std::vector<vf::Camera>& 
   }
   std::snprintf(buf, sizeof buf,
                 "<text class=\"t\" x=\"20\" y=\"%.0f\">%zu cameras from above. Dots: green clean, orange T-junctions, "
-                "red cracks or holes (%s).</text>\n<text class=\"t\" x=\"20\" y=\"%.0f\">Circles: worst crack of each camera; "
+                "red cracks, holes or undecided patches (%s).</text>\n<text class=\"t\" x=\"20\" y=\"%.0f\">Circles: worst crack of each camera; "
                 "filled patches: each camera's first hole. "
                 "Numbers: first camera of each cause (in summary order).</text>\n",
                 H + 20, dots.size(), countOffScreen ? "off screen too, --offscreen" : "on screen", H + 40);

@@ -19,7 +19,7 @@ struct SvgCamera {
   size_t index = 0;          // global camera index
   float x = 0, z = 0;        // eye
   int64_t cracks = 0;
-  char verdict = 'o';        // 'o' clean, 'w' T-junctions, 'b' cracks or holes
+  char verdict = 'o';        // 'o' clean, 'w' T-junctions, 'b' cracks, holes or undecided patches
   bool crackMark = false;    // worst crack circled at (gx, gz)
   float gx = 0, gz = 0;
 };

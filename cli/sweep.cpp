@@ -50,6 +50,10 @@ struct CauseTally {
       // Holes after the findings of the same camera (index offset keeps the order stable).
       addKey("hole: " + cause.key, cause.detail, camera, r.findings.size() + k, here);
     }
+    for (size_t k = 0; k < r.undecided.size(); ++k) { // the key starts with "undecided: "
+      const Cause cause = holeCause(r.undecided[k]);
+      addKey(cause.key, cause.detail, camera, r.findings.size() + r.holes.size() + k, here);
+    }
   }
 
   void addKey(const std::string& key, const std::string& detail, size_t camera, size_t k, std::set<std::string>& here) {
@@ -132,19 +136,27 @@ static std::string verdictHeadline(vf::Verdict verdict, const vf::SweepResult& r
   const std::string holesText = "HOLES seen from " + std::to_string(holeCameras) + " of " +
                                 std::to_string(res.camerasDone) + " cameras (" + std::to_string(res.total.holes) +
                                 " patches not drawn while in view)";
+  const std::string undecidedText = res.total.undecided > 0 ? "; " + std::to_string(res.total.undecided) +
+                                                                   " patches undecided on " +
+                                                                   std::to_string(res.camerasUndecided) + " cameras"
+                                                             : "";
   switch (verdict) {
   case vf::Verdict::Cracks:
     return "CRACKS seen from " + std::to_string(crackCameras) + " of " + std::to_string(res.camerasDone) +
            " cameras (worst gap" + (countOffScreen ? " " : " on screen ") + fmtWorld(countedGapWorld(res.total, countOffScreen)) +
            " world units, " + fmtWorld(countedGapPixels(res.total, countOffScreen)) + " px)" +
-           (res.total.holes > 0 ? "; " + holesText : "");
-  case vf::Verdict::Holes: return holesText;
+           (res.total.holes > 0 ? "; " + holesText : "") + undecidedText;
+  case vf::Verdict::Holes: return holesText + undecidedText;
   case vf::Verdict::NothingChecked:
     return "NOTHING CHECKED: no camera classified a shared edge (" + std::to_string(res.camerasDone) +
            " cameras checked, " + std::to_string(res.camerasInvalid) + " invalid); not a clean verdict";
   case vf::Verdict::Unchecked:
     return "NOT CLEAN: " + std::to_string(res.camerasInvalid) + " of " + std::to_string(cameras) +
            " cameras could not be checked (the other " + std::to_string(res.camerasDone) + " found no crack or hole)";
+  case vf::Verdict::Undecided:
+    return "NOT WATERTIGHT: UNDECIDED from " + std::to_string(res.camerasUndecided) + " of " +
+           std::to_string(res.camerasDone) + " cameras (" + std::to_string(res.total.undecided) +
+           " patches not drawn, neither proven visible nor invisible)";
   case vf::Verdict::TJunctionsOnly: return res.cancelled ? "no cracks so far (interrupted)" : "no cracks (T-junctions only)";
   case vf::Verdict::Watertight:
     return res.cancelled ? "no cracks so far (interrupted)" : "WATERTIGHT from all " + std::to_string(res.camerasDone) + " cameras";
@@ -349,6 +361,10 @@ int runSweep(const SweepArgs& a) {
     std::snprintf(buf, sizeof buf, "  cameras with cracks %zu, with T-junctions only %zu, with holes %zu\n", crackCameras,
                   tjCameras, holeCameras);
     text += buf;
+    if (res.camerasUndecided > 0) {
+      std::snprintf(buf, sizeof buf, "  cameras with undecided patches (not clean): %zu\n", res.camerasUndecided);
+      text += buf;
+    }
     if (res.camerasNothingChecked > 0) {
       std::snprintf(buf, sizeof buf, "  cameras that classified no shared edge (all culled or out of view): %zu\n",
                     res.camerasNothingChecked);

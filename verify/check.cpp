@@ -178,6 +178,41 @@ void noteDenormals(const TerrainData& t, const std::vector<lod::PatchLod>& facto
     }
 }
 
+// The record of a patch not drawn whose visibility is not Invisible (a hole, or an undecided patch): how it was not
+// drawn (lod/'s cull, or the first edge whose factor made the tessellator discard it: discardEdge, -1 if none),
+// its factors, lod/'s record, the projection's w at that edge's midpoint, lod/'s box y range and the decision.
+Hole holeRecord(const TerrainData& t, const TerrainPatch& P, const lod::PatchLod& l, int discardEdge,
+                const VisibilityDecision& vis, const lod::Camera& lodCamera) {
+  const bool lodCulled = l.why.culled;
+  Hole h;
+  h.kind = lodCulled ? HoleKind::CulledWhileVisible : HoleKind::Discarded;
+  h.patch = P.ref;
+  h.visibility = vis.visibility;
+  h.visiblePoint = vis.point;
+  h.domainPoint = vis.at;
+  h.undecidedSide = vis.visibility == Visibility::Undecided ? vis.side : 0.0f;
+  h.budgetExhausted = vis.workBound;
+  h.edge = lodCulled || discardEdge < 0 ? -1 : discardEdge;
+  const int e = h.edge < 0 ? 0 : h.edge;
+  h.hullFactor = l.factors[e];
+  h.hullFactorBits = bitsOf(h.hullFactor);
+  for (int k = 0; k < 6; ++k) h.factors[k] = l.factors[k];
+  h.lod.why = l.why.factor[e];
+  h.lod.culled = lodCulled;
+  neighbourRule(t, P, e, h.lod);
+  h.midpointW = midpointW(lodCamera, P, e);
+  h.lodBoxMinY = h.lodBoxMaxY = P.lod.corners[0].y;
+  for (const glm::vec3& c : P.lod.corners) {
+    h.lodBoxMinY = std::fmin(h.lodBoxMinY, c.y);
+    h.lodBoxMaxY = std::fmax(h.lodBoxMaxY, c.y);
+  }
+  if (P.lod.useHeightBounds) {
+    h.lodBoxMinY = std::fmin(h.lodBoxMinY, P.lod.minHeight);
+    h.lodBoxMaxY = std::fmax(h.lodBoxMaxY, P.lod.maxHeight);
+  }
+  return h;
+}
+
 } // namespace
 
 Report checkTerrain(const TerrainData& t, const Camera& camera, const CheckOptions& options, EdgeCache& cache) {
@@ -227,6 +262,10 @@ Report checkTerrain(const TerrainData& t, const Camera& camera, const CheckOptio
     lod::TileNeighbours wrong = P.tile;
     wrong.size[fault.edge] = fault.size;
     factors[static_cast<size_t>(fault.patch)] = patchLod(t, P, wrong, lodCamera);
+  } else if (faultPatch && fault.kind == Fault::Kind::CullPatch) {
+    lod::PatchLod& c = factors[static_cast<size_t>(fault.patch)];
+    c.why.culled = true; // as a wrong frustum test culls: every factor 0
+    for (float& f : c.factors) f = 0.0f;
   } else if (faultPatch) {
     float& f = factors[static_cast<size_t>(fault.patch)].factors[fault.edge];
     f = perturbFactor(fault, f);
@@ -240,10 +279,13 @@ Report checkTerrain(const TerrainData& t, const Camera& camera, const CheckOptio
   std::vector<char>& culled = cache.culled;
   culled.assign(n, 0);
   const FrustumTest frustum(lodCamera);
+  VisibilityLimits limits;
+  limits.maxDepth = options.visibilityDepth;
+  limits.maxSubRectangles = std::max<int64_t>(1, options.visibilityBudget);
   for (size_t i = 0; i < n; ++i) {
     const bool lodCulled = factors[i].why.culled;
     // A patch lod/ culled is not drawn whatever its factors: no edge query, no domain point (only the hole check's
-    // grid below, when its box touches the frustum).
+    // visibility decision below, when its box touches the frustum).
     int discardEdge = -1;
     for (int e = 0; e < 4 && !lodCulled; ++e) {
       ep[i][e] = &cache.get(factors[i].factors[e], rep.work);
@@ -254,41 +296,18 @@ Report checkTerrain(const TerrainData& t, const Camera& camera, const CheckOptio
     culled[i] = 1;
     ++rep.stats.culledPatches;
     const TerrainPatch& P = t.patches[i];
-    glm::vec3 point{};
-    if (lodCulled) {
-      const Visibility vis = patchVisibility(t, P, domainCam.at(i), frustum, options.visibilityGrid, &point, rep.work);
-      if (vis != Visibility::Invisible) ++rep.stats.visibilityTests;
-      if (vis == Visibility::Undecided) ++rep.stats.culledUndecided;
-      if (vis != Visibility::Visible) continue;
-    }
-    Visibility vis = Visibility::Visible;
-    if (!lodCulled) {
-      vis = patchVisibility(t, P, domainCam.at(i), frustum, options.visibilityGrid, &point, rep.work);
-      if (vis == Visibility::Invisible) continue; // not drawn, not on screen: no hole
-      ++rep.stats.visibilityTests;
-    }
-    Hole h;
-    h.kind = lodCulled ? HoleKind::CulledWhileVisible : HoleKind::Discarded;
-    h.patch = P.ref;
-    h.visibility = vis;
-    h.visiblePoint = point;
-    h.edge = lodCulled || discardEdge < 0 ? -1 : discardEdge;
-    const int e = h.edge < 0 ? 0 : h.edge;
-    h.hullFactor = factors[i].factors[e];
-    h.hullFactorBits = bitsOf(h.hullFactor);
-    for (int k = 0; k < 6; ++k) h.factors[k] = factors[i].factors[k];
-    h.lod.why = factors[i].why.factor[e];
-    h.lod.culled = lodCulled;
-    neighbourRule(t, P, e, h.lod);
-    h.midpointW = midpointW(lodCamera, P, e);
-    h.lodBoxMinY = h.lodBoxMaxY = P.lod.corners[0].y;
-    for (const glm::vec3& c : P.lod.corners) {
-      h.lodBoxMinY = std::fmin(h.lodBoxMinY, c.y);
-      h.lodBoxMaxY = std::fmax(h.lodBoxMaxY, c.y);
-    }
-    if (P.lod.useHeightBounds) {
-      h.lodBoxMinY = std::fmin(h.lodBoxMinY, P.lod.minHeight);
-      h.lodBoxMaxY = std::fmax(h.lodBoxMaxY, P.lod.maxHeight);
+    const VisibilityDecision vis = patchVisibility(t, P, domainCam.at(i), frustum, limits, rep.work);
+    if (vis.visibility == Visibility::Invisible && vis.subRectangles == 0) continue; // its whole box is outside
+    ++rep.stats.visibilityTests;
+    if (vis.visibility == Visibility::Invisible) continue; // not on screen: no hole
+    const Hole h = holeRecord(t, P, factors[i], discardEdge, vis, lodCamera);
+    if (vis.visibility == Visibility::Undecided) {
+      // Neither proven visible nor invisible: never clean (Verdict::Undecided), listed with the hole's record.
+      ++rep.stats.undecided;
+      if (lodCulled) ++rep.stats.culledUndecided;
+      if (rep.undecided.size() < options.maxFindings) rep.undecided.push_back(h);
+      else rep.truncated = true;
+      continue;
     }
     ++rep.stats.holes;
     ++(lodCulled ? rep.stats.holesCulledVisible : rep.stats.holesDiscarded);
@@ -475,6 +494,7 @@ Report checkScene(const Terrain& terrain, const Camera& camera, const CheckOptio
 Verdict verdictOf(const Stats& s, bool countOffScreen) {
   if ((countOffScreen ? s.cracks : s.cracksOnScreen()) > 0) return Verdict::Cracks;
   if (s.holes > 0) return Verdict::Holes;
+  if (s.undecided > 0) return Verdict::Undecided;
   if (s.edgesChecked == 0) return Verdict::NothingChecked;
   if ((countOffScreen ? s.tJunctions : s.tJunctionsOnScreen()) > 0) return Verdict::TJunctionsOnly;
   return Verdict::Watertight;
@@ -482,7 +502,7 @@ Verdict verdictOf(const Stats& s, bool countOffScreen) {
 
 Verdict verdictOf(const SweepResult& r, bool countOffScreen) {
   const Verdict v = verdictOf(r.total, countOffScreen);
-  if (v == Verdict::Cracks || v == Verdict::Holes) return v;
+  if (v == Verdict::Cracks || v == Verdict::Holes || v == Verdict::Undecided) return v;
   if (r.camerasInvalid > 0) return Verdict::Unchecked;
   return v;
 }
@@ -495,6 +515,7 @@ const char* toString(Verdict v) {
   case Verdict::Holes: return "holes";
   case Verdict::NothingChecked: return "nothing_checked";
   case Verdict::Unchecked: return "unchecked";
+  case Verdict::Undecided: return "undecided";
   }
   return "?";
 }

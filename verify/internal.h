@@ -270,9 +270,31 @@ void markOnScreen(const FrustumTest& frustum, const lod::Camera& cam, float near
                   const glm::vec3* fullA, int naFull, int first, int last, const glm::vec3* b, int nb, Finding& f,
                   Stats& stats);
 
-// Invisible (box outside), Visible (a grid point inside; *point set) or Undecided. Adds the grid's domain
-// evaluations to work.
-Visibility patchVisibility(const TerrainData& t, const TerrainPatch& p, const PatchDomain* domain,
-                           const FrustumTest& frustum, int grid, glm::vec3* point, WorkStats& work);
+// The decision for one patch that is not drawn (verify.h, Hole; docs/verify.md, "Holes"): its (u, v) domain split
+// breadth first into dyadic sub-rectangles; each one's conservative box of the displaced surface (x/z from the
+// exact bilinear interpolation of the corners, padded for the domain shader's float rounding; y from the texels its
+// footprint can read on every mip level the domain shader samples) outside one frustum plane is invisible; its centre
+// (and, at the root and at the finest level, its corners) strictly inside the frustum proves the patch visible;
+// otherwise it is split, down to side 2^-maxDepth. Undecided: a finest-level sub-rectangle was neither, or the work
+// bound (maxSubRectangles) was reached first.
+struct VisibilityLimits {
+  int maxDepth = 10;                 // finest sub-rectangle: 2^-maxDepth of the patch side (0..20)
+  int64_t maxSubRectangles = 16384;  // boxes per patch, then Undecided
+};
+struct VisibilityDecision {
+  Visibility visibility = Visibility::Invisible;
+  glm::vec3 point{};           // Visible: the domain point inside the frustum (world)
+  DomainPoint at{};            // Visible: its (u, v); Undecided: the lower corner of the first undecided sub-rectangle
+  float side = 0;              // Undecided: that sub-rectangle's side (domain units)
+  bool workBound = false;      // Undecided because maxSubRectangles was reached
+  int64_t subRectangles = 0;   // boxes built
+};
+// The conservative box of the displaced surface over the sub-rectangle [u0, u0 + 2^-depth] x [v0, v0 + 2^-depth]
+// (u0, v0 multiples of 2^-depth): every evalDomain(t, p, u, v, domain) with (u, v) in it lies inside [lo, hi].
+void surfaceBox(const TerrainData& t, const TerrainPatch& p, const PatchDomain* domain, float u0, float v0, int depth,
+                glm::dvec3& lo, glm::dvec3& hi);
+// Adds the domain evaluations to work (domainEvaluations, visibilityEvaluations).
+VisibilityDecision patchVisibility(const TerrainData& t, const TerrainPatch& p, const PatchDomain* domain,
+                                   const FrustumTest& frustum, const VisibilityLimits& limits, WorkStats& work);
 
 } // namespace fftess::verify::detail

@@ -58,7 +58,12 @@ MeshReport checkSceneMesh(const Terrain& terrain, const Camera& camera, const Ch
   std::vector<char> drawn(n, 0);
   std::vector<Point> points;
   std::vector<std::vector<std::size_t>> polygons;
-  std::map<Key, std::vector<std::pair<int, unsigned>>> where; // point -> (patch, edge mask) for edge points
+  struct EdgeVertex {
+    int patch;
+    unsigned mask;  // the patch edges the point lies on
+    DomainPoint d;  // its domain point on that patch
+  };
+  std::map<Key, std::vector<EdgeVertex>> where; // edge points -> where they came from
   Tessellator tess;
   const Options tessOptions = detail::tessellatorOptions(scene, options); // the denormal rule (denormalRule)
   for (size_t i = 0; i < n; ++i) {
@@ -77,7 +82,7 @@ MeshReport checkSceneMesh(const Terrain& terrain, const Camera& camera, const Ch
     for (const DomainPoint& d : tess.points()) {
       const glm::vec3 w = detail::evalDomain(t, t.patches[i], d.u, d.v, domainCam.at(i), rep.work);
       points.emplace_back(w.x, w.y, w.z);
-      if (unsigned m = edgeMask(d)) where[Key{w.x, w.y, w.z}].push_back({static_cast<int>(i), m});
+      if (unsigned m = edgeMask(d)) where[Key{w.x, w.y, w.z}].push_back({static_cast<int>(i), m, d});
     }
     const auto& idx = tess.indices();
     for (size_t k = 0; k + 2 < idx.size(); k += 3)
@@ -99,12 +104,25 @@ MeshReport checkSceneMesh(const Terrain& terrain, const Camera& camera, const Ch
   PMP::border_halfedges(faces(mesh), mesh, std::back_inserter(border));
   rep.borderEdges = static_cast<int64_t>(border.size());
 
-  auto sideNeighboursDrawn = [&](int patch, int e) {
-    const auto& nb = t.patches[patch].nb[e];
+  // A border segment [t0, t1] (edge parameter) on edge e of a patch is a crack or T-junction only where the
+  // patch across is drawn: the edge check skips pairs with a culled side, per pair. Beside two half-size neighbours
+  // each covers half of the edge (in the edge parameter, as the edge check splits it): the segment counts when a
+  // drawn neighbour's half overlaps it (a segment over the middle of the edge beside one drawn half is a finding
+  // of that half: the small side's corner at the middle is no vertex of the big side); within a culled half, it
+  // does not (that half is not drawn: the edge check skips that pair too).
+  auto acrossDrawn = [&](int patch, int e, float t0, float t1) {
+    const detail::TerrainPatch& A = t.patches[static_cast<size_t>(patch)];
+    const auto& nb = A.nb[e];
     if (nb[0] < 0) return false; // outer boundary
-    for (int q : nb)
-      if (q >= 0 && !drawn[q]) return false; // beside a culled patch: not checked by either check
-    return true;
+    if (nb[1] < 0) return drawn[static_cast<size_t>(nb[0])] != 0;
+    const float lo = std::fmin(t0, t1), hi = std::fmax(t0, t1);
+    for (int q : nb) {
+      const detail::TerrainPatch& B = t.patches[static_cast<size_t>(q)];
+      const bool alongX = e == Veq0 || e == Veq1;
+      const float halfLo = (alongX ? B.ux - A.ux : B.uz - A.uz) == 0 ? 0.0f : 0.5f;
+      if (drawn[static_cast<size_t>(q)] && lo < halfLo + 0.5f && hi > halfLo) return true;
+    }
+    return false;
   };
   for (auto h : border) {
     const Point& p = mesh.point(mesh.source(h));
@@ -114,15 +132,16 @@ MeshReport checkSceneMesh(const Terrain& terrain, const Camera& camera, const Ch
     auto ip = where.find(kp), iq = where.find(kq);
     bool inner = false;
     if (ip != where.end() && iq != where.end()) {
-      for (const auto& [pa, ma] : ip->second)
-        for (const auto& [pb, mb] : iq->second) {
-          if (pa != pb) continue;
-          const unsigned common = ma & mb;
+      for (const EdgeVertex& a : ip->second)
+        for (const EdgeVertex& b : iq->second) {
+          if (a.patch != b.patch) continue;
+          const unsigned common = a.mask & b.mask;
           for (int e = 0; e < 4; ++e)
             if ((common >> e) & 1u) {
-              if (!sideNeighboursDrawn(pa, e)) continue;
+              const bool alongU = e == Veq0 || e == Veq1; // the edge's parameter is u, else v
+              if (!acrossDrawn(a.patch, e, alongU ? a.d.u : a.d.v, alongU ? b.d.u : b.d.v)) continue;
               inner = true;
-              rep.flagged.push_back({pa, e});
+              rep.flagged.push_back({a.patch, e});
             }
         }
     }

@@ -21,6 +21,7 @@ void accumulate(Stats& s, const Stats& c) {
   s.holesDiscarded += c.holesDiscarded;
   s.holesCulledVisible += c.holesCulledVisible;
   s.culledUndecided += c.culledUndecided;
+  s.undecided += c.undecided;
   s.factorsCompared += c.factorsCompared;
   s.factorDiffs += c.factorDiffs;
   s.factorDiffsTessellation += c.factorDiffsTessellation;
@@ -71,6 +72,8 @@ SweepResult sweep(const Terrain& terrain, size_t count, const std::function<Came
       cr.stats = rep.stats;
       cr.hasHole = !rep.holes.empty();
       if (cr.hasHole) cr.firstHole = rep.holes.front();
+      cr.hasUndecided = !rep.undecided.empty();
+      if (cr.hasUndecided) cr.firstUndecided = rep.undecided.front();
       cr.hasFinding = false;
       // The worst of the findings that count (CameraResult::worst).
       const bool all = options.countOffScreen;
@@ -87,6 +90,7 @@ SweepResult sweep(const Terrain& terrain, size_t count, const std::function<Came
         if (cr.done) {
           ++out.camerasDone;
           if (cr.stats.edgesChecked == 0) ++out.camerasNothingChecked;
+          if (cr.stats.undecided > 0) ++out.camerasUndecided;
           out.work += rep.work;
           accumulate(out.total, cr.stats);
         }

@@ -419,6 +419,7 @@ struct Fault {
     MirrorEdge,     // the edge points of (patch, edge) are taken at 1 - t instead of t (a port that walks the
                     // edge backwards); D3D's symmetric edge tessellation makes this a no-op for many factors
     NeighbourSize,  // the LOD is told that the neighbour across (patch, edge) has relative size `size`
+    CullPatch,      // the LOD culls the patch (lod::Why::culled, every factor 0) as a wrong frustum test would
   };
   Kind kind = Kind::None;
   int patch = -1;       // PatchRef::index
@@ -506,9 +507,11 @@ struct CheckOptions {
   size_t maxFindings = 1000;      // findings (and holes) kept in Report::findings / Report::holes (stats count all)
   bool keepMatches = false;       // also keep matching pairs as findings
   Options tessellator{};          // handed to fftess::edgePoints / Tessellator (flushDenormals)
-  // Holes: a patch that lod/ culled is tested for visibility on a visibilityGrid x visibilityGrid grid of domain
-  // points (edges included) when its true surface box is not wholly outside the view frustum (see Hole).
-  int visibilityGrid = 33;        // >= 2
+  // Holes: whether a patch that is not drawn is visible is decided by splitting its (u, v) domain (see Hole):
+  // sub-rectangles down to a side of 2^-visibilityDepth of the patch, at most visibilityBudget boxes per patch;
+  // what is still open then is Visibility::Undecided (Report::undecided, never a clean verdict).
+  int visibilityDepth = 10;       // 0..20 (10: 1/1024 of the patch side)
+  int64_t visibilityBudget = 16384; // sub-rectangle boxes per patch (>= 1)
   Fault fault{};                  // testing the checker only
   // The GPU path: where the scene asks for it (lod.evaluate = "gpu" or lod.shader), the factors come from here.
   // Null there: every camera gets Report::error (verify links no GL; the cli builds it, verify/gpu/gpu_lod.h).
@@ -605,20 +608,27 @@ std::string lodWords(const EdgeSide& side);
 
 // A hole: a patch that is not drawn although part of it would be on screen.
 //
-// The tessellator discards a patch when any outer factor is NaN, <= 0 or -Inf (D3D11.3 11.7.6; the reference's
-// culling rule). Whether a discarded patch would leave a visible hole is decided from its true surface:
-//   * its box: x/z from its corners, y from the displacement texels its footprint samples (bilinear filtering and
-//     mip averaging stay inside them), padded by 2^-20 of its magnitude for float rounding. A box wholly outside
-//     one plane of the view frustum (double precision) proves the patch invisible;
-//   * otherwise a grid of visibilityGrid^2 domain points (edges included), positioned by the scene's domain shader;
-//     one strictly inside the frustum (clip space in double: |x|, |y| < w, near < z < far) proves it visible.
-// Holes reported:
-//   Discarded          the tessellator discards the patch (some outer hull factor NaN, <= 0 or -Inf) but lod/ did
-//                      not cull it, and it is not proven invisible (visible, or not decided: reported either way);
-//   CulledWhileVisible lod/'s frustum test culled the patch, and a grid point is inside the frustum (a height bound
-//                      too small, a wrong plane, a patch box that misses its displaced surface).
-// A culled patch whose box touches the frustum but whose grid has no point inside is counted in
-// Stats::culledUndecided, not reported: the grid's spacing is the limit of what was checked.
+// Not drawn: lod/ culled it (its Why::culled), or the tessellator discards it because an outer factor is NaN, <= 0
+// or -Inf (D3D11.3 11.7.6; the reference's culling rule) while lod/ did not mean to cull it. Whether such a patch is
+// on screen is decided, not sampled (docs/verify.md, "Holes"), in double from lod's float matrices, on the
+// displaced surface as the scene's domain shader positions it (every (u, v) in [0, 1]^2):
+//   * the patch's (u, v) domain is split into dyadic sub-rectangles, breadth first. Each gets a conservative box of
+//     the surface over it: x/z from the exact bilinear interpolation of the corners, padded by 2^-20 of their
+//     magnitude (the domain shader's float lerps); y from the displacement texels its footprint can read on every
+//     mip level the domain shader samples there (bilinear and trilinear filtering and geomorph blending stay
+//     between the texels they read), times height_scale, padded by 2^-16 (float rounding of the filters);
+//   * a box wholly outside one plane of the view frustum: that part is invisible;
+//   * its centre (and at the root and the finest level its corners), evaluated by the domain shader emulation,
+//     strictly inside the frustum (clip space: |x|, |y| < w, -w < z < w): the patch is Visible;
+//   * otherwise it is split, down to a side of 2^-CheckOptions::visibilityDepth (1/1024 of the patch), with at most
+//     CheckOptions::visibilityBudget boxes per patch.
+// Every part invisible: Invisible, nothing reported. A point found: a hole (Report::holes):
+//   Discarded          the tessellator discards the patch but lod/ did not cull it;
+//   CulledWhileVisible lod/'s frustum test culled the patch (a height bound too small, a wrong plane, a patch box
+//                      that misses its displaced surface).
+// Neither (a finest sub-rectangle still straddles a plane, or the budget ran out): Visibility::Undecided, listed in
+// Report::undecided with the same record (kind: culled or discarded), counted in Stats::undecided; the verdict is
+// Verdict::Undecided unless there are cracks or holes. Never a clean verdict.
 enum class HoleKind : uint8_t { Discarded, CulledWhileVisible };
 enum class Visibility : uint8_t { Invisible, Visible, Undecided };
 
@@ -645,6 +655,11 @@ struct Hole {
   // patch whose surface box is outside the frustum is Invisible and no hole; Visible holes have a point inside the
   // frustum; Undecided ones may be on screen and count as on screen.
   bool onScreen = true;
+  // Visible: the (u, v) of visiblePoint. Undecided: the lower corner of the first sub-rectangle left undecided.
+  DomainPoint domainPoint{};
+  float undecidedSide = 0;     // Undecided: that sub-rectangle's side in (u, v) units (2^-visibilityDepth, or
+                               // larger when the budget ran out first)
+  bool budgetExhausted = false; // Undecided: CheckOptions::visibilityBudget boxes were built before a decision
 };
 
 const char* toString(HoleKind k);  // "discarded", "culled_while_visible"
@@ -659,12 +674,15 @@ struct Stats {
   int64_t holesDiscarded = 0;  // HoleKind::Discarded
   int64_t holesCulledVisible = 0; // HoleKind::CulledWhileVisible
   int64_t culledUndecided = 0; // lod-culled patches neither proven invisible nor visible (see Hole)
-  int64_t visibilityTests = 0; // culled or discarded patches whose box touched the frustum (grid evaluated)
+  int64_t visibilityTests = 0; // culled or discarded patches whose box touched the frustum (domain split)
   int64_t matches = 0;
   int64_t tJunctions = 0;
   int64_t cracks = 0;
   double worstGapWorld = 0;
   double worstGapPixels = 0;
+  // Patches not drawn whose visibility stayed undecided (Report::undecided; culled ones also in culledUndecided):
+  // the verdict is Undecided unless there are cracks or holes.
+  int64_t undecided = 0;
   // The GPU path with a C++ reference (lod.evaluate = "gpu", or lod.shader with a built-in lod.scheme): factors
   // compared, those whose bits differ, and those of them that change the tessellation (FactorDiff).
   int64_t factorsCompared = 0;
@@ -687,6 +705,8 @@ struct Report {
   std::string error;             // non-empty: the camera is invalid and nothing was checked
   std::vector<Finding> findings; // non-matching pairs (and matches with keepMatches), in layout order
   std::vector<Hole> holes;       // holes, in layout order (at most maxFindings; Stats::holes counts all)
+  std::vector<Hole> undecided;   // patches not drawn, visibility undecided (Hole::visibility Undecided), in layout
+                                 // order (at most maxFindings; Stats::undecided counts all)
   std::vector<FactorDiff> factorDiffs; // GPU vs C++ build, in layout order (at most maxFindings; Stats counts all)
   std::vector<DenormalFactor> denormalFactors; // in layout order (at most maxFindings; Stats counts all)
   bool denormalsFlushed = false; // the rule this camera ran with (denormalRule)
@@ -788,6 +808,8 @@ struct CameraResult {
   Finding worst;
   bool hasHole = false;
   Hole firstHole;                // the first hole in layout order
+  bool hasUndecided = false;
+  Hole firstUndecided;           // the first undecided patch (Report::undecided) in layout order
 };
 
 struct SweepOptions {
@@ -820,18 +842,21 @@ struct SweepResult {
   size_t camerasDone = 0;            // cameras checked
   size_t camerasInvalid = 0;         // cameras that could not be checked (CameraResult::error)
   size_t camerasNothingChecked = 0;  // cameras done that classified no shared edge (everything culled, say)
+  size_t camerasUndecided = 0;       // cameras done with Stats::undecided > 0 (not clean)
   bool cancelled = false;
 };
 
 // The verdict of a report or a sweep, in one place (the cli turns it into words and an exit status).
 enum class Verdict : uint8_t {
-  Watertight,      // at least one shared edge classified, every one a match, no hole, every camera checked (by
-                   // default: every finding off screen; see verdictOf)
+  Watertight,      // at least one shared edge classified, every one a match, no hole, no undecided patch, every
+                   // camera checked (by default: every finding off screen; see verdictOf)
   TJunctionsOnly,  // as Watertight but some T-junctions (no gap now; a gap once displacement differs)
   Cracks,          // at least one crack (holes may come with them)
   Holes,           // at least one hole, no crack
   NothingChecked,  // no shared edge was classified (and no crack or hole): not clean
   Unchecked,       // some cameras could not be checked (and no crack or hole): not clean
+  Undecided,       // some patch not drawn could be neither proven visible nor invisible (and no crack or hole): not
+                   // clean. Precedence: Cracks, Holes, Undecided, NothingChecked, Unchecked, TJunctionsOnly, Watertight
 };
 // countOffScreen false (default): cracks and T-junctions proven off screen (Stats::cracksOffScreen,
 // tJunctionsOffScreen) do not count; true: every finding counts (CheckOptions::countOffScreen, the cli's --offscreen).
@@ -841,7 +866,8 @@ Verdict verdictOf(const SweepResult& r, bool countOffScreen = false);
 // Adds one camera's (or one shard's) stats to a total: every count summed, the worst gaps the maxima. What sweep
 // does per camera; merging shards does it per shard.
 void accumulate(Stats& total, const Stats& s);
-const char* toString(Verdict v); // "watertight", "t_junctions", "cracks", "holes", "nothing_checked", "unchecked"
+const char* toString(Verdict v); // "watertight", "t_junctions", "cracks", "holes", "nothing_checked", "unchecked",
+                                 // "undecided"
 
 // Checks every camera against the one prepared terrain (shared read-only by the threads).
 SweepResult sweep(const Terrain& terrain, const std::vector<Camera>& cameras, const CheckOptions& options = {},

@@ -201,6 +201,28 @@ TEST_CASE("check, check --mesh and sweep build the terrain once", "[cli][check][
   CHECK(j.at("work").at("lod_evaluations") == j.at("stats").at("patches")); // stats sum the patches per camera
 }
 
+// check --mesh on a cracked camera where a big edge has two half-size neighbours and one of them is culled (random
+// camera 6 of seed 1 on rings_small.toml with the clamp off): both checks skip the culled half and classify the
+// drawn one, so they agree; the verdict is the cracks (exit 1), never an internal error (exit 3). The JSON says
+// whether they agree, and lists what only one of them flags (nothing here).
+TEST_CASE("check --mesh beside a half-culled edge agrees with the edge check and exits 1 for the cracks",
+          "[cli][check][mesh]") {
+  const std::string js = clitest::tmpDir() + "/mesh_half_culled.json";
+  const auto r = run({"check", clitest::source("docs/examples/rings_small.toml"), "--set", "lod.adjacency_clamp=none",
+                      "--eye", "25.050155639648438,38.58116912841797,22.16835594177246", "--target",
+                      "13.59434700012207,35.22592544555664,26.78861427307129", "--mesh", "--json", js});
+  INFO(r.out << r.err);
+  CHECK(r.status == 1);
+  CHECK(r.err.empty());
+  CHECK(r.out.find("agrees with the edge check") != std::string::npos);
+  CHECK(r.out.find("verdict: CRACKS\n") != std::string::npos);
+  const json j = json::parse(clitest::readFile(js));
+  CHECK(j.at("verdict") == "cracks");
+  CHECK(j.at("mesh").at("agrees") == true);
+  CHECK(j.at("mesh").at("mesh_only").empty());
+  CHECK(j.at("mesh").at("edge_check_only").empty());
+}
+
 TEST_CASE("check: a scene with T-junctions reports them as t_junction (text, JSON) and exits 0", "[cli][check]") {
   const std::string js = clitest::tmpDir() + "/tj.json";
   auto r = run({"check", clitest::source("docs/examples/t_junction.toml"), "--json", js, "--show", "1"});

@@ -10,6 +10,10 @@
 #                 and the factor's bits named, and the denormal lines); --flush-denormals=off and
 #                 lod.flush_denormals = false give the reference's rule (watertight, exit 0, the denormals still
 #                 listed); a sweep's JSON lists them in the stats. On another renderer: only the report is checked.
+#   CASE=visibility  patches culled by a user's shader while in view (issue 18; tests/oracle/data/gpu_lod): the
+#                 full-screen culled patch between the old visibility grid's points is a hole (exit 1, the patch named),
+#                 the same with a view smaller than the finest sub-rectangle is UNDECIDED (exit 1, listed, in the JSON);
+#                 a distance shader without height bounds (height scale 40) shows holes on random cameras
 #   CASE=bad      bad shaders (tests/oracle/data/gpu_lod): compile error -> exit 2 naming FILE:LINE; no lodMain and a
 #                 wrong signature -> exit 2 with a clear message; a shader yielding NaN -> holes (exit 1)
 # No OpenGL context, or (hlsl) no glslangValidator / spirv-cross: a visible skip ("GPU-LOD-SKIPPED"), a failure when
@@ -153,6 +157,38 @@ elseif(CASE STREQUAL "denormal")
     message(FATAL_ERROR "gpu_lod_denormal: --flush-denormals (on): expected the hole, exit 1; got ${rc}:\n${out}")
   endif()
   message("gpu_lod_denormal: ${renderer}: the denormal patch reported; flushed -> hole (exit 1), kept -> watertight")
+elseif(CASE STREQUAL "visibility")
+  # check ARGS: rc, out, err in the caller; skips on a missing context.
+  macro(check)
+    execute_process(COMMAND ${FFTESS} check ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+    if(err MATCHES "no OpenGL context for the GPU LOD")
+      skip("${err}")
+      return()
+    endif()
+  endmacro()
+  check(${data}/fullscreen.toml)
+  if(NOT rc EQUAL 1 OR NOT out MATCHES "verdict: HOLES" OR NOT out MATCHES "hole +ring 0 tile 0 patch 36: culled by lod shader")
+    message(FATAL_ERROR "gpu_lod_visibility: full screen: expected a hole at ring 0 tile 0 patch 36 (exit 1); got ${rc}: ${err}\n${out}")
+  endif()
+  set(json ${CMAKE_CURRENT_BINARY_DIR}/gpu_lod_visibility_undecided.json)
+  check(${data}/fullscreen.toml --set layout.patch_size=10000 --json ${json})
+  if(NOT rc EQUAL 1 OR NOT out MATCHES "verdict: UNDECIDED" OR NOT out MATCHES "undecided +ring 0 tile 0 patch 36: culled by lod shader")
+    message(FATAL_ERROR "gpu_lod_visibility: view smaller than a sub-rectangle: expected undecided at patch 36 (exit 1); got ${rc}: ${err}\n${out}")
+  endif()
+  file(READ ${json} report)
+  string(JSON verdict GET "${report}" verdict)
+  string(JSON patch GET "${report}" undecided 0 patch index)
+  string(JSON holes LENGTH "${report}" holes)
+  if(NOT verdict STREQUAL "undecided" OR NOT patch EQUAL 36 OR NOT holes EQUAL 0)
+    message(FATAL_ERROR "gpu_lod_visibility: JSON: verdict '${verdict}', undecided patch '${patch}', ${holes} holes")
+  endif()
+  execute_process(COMMAND ${FFTESS} sweep ${examples}/gpu_distance_glsl.toml --set displacement.height_scale=40
+                          --set lod.shader=${data}/no_height_bounds.glsl --random 80 --seed 1 --threads 2
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 1 OR NOT out MATCHES "verdict: HOLES seen from" OR NOT out MATCHES "hole: culled while visible")
+    message(FATAL_ERROR "gpu_lod_visibility: no height bounds: expected holes (exit 1); got ${rc}: ${err}\n${out}")
+  endif()
+  message("gpu_lod_visibility: full-screen hole, undecided below the finest sub-rectangle, no height bounds -> holes: as expected")
 else()
   message(FATAL_ERROR "gpu_lod_test.cmake: unknown CASE '${CASE}'")
 endif()

@@ -35,6 +35,7 @@ const char* kindName(Kind k) {
   case Kind::NanFactor: return "NaN factor";
   case Kind::MirrorEdge: return "mirrored edge";
   case Kind::NeighbourSize: return "wrong neighbour size";
+  case Kind::CullPatch: return "culled while visible between grid points";
   case Kind::None: return "none";
   }
   return "?";
@@ -74,19 +75,23 @@ float perturbed(const Fault& f, float x) {
   return std::nextafter(x, f.direction < 0 ? -INFINITY : INFINITY);
 }
 
-// The harness's own visibility test of a patch (independent of verify/visibility.cpp): a 17 x 17 grid of domain
-// points, each projected in double with lod's camera; strictly inside the clip volume counts.
-bool seenOnGrid(const Terrain& t, const Camera& c, int patch) {
+// The harness's own visibility test of a patch (independent of verify/visibility.cpp): a grid of n x n domain
+// points (edges included), each projected in double with lod's camera; strictly inside the clip volume counts.
+bool inView(const Camera& c, const glm::vec3& p) {
   const lod::Camera cam =
       lod::makeCamera(c.eye, c.target, c.up, c.fovY * (3.14159265358979323846f / 180.0f), c.nearZ, c.farZ,
                       glm::vec2(static_cast<float>(c.width), static_cast<float>(c.height)));
   const glm::dmat4 m = glm::dmat4(cam.projection) * glm::dmat4(cam.view);
-  for (int j = 0; j <= 16; ++j)
-    for (int i = 0; i <= 16; ++i) {
-      const glm::vec3 p = domainPosition(t, patch, static_cast<float>(i) / 16.0f, static_cast<float>(j) / 16.0f);
-      const glm::dvec4 q = m * glm::dvec4(p.x, p.y, p.z, 1.0);
-      if (q.w > 0 && std::fabs(q.x) < q.w && std::fabs(q.y) < q.w && q.z > -q.w && q.z < q.w) return true;
-    }
+  const glm::dvec4 q = m * glm::dvec4(p.x, p.y, p.z, 1.0);
+  return q.w > 0 && std::fabs(q.x) < q.w && std::fabs(q.y) < q.w && q.z > -q.w && q.z < q.w;
+}
+
+bool seenOnGrid(const Terrain& t, const Camera& c, int patch, int n = 17) {
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i)
+      if (inView(c, domainPosition(t, patch, static_cast<float>(i) / static_cast<float>(n - 1),
+                                   static_cast<float>(j) / static_cast<float>(n - 1))))
+        return true;
   return false;
 }
 
@@ -199,8 +204,64 @@ struct Harness {
     } else {
       // Not seen on the harness's grid: invisible, or too close to the frustum's border for a grid to tell.
       ++t.undecidable;
-      CHECK((r.stats.holes == 0 || hole));
+      const bool undecided = r.undecided.size() == 1 && r.undecided[0].patch.index == f.patch;
+      CHECK((r.stats.holes + r.stats.undecided == 0 || hole || undecided));
     }
+  }
+
+  // The LOD culls a patch (CullPatch) that a camera sees only between the points of the old 33 x 33 visibility grid:
+  // a point P inside one of the grid's cells (at least a quarter cell from its sides), seen straight down from 1 unit
+  // above, the far plane 1.5 units from the eye, and a field of view so narrow that the frustum is a column of
+  // radius under 0.2 cells around P (0.13 cells at P). The harness confirms both: P in view, no point of the
+  // 33 x 33 grid in view. Expected: exactly one hole, CulledWhileVisible, at that patch, seen at a point in view;
+  // nothing else.
+  void injectCulledBetweenGridPoints(fftess::testing::SplitMix64& rng) {
+    Tally& t = tally[Kind::CullPatch];
+    ++t.injected;
+    const std::vector<PatchGeometry> patches = terrain.patches();
+    Fault f;
+    f.kind = Kind::CullPatch;
+    f.patch = static_cast<int>(rng.next() % patches.size());
+    const PatchGeometry& g = patches[static_cast<size_t>(f.patch)];
+    auto inCell = [&](uint64_t r) {
+      const double jitter = (static_cast<double>(r % 1024) / 1023.0 - 0.5) * 0.5; // [-0.25, 0.25] of a cell
+      return static_cast<float>((static_cast<double>((r >> 10) % 32) + 0.5 + jitter) / 32.0);
+    };
+    const float u = inCell(rng.next()), v = inCell(rng.next());
+    const glm::vec3 p = domainPosition(terrain, f.patch, u, v);
+    const double cell = std::fabs(static_cast<double>(g.corners[1].x) - g.corners[0].x) / 32.0;
+    const double depth = 1.5; // the far plane
+    const double aspect = static_cast<double>(camera.width) / camera.height;
+    Camera c = camera;
+    c.eye = p + glm::vec3(0, 1, 0);
+    c.target = p;
+    c.up = {0, 0, 1};
+    c.nearZ = 0.1f;
+    c.farZ = static_cast<float>(depth);
+    c.fovY = static_cast<float>(2.0 * std::atan(0.2 * cell / (depth * std::sqrt(1 + aspect * aspect))) *
+                                (180.0 / 3.14159265358979323846));
+    INFO(name << ": " << kindName(f.kind) << " patch " << f.patch << " at u " << u << " v " << v << " fov_y "
+              << c.fovY);
+    const bool between = inView(c, p) && !seenOnGrid(terrain, c, f.patch, 33);
+    CHECK(between); // the construction: visible, and only between the old grid's points
+    CheckOptions o;
+    o.maxFindings = 1u << 20;
+    o.fault = f;
+    const Report r = checkScene(terrain, c, o);
+    REQUIRE(r.error.empty());
+    CHECK(r.stats.cracks == 0);
+    CHECK(r.stats.tJunctions == 0);
+    CHECK(r.stats.undecided == 0);
+    CHECK(r.stats.holes == 1);
+    const bool hole = r.holes.size() == 1 && r.holes[0].patch.index == f.patch &&
+                      r.holes[0].kind == HoleKind::CulledWhileVisible && inView(c, r.holes[0].visiblePoint);
+    CHECK(hole);
+    if (!between) {
+      ++t.undecidable;
+      return;
+    }
+    ++t.changed;
+    if (hole) ++t.detected;
   }
 };
 
@@ -222,6 +283,8 @@ Harness makeHarness(const char* name, const char* example, const std::vector<std
 }
 
 void runFaults(Harness& h, int count, uint64_t seed) {
+  fftess::testing::SplitMix64 cullRng{seed ^ 0x5eedc011u};
+  for (int n = 0; n < count / 10; ++n) h.injectCulledBetweenGridPoints(cullRng);
   fftess::testing::SplitMix64 rng{seed};
   for (int n = 0; n < count; ++n) {
     const Finding& pair = h.pairs[rng.next() % h.pairs.size()];
@@ -255,11 +318,11 @@ void runFaults(Harness& h, int count, uint64_t seed) {
 }
 
 void printTally(const char* title, const std::map<Kind, Tally>& tally) {
-  std::printf("%s\n  %-34s %8s %8s %8s %10s %8s %12s\n", title, "fault kind", "injected", "changed", "detected",
+  std::printf("%s\n  %-42s %8s %8s %8s %10s %8s %12s\n", title, "fault kind", "injected", "changed", "detected",
               "unchanged", "quiet", "undecidable");
   int injected = 0;
   for (const auto& [k, t] : tally) {
-    std::printf("  %-34s %8d %8d %8d %10d %8d %12d\n", kindName(k), t.injected, t.changed, t.detected, t.unchanged,
+    std::printf("  %-42s %8d %8d %8d %10d %8d %12d\n", kindName(k), t.injected, t.changed, t.detected, t.unchanged,
                 t.quiet, t.undecidable);
     injected += t.injected;
   }
@@ -300,4 +363,5 @@ TEST_CASE("fault_injection_every_fault_is_found_and_nothing_else", "[verify][fau
   CHECK(tally[Kind::NeighbourSize].changed > 0);
   CHECK(tally[Kind::DropPatch].changed > 0);
   CHECK(tally[Kind::NanFactor].changed > 0);
+  CHECK(tally[Kind::CullPatch].changed == tally[Kind::CullPatch].injected); // every one between the grid's points
 }
