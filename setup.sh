@@ -53,8 +53,9 @@ build() {
 sanitize_tests() {
   echo "setup: sanitizer build ($SANITIZE_DIR, address,undefined) and the tests not labelled slow"
   # -g1: line tables only (symbolised sanitizer stacks, a third less compile time for the CGAL files than -g).
+  # -O1: a third less compile time than -O2 under ASan+UBSan (the build is most of this job; the tests are not).
   cmake -S . -B "$SANITIZE_DIR" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFFTESS_SANITIZE=address,undefined \
-    -DFFTESS_BENCHMARKS=OFF "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG"
+    -DFFTESS_BENCHMARKS=OFF "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG"
   cmake --build "$SANITIZE_DIR" -j "$JOBS"
   UBSAN_OPTIONS=print_stacktrace=1 ctest --test-dir "$SANITIZE_DIR" --output-on-failure -j "$JOBS" -LE slow
 }
