@@ -359,9 +359,10 @@ std::string benchSvg(const BenchTable& t) {
                 "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"900\" "
                 "height=\"%.0f\" viewBox=\"0 0 900 %.0f\">\n<title>fftess bench</title>\n<rect width=\"100%%\" "
                 "height=\"100%%\" fill=\"white\"/>\n<text x=\"10\" y=\"22\" font-family=\"sans-serif\" font-size=\"14\">"
-                "What accuracy costs: time per camera relative to the cheapest row (log scale), %s</text>\n",
-                h, h, xmlEscape(t.scene).c_str());
+                "What accuracy costs: time per camera relative to the cheapest row (log scale), ",
+                h, h);
   o += buf;
+  o += xmlEscape(t.scene) + "</text>\n"; // a path of any length: never through the fixed buffer
   const double logMax = std::log2(std::max(2.0, maxRel));
   for (size_t i = 0; i < t.rows.size(); ++i) {
     const BenchRow& r = t.rows[i];

@@ -101,8 +101,8 @@ int runMerge(const MergeArgs& a) {
   for (size_t i = 1; i < shards.size(); ++i) {
     const json hash = shards[i].value("scene_hash", json());
     if (hash != hash0)
-      throw UsageError("merge: " + quoteToken(a.inputs[i]) + ": scene_hash " + hash.dump() + " differs from " +
-                       quoteToken(a.inputs[0]) + "'s " + hash0.dump() +
+      throw UsageError("merge: " + quotePath(a.inputs[i]) + ": scene_hash " + hash.dump() + " differs from " +
+                       quotePath(a.inputs[0]) + "'s " + hash0.dump() +
                        ": the shards ran on different contents of the scene (its file, --set overrides or the files it "
                        "names changed between the runs)");
   }

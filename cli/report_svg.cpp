@@ -75,6 +75,16 @@ void svgPatches(std::string& o, const vf::Terrain& terrain, const MapView& v) {
 // The inset: the worst finding's shared edge stretched to the inset's width, side a's points above the line and
 // side b's below (from the tessellator's edge query), the points without a partner on the other side in red.
 // gap: the gap that counts (the on-screen one, or with --offscreen the farthest vertex's).
+// The document's opening and its title (the command line, with the user's path whole: never through a fixed buffer).
+std::string svgDocumentHead(double w, double h, const std::string& title) {
+  char buf[256];
+  std::snprintf(buf, sizeof buf,
+                "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" "
+                "height=\"%.0f\" viewBox=\"0 0 %.0f %.0f\">\n",
+                w, h, w, h);
+  return buf + ("<title>" + xmlEscape(title) + "</title>\n");
+}
+
 void svgInset(std::string& o, const vf::Scene& scene, const vf::Finding& f, double gap, double x, double y, double w) {
   char buf[320];
   std::snprintf(buf, sizeof buf, "<g id=\"inset\"><rect class=\"ins\" x=\"%.1f\" y=\"%.1f\" width=\"%.1f\" height=\"150\"/>\n",
@@ -151,11 +161,7 @@ std::string checkSvg(const vf::Terrain& terrain, const vf::Report& r, const std:
   const double totalH = H + 60 + (worst ? 170 : 0);
   char buf[512];
   std::string o;
-  std::snprintf(buf, sizeof buf,
-                "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" "
-                "height=\"%.0f\" viewBox=\"0 0 %.0f %.0f\">\n<title>%s</title>\n",
-                std::max(W, 780.0), totalH, std::max(W, 780.0), totalH, xmlEscape(title).c_str());
-  o += buf;
+  o += svgDocumentHead(std::max(W, 780.0), totalH, title);
   o += kSvgStyle;
   o += "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   svgPatches(o, terrain, v);
@@ -220,11 +226,7 @@ std::string sweepSvg(const vf::Terrain& terrain, const std::vector<vf::Camera>& 
   const double H = v.margin * 2 + (v.e.maxZ - v.e.minZ) * v.scale, W = v.margin * 2 + (v.e.maxX - v.e.minX) * v.scale;
   std::string o;
   char buf[512];
-  std::snprintf(buf, sizeof buf,
-                "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" "
-                "height=\"%.0f\" viewBox=\"0 0 %.0f %.0f\">\n<title>%s</title>\n",
-                std::max(W, 780.0), H + 60, std::max(W, 780.0), H + 60, xmlEscape(title).c_str());
-  o += buf;
+  o += svgDocumentHead(std::max(W, 780.0), H + 60, title);
   o += kSvgStyle;
   o += "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   svgPatches(o, terrain, v);

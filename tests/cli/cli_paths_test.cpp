@@ -20,12 +20,12 @@ const std::string kScene = clitest::source("docs/examples/rings_small.toml");
 // wherever the project is cloned), nested until its path is over 200 bytes. Removed with its files at the end.
 struct LongDir {
   std::string root, path;
-  LongDir() {
+  explicit LongDir(size_t minLength = 200) {
     const char* t = std::getenv("TMPDIR");
     std::string tmpl = std::string(t && *t ? t : "/tmp") + "/fftess-long-path-XXXXXX";
     REQUIRE(::mkdtemp(tmpl.data()) != nullptr);
     root = path = tmpl;
-    for (char c = 'a'; path.size() <= 200; ++c) {
+    for (char c = 'a'; path.size() <= minLength; ++c) {
       path += "/" + std::string(60, c);
       REQUIRE(::mkdir(path.c_str(), 0755) == 0);
     }
@@ -69,6 +69,44 @@ TEST_CASE("paths: a path over 200 bytes is named whole in every message", "[cli]
   const auto ok = run({"check", kScene, "-q", "--json", dir.path + "/r.json"});
   CHECK(ok.status == 0);
   CHECK(clitest::fileExists(dir.path + "/r.json"));
+}
+
+// The reports name the scene (SVG titles, merge's messages): a scene path of any length is written whole, and the
+// documents stay well formed. (A 512-byte buffer once cut the SVG titles of checkouts under long paths mid-tag.)
+TEST_CASE("paths: reports about a scene under a path over 600 bytes are whole and well formed", "[cli][paths]") {
+  const LongDir dir(600);
+  const std::string scene = dir.path + "/scene.toml";
+  clitest::writeFile(scene, clitest::readFile(kScene));
+  struct Case {
+    std::vector<std::string> args;
+    std::string svg;
+  } cases[] = {
+      {{"check", scene, "-q", "--svg", dir.path + "/c.svg"}, dir.path + "/c.svg"},
+      {{"sweep", scene, "--orbit", "2", "-q", "--svg", dir.path + "/s.svg"}, dir.path + "/s.svg"},
+      {{"bench", "--scene", scene, "--cameras", "1", "--mesh-cameras", "1", "--svg", dir.path + "/b.svg"},
+       dir.path + "/b.svg"},
+  };
+  for (const Case& c : cases) {
+    INFO(c.args[0]);
+    const auto r = run(c.args);
+    INFO(r.err);
+    REQUIRE(r.status <= 1);
+    const std::string text = clitest::readFile(c.svg);
+    std::string why;
+    CHECK(clitest::wellFormedXml(text, why));
+    INFO(why);
+    CHECK(text.find(scene) != std::string::npos);
+  }
+  // merge names both shards whole when their scene contents differ.
+  const std::string a = dir.path + "/shard1.json", b = dir.path + "/shard2.json";
+  REQUIRE(run({"sweep", scene, "--orbit", "2", "--shard", "1/2", "-q", "--json", a}).status <= 1);
+  clitest::writeFile(scene, clitest::readFile(kScene) + "\n# edited between the shards\n");
+  REQUIRE(run({"sweep", scene, "--orbit", "2", "--shard", "2/2", "-q", "--json", b}).status <= 1);
+  const auto m = run({"merge", a, b});
+  INFO(m.err);
+  CHECK(m.status == 2);
+  CHECK(m.err.find("'" + b + "': scene_hash") != std::string::npos);
+  CHECK(m.err.find("differs from '" + a + "'") != std::string::npos);
 }
 
 TEST_CASE("outputs: the same file twice, or an input, is refused naming both", "[cli][paths]") {
