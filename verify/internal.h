@@ -256,6 +256,10 @@ public:
 
 private:
   double m_[4][4]; // row-major clip matrix
+  // The six planes w + x, w - x, w + y, w - y, w + z (near, GL clip space), w - z (far) as rows of m_ (plane_[p][c] =
+  // m_[3][c] +- m_[row][c]), and the magnitudes |m_[3][c]| + |m_[row][c]| boxOffScreen's margin is made of.
+  double plane_[6][4];
+  double planeScale_[6][4];
 };
 
 // ---------------------------------------------------------------------------------------------------------------

@@ -19,15 +19,19 @@ FrustumTest::FrustumTest(const lod::Camera& camera) {
         sum += static_cast<double>(camera.projection[k][r]) * static_cast<double>(camera.view[c][k]);
       m_[r][c] = sum;
     }
-}
-
-// The six planes w + x, w - x, w + y, w - y, w + z (near, GL clip space), w - z (far), as rows of the clip matrix.
-bool FrustumTest::boxOutside(const glm::dvec3& lo, const glm::dvec3& hi) const {
   static constexpr int kRow[6] = {0, 0, 1, 1, 2, 2};
   static constexpr double kSign[6] = {1, -1, 1, -1, 1, -1};
+  for (int p = 0; p < 6; ++p)
+    for (int c = 0; c < 4; ++c) {
+      plane_[p][c] = m_[3][c] + kSign[p] * m_[kRow[p]][c];
+      planeScale_[p][c] = std::fabs(m_[3][c]) + std::fabs(m_[kRow[p]][c]);
+    }
+}
+
+// The six planes (plane_, from the constructor), each tested at the box corner furthest along its normal.
+bool FrustumTest::boxOutside(const glm::dvec3& lo, const glm::dvec3& hi) const {
   for (int p = 0; p < 6; ++p) {
-    double n[4];
-    for (int c = 0; c < 4; ++c) n[c] = m_[3][c] + kSign[p] * m_[kRow[p]][c];
+    const double* n = plane_[p];
     // The box corner furthest along the plane's normal.
     const double x = n[0] >= 0 ? hi.x : lo.x, y = n[1] >= 0 ? hi.y : lo.y, z = n[2] >= 0 ? hi.z : lo.z;
     if (n[0] * x + n[1] * y + n[2] * z + n[3] < 0) return true;
@@ -43,28 +47,22 @@ bool FrustumTest::boxOutside(const glm::dvec3& lo, const glm::dvec3& hi) const {
 // is proven off screen (its value is no larger, its margin no larger). The clip matrix itself is the double product
 // of lod's float matrices (as boxOutside).
 bool FrustumTest::boxOffScreen(const glm::dvec3& lo, const glm::dvec3& hi) const {
-  static constexpr int kRow[6] = {0, 0, 1, 1, 2, 2};
-  static constexpr double kSign[6] = {1, -1, 1, -1, 1, -1};
   for (int p = 0; p < 6; ++p) {
-    double n[4];
-    for (int c = 0; c < 4; ++c) n[c] = m_[3][c] + kSign[p] * m_[kRow[p]][c];
+    const double* n = plane_[p];
     const double x = n[0] >= 0 ? hi.x : lo.x, y = n[1] >= 0 ? hi.y : lo.y, z = n[2] >= 0 ? hi.z : lo.z;
     const double value = n[0] * x + n[1] * y + n[2] * z + n[3];
     const double at[4] = {std::fmax(std::fabs(lo.x), std::fabs(hi.x)), std::fmax(std::fabs(lo.y), std::fabs(hi.y)),
                           std::fmax(std::fabs(lo.z), std::fabs(hi.z)), 1};
     double scale = 0;
-    for (int c = 0; c < 4; ++c) scale += (std::fabs(m_[3][c]) + std::fabs(m_[kRow[p]][c])) * at[c];
+    for (int c = 0; c < 4; ++c) scale += planeScale_[p][c] * at[c];
     if (value < -0x1p-16 * scale) return true;
   }
   return false;
 }
 
 bool FrustumTest::clipSegment(const glm::dvec3& p, const glm::dvec3& q, double& t0, double& t1) const {
-  static constexpr int kRow[6] = {0, 0, 1, 1, 2, 2};
-  static constexpr double kSign[6] = {1, -1, 1, -1, 1, -1};
   for (int k = 0; k < 6; ++k) {
-    double n[4];
-    for (int c = 0; c < 4; ++c) n[c] = m_[3][c] + kSign[k] * m_[kRow[k]][c];
+    const double* n = plane_[k];
     const double dp = n[0] * p.x + n[1] * p.y + n[2] * p.z + n[3];
     const double dq = n[0] * q.x + n[1] * q.y + n[2] * q.z + n[3];
     if (dp < 0 && dq < 0) return false;
