@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "base/splitmix64.h" // the generator of (b)
 #include "tessellator/tessellator.h"
 
 namespace fftess::bench {
@@ -16,17 +17,6 @@ namespace fftess::bench {
 constexpr int kCaseAPatches = 2000;
 constexpr int kCaseBPatches = 20000;
 constexpr uint64_t kCaseBSeed = 0x11u; // issue 11
-
-// splitmix64 (Steele, Lea, Flood 2014), the standard constants.
-struct SplitMix64 {
-  uint64_t state;
-  uint64_t next() {
-    uint64_t z = (state += 0x9e3779b97f4a7c15ull);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    return z ^ (z >> 31);
-  }
-};
 
 inline std::vector<Patch> caseA() {
   Patch p;

@@ -1,11 +1,11 @@
 // fftess compare PATCHES CAPTURE: another tessellator's output against the emulator, patch by patch, streamed
-// (tessellator/compare.h does the comparing; this file reads the files, prints and picks the exit status).
+// (compare/compare.h does the comparing; this file reads the files, prints and picks the exit status).
 #include "common.h"
 #include "compare_cmd.h"
 
 #include "tessellator/batch.h"
-#include "tessellator/capture.h"
-#include "tessellator/compare.h"
+#include "compare/capture.h"
+#include "compare/compare.h"
 #include "tessellator/names.h"
 
 #include <nlohmann/json.hpp>

@@ -5,7 +5,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
-#include "tessellator/compare.h"
+#include "compare/compare.h"
 
 #include <string>
 

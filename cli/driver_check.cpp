@@ -1,15 +1,15 @@
 // fftess driver-check: is the local OpenGL driver's tessellator D3D11-exact? Patches (a batch file, or seeded random
-// ones) go through the driver (verify/gpu: headless EGL, transform-feedback capture; llvmpipe by default) and the
-// captures through the same comparison as `fftess compare` (tessellator/compare.h).
+// ones) go through the driver (gl/: headless EGL, transform-feedback capture; llvmpipe by default) and the
+// captures through the same comparison as `fftess compare` (compare/compare.h).
 #include "common.h"
 #include "compare_cmd.h"
 
 #include "tessellator/batch.h"
-#include "tessellator/compare.h"
+#include "compare/compare.h"
 
 #ifdef FFTESS_HAVE_GL
-#include "verify/gpu/gl_capture.h"
-#include "verify/gpu/random_patches.h"
+#include "gl/gl_capture.h"
+#include "gl/random_patches.h"
 #endif
 
 #include <cstring>

@@ -4,7 +4,7 @@
 #include "findings.h"
 
 #ifdef FFTESS_HAVE_GL
-#include "verify/gpu/gpu_lod.h"
+#include "gpu_lod/gpu_lod.h"
 #endif
 
 #include <cstdio>

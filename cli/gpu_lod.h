@@ -1,5 +1,5 @@
 // The GPU path of the LOD in the cli (lod.shader, lod.evaluate = "gpu"; docs/gpu_lod.md): building the provider
-// (verify/gpu/gpu_lod.h, when fftess_gl is built) and the report section "factor differs from the GPU build".
+// (gpu_lod/gpu_lod.h, when fftess_gl is built) and the report section "factor differs from the GPU build".
 #pragma once
 
 #include "check.h"

@@ -5,20 +5,14 @@
 #include <cstdint>
 #include <cstring>
 
+#include "base/bits.h"
+
 namespace fftess {
 namespace fx {
 
-// ---- Bits <-> float. Always through memcpy (never pointer casts: g++ -O2 miscompiles those, see facts.md). ----
-inline uint32_t bitsOf(float f) {
-  uint32_t u;
-  std::memcpy(&u, &f, sizeof u);
-  return u;
-}
-inline float floatOf(uint32_t u) {
-  float f;
-  std::memcpy(&f, &u, sizeof f);
-  return f;
-}
+// ---- Bits <-> float: base/bits.h (through memcpy, never pointer casts). ----
+using ::fftess::bitsOf;
+using ::fftess::floatOf;
 
 constexpr uint32_t kSignBit = 0x80000000u;
 constexpr uint32_t kExponentMask = 0x7f800000u;

@@ -2,6 +2,8 @@
 // index when needed (CameraSet), so that memory does not depend on the camera count.
 #include "verify/internal.h"
 
+#include "base/splitmix64.h"
+
 #include <cmath>
 
 namespace fftess::verify {
@@ -9,21 +11,11 @@ namespace fftess::verify {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr uint64_t kGolden = 0x9e3779b97f4a7c15ull; // splitmix64's increment
 constexpr uint64_t kDrawsPerRandomCamera = 5;
 
-// splitmix64: the same sequence on every platform. Counter-based: the state after k draws is seed + k * kGolden, so
-// random camera i (draws 5i+1 .. 5i+5) is computed from (seed, i) alone.
-struct Rng {
-  uint64_t s;
-  uint64_t next() {
-    uint64_t z = (s += kGolden);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    return z ^ (z >> 31);
-  }
-  double uniform() { return static_cast<double>(next() >> 11) * (1.0 / 9007199254740992.0); } // [0, 1)
-};
+// splitmix64 (base/splitmix64.h): the same sequence on every platform. Counter-based: the state after k draws is
+// seed + k * kIncrement, so random camera i (draws 5i+1 .. 5i+5) is computed from (seed, i) alone.
+using Rng = SplitMix64;
 
 // Checked every 4096 cameras: cheap, and a Ctrl-C is seen within milliseconds.
 bool cancelled(const std::atomic<bool>* cancel, size_t i) { return cancel && (i & 4095) == 0 && cancel->load(); }
@@ -97,12 +89,12 @@ Camera CameraSet::at(size_t i) const {
                    glm::vec3{float(x + step), float(h - 0.3 * step), float(z + step)});
   }
   case Kind::Random: {
-    Rng rng{seed_ + uint64_t(i) * kDrawsPerRandomCamera * kGolden}; // wraps mod 2^64 like the sequential state
-    const double x = cx + (rng.uniform() - 0.5) * size;
-    const double z = cz + (rng.uniform() - 0.5) * size;
-    const double h = (1.0 - rng.uniform()) * 0.25 * size; // (0, 25%]
-    const double yaw = rng.uniform() * 2 * kPi;
-    const double pitch = -rng.uniform() * kPi / 3;
+    Rng rng{seed_ + uint64_t(i) * kDrawsPerRandomCamera * SplitMix64::kIncrement}; // wraps mod 2^64 like the sequential state
+    const double x = cx + (rng.unitDouble() - 0.5) * size;
+    const double z = cz + (rng.unitDouble() - 0.5) * size;
+    const double h = (1.0 - rng.unitDouble()) * 0.25 * size; // (0, 25%]
+    const double yaw = rng.unitDouble() * 2 * kPi;
+    const double pitch = -rng.unitDouble() * kPi / 3;
     const double d = 0.05 * size;
     return looking(glm::vec3{float(x), float(h), float(z)},
                    glm::vec3{float(x + d * std::cos(pitch) * std::cos(yaw)), float(h + d * std::sin(pitch)),

@@ -2,6 +2,8 @@
 // the way a GPU sampler filters (clamp addressing, limited sub-texel precision).
 #include "verify/internal.h"
 
+#include "base/splitmix64.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -13,13 +15,8 @@ namespace fftess::verify::detail {
 
 namespace {
 
-uint64_t mix64(uint64_t x) {
-  // splitmix64 finaliser: a well-distributed hash of the lattice point
-  x += 0x9e3779b97f4a7c15ull;
-  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
-  x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
-  return x ^ (x >> 31);
-}
+// splitmix64's next() on state x (base/splitmix64.h): a well-distributed hash of the lattice point.
+uint64_t mix64(uint64_t x) { return SplitMix64{x}.next(); }
 
 double lattice(int64_t x, int64_t z, uint64_t seed, int octave) {
   uint64_t h = mix64(seed ^ mix64(static_cast<uint64_t>(x) * 0x100000001b3ull ^

@@ -3,7 +3,7 @@
 
 #include <sstream>
 
-#include "tessellator/capture.h"
+#include "compare/capture.h"
 
 using namespace fftess;
 

@@ -8,7 +8,7 @@
 #include <cstring>
 
 #include "tessellator/batch.h"
-#include "tessellator/compare.h"
+#include "compare/compare.h"
 
 using namespace fftess;
 

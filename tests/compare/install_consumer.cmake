@@ -1,5 +1,5 @@
 # ctest compare_install_consumer: installs the build tree into BUILD/install-test, then configures, builds and runs
-# docs/examples/consumer (find_package(fftess) -> fftess::tessellator) from a temporary directory.
+# docs/examples/consumer (find_package(fftess COMPONENTS compare) -> fftess::compare) from a temporary directory.
 set(prefix ${BUILD}/install-test)
 set(work ${BUILD}/consumer-test)
 file(REMOVE_RECURSE ${prefix} ${work})
@@ -13,7 +13,7 @@ function(step)
   set(last_out "${out}" PARENT_SCOPE)
 endfunction()
 step(${CMAKE_COMMAND} --install ${BUILD} --prefix ${prefix})
-if(NOT EXISTS ${prefix}/include/fftess/tessellator/compare.h)
+if(NOT EXISTS ${prefix}/include/fftess/compare/compare.h)
   message(FATAL_ERROR "compare.h not installed")
 endif()
 set(flags)

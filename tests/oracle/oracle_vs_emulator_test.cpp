@@ -21,6 +21,8 @@
 #include <string>
 
 using namespace fftess::oracle;
+using fftess::bitsOf;
+using fftess::floatOf;
 
 namespace {
 

@@ -11,7 +11,7 @@
 #include "tessellator/names.h"
 #include "tessellator/tessellator.h"
 #include "tessellator/trace.h"
-#include "tests/common/splitmix.h"
+#include "base/splitmix64.h"
 
 namespace fftess {
 namespace testing {

@@ -6,7 +6,7 @@
 // from its own visibility test, not from the verifier: both false negatives and false positives fail.
 #include "verify_test_util.h"
 
-#include "tests/common/splitmix.h"
+#include "base/splitmix64.h"
 
 #include "lod/lod.h"
 #include "verify/internal.h" // the prepared patches' tile neighbours (NeighbourSize faults)
@@ -215,7 +215,7 @@ struct Harness {
   // radius under 0.2 cells around P (0.13 cells at P). The harness confirms both: P in view, no point of the
   // 33 x 33 grid in view. Expected: exactly one hole, CulledWhileVisible, at that patch, seen at a point in view;
   // nothing else.
-  void injectCulledBetweenGridPoints(fftess::testing::SplitMix64& rng) {
+  void injectCulledBetweenGridPoints(fftess::SplitMix64& rng) {
     Tally& t = tally[Kind::CullPatch];
     ++t.injected;
     const std::vector<PatchGeometry> patches = terrain.patches();
@@ -283,9 +283,9 @@ Harness makeHarness(const char* name, const char* example, const std::vector<std
 }
 
 void runFaults(Harness& h, int count, uint64_t seed) {
-  fftess::testing::SplitMix64 cullRng{seed ^ 0x5eedc011u};
+  fftess::SplitMix64 cullRng{seed ^ 0x5eedc011u};
   for (int n = 0; n < count / 10; ++n) h.injectCulledBetweenGridPoints(cullRng);
-  fftess::testing::SplitMix64 rng{seed};
+  fftess::SplitMix64 rng{seed};
   for (int n = 0; n < count; ++n) {
     const Finding& pair = h.pairs[rng.next() % h.pairs.size()];
     const EdgeSide& side = (rng.next() & 1) ? pair.a : pair.b;

@@ -21,21 +21,19 @@
 #include <unistd.h>
 #include <vector>
 
+#include "base/splitmix64.h"
+
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size);
 // The sanitizers' runtime calls this before it ends the process on a report; weak: absent without sanitizers.
 extern "C" void __sanitizer_set_death_callback(void (*callback)(void)) __attribute__((weak));
 
 namespace {
 
+// splitmix64 (base/splitmix64.h); below(0) is 0 here (an empty input has no position to pick).
 struct Rng {
-  uint64_t s;
-  uint64_t next() {
-    uint64_t z = (s += 0x9e3779b97f4a7c15ull);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    return z ^ (z >> 31);
-  }
-  size_t below(size_t n) { return n == 0 ? 0 : static_cast<size_t>(next() % n); }
+  fftess::SplitMix64 g;
+  uint64_t next() { return g.next(); }
+  size_t below(size_t n) { return n == 0 ? 0 : static_cast<size_t>(g.next() % n); }
 };
 
 const char* const kDictionary[] = {"=",     "[",      "]",      "\"",     "\0",   "\n",    "nan",   "inf",   "-inf",

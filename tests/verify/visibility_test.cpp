@@ -5,7 +5,7 @@
 #include "verify_test_util.h"
 
 #include "lod/lod.h"
-#include "tests/common/splitmix.h"
+#include "base/splitmix64.h"
 #include "verify/internal.h"
 
 #include <cmath>
@@ -261,7 +261,7 @@ TEST_CASE("visibility: every surface point lies in its sub-rectangle's box", "[v
       {"geomorph.toml", {}},
       {"rings_small.toml", {"layout.center=[1e5,1e5]"}},
   };
-  fftess::testing::SplitMix64 rng{18};
+  fftess::SplitMix64 rng{18};
   for (const Case& c : cases) {
     const Scene s = loadExample(c.file, c.overrides);
     const Terrain t = prepared(s);

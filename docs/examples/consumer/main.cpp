@@ -1,7 +1,8 @@
-// Checks "my port" against the D3D11 reference for one patch, through the installed fftess::tessellator.
+// Checks "my port" against the D3D11 reference for one patch, through the installed fftess::compare
+// (the comparison component; it links fftess::tessellator).
 #include <cstdio>
 
-#include "tessellator/compare.h"
+#include "compare/compare.h"
 
 int main() {
   fftess::Patch patch; // quad, integer, triangle_cw, hardware stage

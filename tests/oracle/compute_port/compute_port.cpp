@@ -6,13 +6,13 @@
 //                       (BATCH | --random N [--seed S] [--batch-out FILE])
 //
 // The port itself never calls the emulator. --compare additionally checks the capture in-process with the
-// comparison library of `fftess compare` (tessellator/compare.h), for machines where the fftess binary is not
+// comparison library of `fftess compare` (compare/compare.h), for machines where the fftess binary is not
 // available (the NVIDIA device run); it prints the summary and the patches/points/time figures.
 #include "gl_capture.h" // oracle::Patch, parseBatch, batchLine
 #include "gl_context.h"
-#include "tests/common/splitmix.h"
+#include "base/splitmix64.h"
 
-#include "tessellator/compare.h"
+#include "compare/compare.h"
 
 #include <chrono>
 #include <cstdio>
@@ -44,7 +44,7 @@ uint32_t bitsOf(float f) {
 
 // Quad patches for the port: integer, pow2, fractional_even; factors mostly in (0.5, 66), some exact integers.
 std::vector<oracle::Patch> randomPatches(long n, uint64_t seed) {
-  testing::SplitMix64 rng{seed};
+  SplitMix64 rng{seed};
   const oracle::Partitioning parts[3] = {oracle::Partitioning::Integer, oracle::Partitioning::Pow2,
                                          oracle::Partitioning::FractionalEven};
   std::vector<oracle::Patch> out;

@@ -18,9 +18,10 @@
 // and whether a difference changes the tessellation: fftess::edgePoints(factor, FractionalEven / Integer) differ
 // (point count or any 16.16 position). Exit status: 0 = measured (differences are results, not failures);
 // 1 = usage; 3 = no suitable GL 4.5 context; 4 = shader compile/link or GL error.
+#include "base/splitmix64.h"
 #include "lod/lod.h"
 #include "tessellator/tessellator.h"
-#include "verify/gpu/gl_context.h" // headless EGL context, GL loader, renderer check (the GL module, fftess_gl)
+#include "gl/gl_context.h" // headless EGL context, GL loader, renderer check (the GL module, fftess_gl)
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -78,17 +79,12 @@ float floatOf(uint32_t u) {
 }
 
 // ---------------------------------------------------------------- generator
+// splitmix64 (base/splitmix64.h), with the draws this tool has always made.
 struct Rng {
-  uint64_t s;
-  uint64_t next() {
-    uint64_t z = (s += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-  }
-  double uni() { return static_cast<double>(next() >> 11) * (1.0 / 9007199254740992.0); } // [0, 1)
+  fftess::SplitMix64 g;
+  double uni() { return g.unitDouble(); } // [0, 1)
   double range(double a, double b) { return a + (b - a) * uni(); }
-  int below(int n) { return static_cast<int>(next() % static_cast<uint64_t>(n)); }
+  int below(int n) { return static_cast<int>(g.next() % static_cast<uint64_t>(n)); }
 };
 
 // Displaced terrain: a few octaves of sines (double, rounded once to float).

@@ -7,29 +7,18 @@
 #pragma once
 
 #include "gl_capture.h" // Patch and its enums
-#include "tests/common/splitmix.h"
+#include "base/bits.h"
+#include "base/splitmix64.h"
 
 #include <cstdint>
-#include <cstring>
 #include <vector>
 
 namespace fftess {
 namespace oracle {
 
-// splitmix64 (tests/common/splitmix.h): the same sequence on every platform and standard library (std distributions
+// splitmix64 (base/splitmix64.h): the same sequence on every platform and standard library (std distributions
 // are not). below(n) and unit() (24-bit float in [0,1)) are the ones this generator has always used.
-using Rng = testing::SplitMix64;
-
-inline uint32_t bitsOf(float f) {
-  uint32_t b;
-  std::memcpy(&b, &f, sizeof b);
-  return b;
-}
-inline float floatOf(uint32_t b) {
-  float f;
-  std::memcpy(&f, &b, sizeof f);
-  return f;
-}
+using Rng = SplitMix64;
 
 // Special factor values, as bits.
 constexpr uint32_t kSpecials[] = {

@@ -1,5 +1,5 @@
 // The GPU path of the LOD: hull factors evaluated by the local OpenGL driver, one compute dispatch per camera, for
-// verify's FactorProvider (verify.h). Target fftess_gpu_lod (verify/gpu/CMakeLists.txt, built only with EGL); the
+// verify's FactorProvider (verify.h). Target fftess_gpu_lod (gpu_lod/CMakeLists.txt, built only with EGL); the
 // cli links it. docs/gpu_lod.md documents the shader interface, the buffers and the costs.
 //
 // What runs: the scene's lod.shader (GLSL 4.50, or HLSL through glslangValidator's HLSL front end to SPIR-V and

@@ -28,7 +28,7 @@
 #include <string>
 #include <vector>
 
-#include "tessellator/capture.h"
+#include "compare/capture.h"
 #include "tessellator/tessellator.h"
 #include "tessellator/trace.h"
 

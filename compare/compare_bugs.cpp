@@ -1,10 +1,10 @@
 // The typical port bugs of compare.h as changes to one edge's 16.16 placement, and the mapping of a patch's output
 // coordinates to the edge (or inside axis) and point that produced them.
-#include "compare_internal.h"
+#include "compare/compare_internal.h"
 
 #include <cmath>
 
-#include "fixed.h"
+#include "tessellator/fixed.h"
 
 namespace fftess {
 namespace {

@@ -1,14 +1,14 @@
-#include "compare.h"
+#include "compare/compare.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
 
-#include "batch.h"
-#include "compare_internal.h"
-#include "fixed.h"
-#include "names.h"
+#include "tessellator/batch.h"
+#include "compare/compare_internal.h"
+#include "tessellator/fixed.h"
+#include "tessellator/names.h"
 
 namespace fftess {
 namespace {

@@ -1,6 +1,6 @@
 // The GPU path of the LOD. See gpu_lod.h and docs/gpu_lod.md.
-#include "gpu_lod.h"
-#include "gl_context.h"
+#include "gpu_lod/gpu_lod.h"
+#include "gl/gl_context.h"
 
 #include <chrono>
 #include <cstdio>

@@ -1,12 +1,12 @@
-#include "capture.h"
+#include "compare/capture.h"
 
 #include <algorithm>
 #include <cctype>
 #include <cstdlib>
 #include <sstream>
 
-#include "batch.h"
-#include "fixed.h"
+#include "tessellator/batch.h"
+#include "tessellator/fixed.h"
 
 namespace fftess {
 namespace {

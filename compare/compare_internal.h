@@ -1,8 +1,8 @@
 // Internal header of the comparison (compare.cpp, compare_bugs.cpp): the axes of a patch as traced edges.
 #pragma once
 
-#include "compare.h"
-#include "trace.h"
+#include "compare/compare.h"
+#include "tessellator/trace.h"
 
 namespace fftess {
 
