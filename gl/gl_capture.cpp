@@ -250,8 +250,30 @@ struct GlOracle::Impl {
     return checkGl("reading a storage buffer", error);
   }
 
+  // One group of patches that share domain and spacing: upload their factors, capture their points (pass 1), derive
+  // the primitives GL has no output for, capture the others per GL winding (pass 2).
   bool runGroup(const std::vector<Patch>& patches, const std::vector<int>& members, std::vector<Result>& results,
                 std::string& error);
+
+  // The group's factors in GL slot order, six words a patch, uploaded to the factor buffer.
+  std::vector<uint32_t> uploadFactors(const std::vector<Patch>& patches, const std::vector<int>& members);
+  // Pass 1: point_mode, one captured vertex per domain point in the tessellator's order.
+  bool capturePoints(const std::vector<Patch>& patches, const std::vector<int>& members, std::vector<Result>& results,
+                     std::string& error);
+  // Point and (quad/tri) line outputs, which GL cannot draw, derived from the points; returns the members (indices
+  // into `members`) whose primitives pass 2 must capture.
+  std::vector<int> derivePrimitives(const std::vector<Patch>& patches, const std::vector<int>& members,
+                                    std::vector<Result>& results);
+  // Pass 2 for the selected members `sel` (one GL winding or isolines): draws in batches, checks each captured
+  // vertex against the point capture and the TES invocation order.
+  bool capturePrimitives(const std::vector<Patch>& patches, const std::vector<int>& members,
+                         const std::vector<int>& sel, const std::vector<uint32_t>& factors, Capture cap,
+                         std::vector<Result>& results, std::string& error);
+  // One draw of pass 2: selected members [begin, end) with their slot bases; the captured primitives appended to
+  // their results.
+  bool readPrimitiveBatch(const std::vector<Patch>& patches, const std::vector<int>& members,
+                          const std::vector<int>& sel, int begin, int end, int perPrim,
+                          const std::vector<uint32_t>& slotBases, std::vector<Result>& results, std::string& error);
 };
 
 GlOracle::GlOracle() : impl_(new Impl) {}
@@ -322,8 +344,29 @@ std::unique_ptr<GlOracle> GlOracle::create(std::string& error, bool hardwareFirs
 bool GlOracle::Impl::runGroup(const std::vector<Patch>& patches, const std::vector<int>& members,
                               std::vector<Result>& results, std::string& error) {
   const Patch& first = patches[members[0]];
-  const int n = static_cast<int>(members.size());
+  const std::vector<uint32_t> factors = uploadFactors(patches, members);
+  if (!capturePoints(patches, members, results, error)) return false;
+  const std::vector<int> prim = derivePrimitives(patches, members, results);
+  // Draw the primitive patches, one program per GL winding. D3D triangle_cw is GL ccw (same first vertex).
+  for (int pass = 0; pass < 2; ++pass) {
+    std::vector<int> sel;
+    for (int i : prim) {
+      const Topology t = patches[members[i]].topology;
+      const bool glCw = t == Topology::TriangleCcw;
+      if ((pass == 0) != glCw) sel.push_back(i);
+    }
+    if (sel.empty()) continue;
+    const Capture cap = first.domain == Domain::Isoline ? Capture::Lines
+                        : pass == 0                     ? Capture::TrianglesGlCcw
+                                                        : Capture::TrianglesGlCw;
+    if (!capturePrimitives(patches, members, sel, factors, cap, results, error)) return false;
+  }
+  return true;
+}
 
+std::vector<uint32_t> GlOracle::Impl::uploadFactors(const std::vector<Patch>& patches, const std::vector<int>& members) {
+  const Patch& first = patches[members[0]];
+  const int n = static_cast<int>(members.size());
   // Factors in GL slot order: quad outer = Ueq0 Veq0 Ueq1 Veq1, inner = insideU insideV; tri outer[0..2] =
   // Ueq0 Veq0 Weq0, inner[0] = inside; isolines outer[0] = density, outer[1] = detail.
   std::vector<uint32_t> factors(static_cast<size_t>(n) * 6, 0u);
@@ -349,10 +392,14 @@ bool GlOracle::Impl::runGroup(const std::vector<Patch>& patches, const std::vect
   }
   gl.glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(factors.size() * 4), factors.data());
   gl.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, factorBuf);
+  return factors;
+}
 
-  // Pass 1: point_mode. One captured vertex per domain point, in the tessellator's order.
-  const int spacing = glSpacing(first.partitioning);
-  Program* pointProg = program({first.domain, spacing, Capture::Points}, error);
+bool GlOracle::Impl::capturePoints(const std::vector<Patch>& patches, const std::vector<int>& members,
+                                   std::vector<Result>& results, std::string& error) {
+  const Patch& first = patches[members[0]];
+  const int n = static_cast<int>(members.size());
+  Program* pointProg = program({first.domain, glSpacing(first.partitioning), Capture::Points}, error);
   if (!pointProg) return false;
   std::vector<int> bounds(n);
   for (int i = 0; i < n; ++i) bounds[i] = pointBound(patches[members[i]]);
@@ -384,10 +431,13 @@ bool GlOracle::Impl::runGroup(const std::vector<Patch>& patches, const std::vect
     }
     begin = end;
   }
+  return true;
+}
 
-  // Pass 2: primitives, for the topologies that have them in GL.
+std::vector<int> GlOracle::Impl::derivePrimitives(const std::vector<Patch>& patches, const std::vector<int>& members,
+                                                  std::vector<Result>& results) {
   std::vector<int> prim;
-  for (int i = 0; i < n; ++i) {
+  for (int i = 0; i < static_cast<int>(members.size()); ++i) {
     const Patch& p = patches[members[i]];
     Result& r = results[members[i]];
     const int count = r.pointCount();
@@ -402,84 +452,86 @@ bool GlOracle::Impl::runGroup(const std::vector<Patch>& patches, const std::vect
       prim.push_back(i);
     }
   }
-  // Draw the primitive patches, one program per GL winding. D3D triangle_cw is GL ccw (same first vertex).
-  for (int pass = 0; pass < 2; ++pass) {
-    std::vector<int> sel;
-    for (int i : prim) {
-      const Topology t = patches[members[i]].topology;
-      const bool glCw = t == Topology::TriangleCcw;
-      if ((pass == 0) != glCw) sel.push_back(i);
+  return prim;
+}
+
+bool GlOracle::Impl::capturePrimitives(const std::vector<Patch>& patches, const std::vector<int>& members,
+                                       const std::vector<int>& sel, const std::vector<uint32_t>& factors, Capture cap,
+                                       std::vector<Result>& results, std::string& error) {
+  const Patch& first = patches[members[0]];
+  const int perPrim = cap == Capture::Lines ? 2 : 3;
+  Program* prog = program({first.domain, glSpacing(first.partitioning), cap}, error);
+  if (!prog) return false;
+  // Re-upload factors in the order of 'sel' so gl_PrimitiveID indexes them directly.
+  std::vector<uint32_t> selFactors(sel.size() * 6);
+  for (size_t j = 0; j < sel.size(); ++j)
+    std::copy_n(&factors[static_cast<size_t>(sel[j]) * 6], 6, &selFactors[j * 6]);
+  gl.glBindBuffer(GL_SHADER_STORAGE_BUFFER, factorBuf);
+  gl.glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(selFactors.size() * 4), selFactors.data());
+  const int m = static_cast<int>(sel.size());
+  for (int begin = 0; begin < m;) {
+    int end = begin, budget = 0;
+    std::vector<uint32_t> slotBases(1, 0u);
+    while (end < m && end - begin < kMaxPatchesPerDraw &&
+           budget + padTo4(results[members[sel[end]]].pointCount()) <= kDrawPointBudget) {
+      const int c = results[members[sel[end]]].pointCount();
+      budget += padTo4(c);
+      slotBases.push_back(slotBases.back() + static_cast<uint32_t>(c));
+      ++end;
     }
-    if (sel.empty()) continue;
-    const Capture cap = first.domain == Domain::Isoline ? Capture::Lines
-                        : pass == 0                     ? Capture::TrianglesGlCcw
-                                                        : Capture::TrianglesGlCw;
-    const int perPrim = cap == Capture::Lines ? 2 : 3;
-    Program* prog = program({first.domain, spacing, cap}, error);
-    if (!prog) return false;
-    // Re-upload factors in the order of 'sel' so gl_PrimitiveID indexes them directly.
-    std::vector<uint32_t> selFactors(sel.size() * 6);
-    for (size_t j = 0; j < sel.size(); ++j)
-      std::copy_n(&factors[static_cast<size_t>(sel[j]) * 6], 6, &selFactors[j * 6]);
-    gl.glBindBuffer(GL_SHADER_STORAGE_BUFFER, factorBuf);
-    gl.glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(selFactors.size() * 4), selFactors.data());
-    const int m = static_cast<int>(sel.size());
-    for (int begin = 0; begin < m;) {
-      int end = begin, budget = 0;
-      std::vector<uint32_t> slotBases(1, 0u);
-      while (end < m && end - begin < kMaxPatchesPerDraw &&
-             budget + padTo4(results[members[sel[end]]].pointCount()) <= kDrawPointBudget) {
-        const int c = results[members[sel[end]]].pointCount();
-        budget += padTo4(c);
-        slotBases.push_back(slotBases.back() + static_cast<uint32_t>(c));
-        ++end;
+    captured.clear();
+    if (!draw(*prog, cap, begin, end - begin, slotBases, error)) return false;
+    if (!readPrimitiveBatch(patches, members, sel, begin, end, perPrim, slotBases, results, error)) return false;
+    begin = end;
+  }
+  return true;
+}
+
+bool GlOracle::Impl::readPrimitiveBatch(const std::vector<Patch>& patches, const std::vector<int>& members,
+                                        const std::vector<int>& sel, int begin, int end, int perPrim,
+                                        const std::vector<uint32_t>& slotBases, std::vector<Result>& results,
+                                        std::string& error) {
+  std::vector<uint32_t> counters, stored;
+  if (!readBuffer(counterBuf, static_cast<size_t>(end - begin), counters, error)) return false;
+  if (!readBuffer(storedBuf, static_cast<size_t>(slotBases.back()) * 2, stored, error)) return false;
+  int last = 0;
+  const size_t primWords = static_cast<size_t>(perPrim) * kCaptureStride;
+  for (size_t v = 0; v < captured.size(); v += primWords) {
+    const int local = static_cast<int>(captured[v + 2]);
+    if (local < last || begin + local >= end) {
+      error = "primitive capture out of patch order";
+      return false;
+    }
+    last = local;
+    const Patch& p = patches[members[sel[begin + local]]];
+    Result& r = results[members[sel[begin + local]]];
+    for (int k = 0; k < perPrim; ++k) {
+      const uint32_t* c = &captured[v + static_cast<size_t>(k) * kCaptureStride];
+      const uint32_t id = c[3];
+      if (c[2] != captured[v + 2] || id >= static_cast<uint32_t>(r.pointCount()) ||
+          r.points[2 * id] != c[0] || r.points[2 * id + 1] != c[1]) {
+        error = "patch '" + batchLine(p) + "': a captured vertex does not match the point_mode capture at its id";
+        return false;
       }
-      captured.clear();
-      if (!draw(*prog, cap, begin, end - begin, slotBases, error)) return false;
-      std::vector<uint32_t> counters, stored;
-      if (!readBuffer(counterBuf, static_cast<size_t>(end - begin), counters, error)) return false;
-      if (!readBuffer(storedBuf, static_cast<size_t>(slotBases.back()) * 2, stored, error)) return false;
-      int last = 0;
-      const size_t primWords = static_cast<size_t>(perPrim) * kCaptureStride;
-      for (size_t v = 0; v < captured.size(); v += primWords) {
-        const int local = static_cast<int>(captured[v + 2]);
-        if (local < last || begin + local >= end) {
-          error = "primitive capture out of patch order";
-          return false;
-        }
-        last = local;
-        const Patch& p = patches[members[sel[begin + local]]];
-        Result& r = results[members[sel[begin + local]]];
-        for (int k = 0; k < perPrim; ++k) {
-          const uint32_t* c = &captured[v + static_cast<size_t>(k) * kCaptureStride];
-          const uint32_t id = c[3];
-          if (c[2] != captured[v + 2] || id >= static_cast<uint32_t>(r.pointCount()) ||
-              r.points[2 * id] != c[0] || r.points[2 * id + 1] != c[1]) {
-            error = "patch '" + batchLine(p) + "': a captured vertex does not match the point_mode capture at its id";
-            return false;
-          }
-          r.primitives.push_back(c[0]);
-          r.primitives.push_back(c[1]);
-          r.indices.push_back(static_cast<int32_t>(id));
-        }
-        r.verticesPerPrimitive = perPrim;
-      }
-      // The id numbering must be the point order: every TES invocation once, storing exactly the point array.
-      for (int i = begin; i < end; ++i) {
-        Result& r = results[members[sel[i]]];
-        r.verticesPerPrimitive = perPrim;
-        const uint32_t base = slotBases[i - begin];
-        bool same = counters[i - begin] == static_cast<uint32_t>(r.pointCount());
-        for (int k = 0; same && k < r.pointCount(); ++k)
-          same = stored[2 * (base + k)] == r.points[2 * k] && stored[2 * (base + k) + 1] == r.points[2 * k + 1];
-        if (!same) {
-          error = "patch '" + batchLine(patches[members[sel[i]]]) + "': TES invocations (" +
-                  std::to_string(counters[i - begin]) + ") do not run once per point in point order (" +
-                  std::to_string(r.pointCount()) + " points); vertex ids cannot be trusted";
-          return false;
-        }
-      }
-      begin = end;
+      r.primitives.push_back(c[0]);
+      r.primitives.push_back(c[1]);
+      r.indices.push_back(static_cast<int32_t>(id));
+    }
+    r.verticesPerPrimitive = perPrim;
+  }
+  // The id numbering must be the point order: every TES invocation once, storing exactly the point array.
+  for (int i = begin; i < end; ++i) {
+    Result& r = results[members[sel[i]]];
+    r.verticesPerPrimitive = perPrim;
+    const uint32_t base = slotBases[i - begin];
+    bool same = counters[i - begin] == static_cast<uint32_t>(r.pointCount());
+    for (int k = 0; same && k < r.pointCount(); ++k)
+      same = stored[2 * (base + k)] == r.points[2 * k] && stored[2 * (base + k) + 1] == r.points[2 * k + 1];
+    if (!same) {
+      error = "patch '" + batchLine(patches[members[sel[i]]]) + "': TES invocations (" +
+              std::to_string(counters[i - begin]) + ") do not run once per point in point order (" +
+              std::to_string(r.pointCount()) + " points); vertex ids cannot be trusted";
+      return false;
     }
   }
   return true;
