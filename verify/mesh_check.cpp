@@ -152,4 +152,16 @@ MeshReport checkSceneMesh(const Terrain& terrain, const Camera& camera, const Ch
   return rep;
 }
 
+std::vector<PatchEdgeRef> flaggedPatchEdges(const Report& report) {
+  std::vector<PatchEdgeRef> out;
+  for (const Finding& f : report.findings) {
+    if (f.classification == Classification::Match) continue;
+    out.push_back({f.a.patch.index, f.a.edge});
+    out.push_back({f.b.patch.index, f.b.edge});
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
 } // namespace fftess::verify

@@ -328,3 +328,18 @@ VisibilityDecision patchVisibility(const TerrainData& t, const TerrainPatch& p, 
 }
 
 } // namespace fftess::verify::detail
+
+namespace fftess::verify {
+
+const char* toString(HoleKind k) { return k == HoleKind::Discarded ? "discarded" : "culled_while_visible"; }
+
+const char* toString(Visibility v) {
+  switch (v) {
+  case Visibility::Invisible: return "invisible";
+  case Visibility::Visible: return "visible";
+  case Visibility::Undecided: return "undecided";
+  }
+  return "?";
+}
+
+} // namespace fftess::verify
