@@ -1,5 +1,6 @@
 // Cameras for sweeps: the scene's path, an orbit, a flyover and seeded random positions, each computed from its
 // index when needed (CameraSet), so that memory does not depend on the camera count.
+#include "verify/camera.h"
 #include "verify/internal.h"
 
 #include <cfloat>

@@ -10,6 +10,7 @@
 //                         domain-shader emulation), compared exactly (checkEdgePair, classifyExact) and reported
 //                         (recordFinding).
 // Only the outer edges are tessellated.
+#include "verify/check.h"
 #include "verify/internal.h"
 #include "verify/testing.h" // Fault: the hook this file implements
 

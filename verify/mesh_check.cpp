@@ -1,6 +1,7 @@
 // Whole-mesh check: full tessellation of every drawn patch -> polygon soup -> exactly-equal points merged ->
 // degenerate polygons removed -> Surface_mesh -> border edges (CGAL Polygon Mesh Processing). Border edges on the
 // terrain's outer boundary (or beside a culled patch, which the edge check skips too) are not cracks.
+#include "verify/mesh_check.h"
 #include "verify/internal.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>

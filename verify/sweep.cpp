@@ -1,6 +1,8 @@
 // Sweep driver: cameras on T threads, one terrain shared read-only, one edge cache (and scratch) per thread. Each
 // camera is made when a thread takes it (cameraAt), and per camera only aggregates are kept (and, with keepCameras, a
 // CameraResult): memory does not grow with the cameras.
+#include "verify/report.h"
+#include "verify/sweep.h"
 #include "verify/internal.h"
 
 #include <algorithm>

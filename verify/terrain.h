@@ -32,7 +32,7 @@ struct WorkStats {
                                  // (same flat x/z bits, height a function of x/z alone): neither a domain
                                  // evaluation nor a height sample
   int64_t visibilityEvaluations = 0; // domain evaluations of the hole check's grid (part of domainEvaluations):
-                                 // culled or discarded patches whose box touches the view frustum (verify.h, Hole)
+                                 // culled or discarded patches whose box touches the view frustum (visibility.h, Hole)
   WorkStats& operator+=(const WorkStats& o);
 };
 

@@ -1,8 +1,9 @@
-// Is a patch that is not drawn on screen? The hole check's visibility decision (verify.h, Hole; docs/verify.md,
+// Is a patch that is not drawn on screen? The hole check's visibility decision (visibility.h, Hole; docs/verify.md,
 // "Holes"): the patch's (u, v) domain is split recursively; a sub-rectangle whose conservative box of the displaced
 // surface lies outside one frustum plane is invisible, a domain point strictly inside the frustum proves the patch
 // visible, anything else is split again down to a stated minimum size. All in double from lod's float matrices, so
 // the decision does not inherit the float rounding of the LOD's own cull.
+#include "verify/visibility.h"
 #include "verify/internal.h"
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// Visibility decided, not sampled (verify.h, Hole; docs/verify.md, "Holes"): a patch that is not drawn is a hole
+// Visibility decided, not sampled (visibility.h, Hole; docs/verify.md, "Holes"): a patch that is not drawn is a hole
 // when any point of its displaced surface is in view, also between the points of any fixed grid; what cannot be
 // decided is Verdict::Undecided, never watertight. The harness judges visibility by its own projection of domain
 // points (lod's camera, double), not by verify/visibility.cpp.
