@@ -42,11 +42,17 @@ std::vector<Camera> randomCameras(const Terrain& terrain, int count, uint64_t se
 // threads at once.
 class CameraSet {
 public:
+  // pathCameras (the scene's list is copied); terrain: built (not empty).
   static CameraSet path(const Terrain& terrain);
+  // orbitCameras: radius, height as there (<= 0: the defaults).
   static CameraSet orbit(const Terrain& terrain, size_t count, float radius = 0, float height = 0);
+  // flyoverCameras: height as there (<= 0: the default).
   static CameraSet flyover(const Terrain& terrain, size_t count, float height = 0);
+  // randomCameras: the same seed gives the same cameras.
   static CameraSet random(const Terrain& terrain, size_t count, uint64_t seed);
+  // Cameras in the set.
   size_t size() const { return count_; }
+  // Camera i (i < size()).
   Camera at(size_t i) const;
 
 private:

@@ -20,6 +20,7 @@
 
 namespace fftess::verify {
 
+// The CGAL kernel the edge check classifies with (CheckOptions::kernel; the cli's --kernel).
 enum class Kernel : uint8_t {
   Epick,      // CGAL Exact_predicates_inexact_constructions_kernel: exact classification, gap in double (default)
   Epeck,      // CGAL Exact_predicates_exact_constructions_kernel: exact classification and exact gap
@@ -30,6 +31,8 @@ enum class Kernel : uint8_t {
 // product code never includes.
 struct Fault;
 
+// The options of one check (checkScene) and of every camera of a sweep. Each field's default is its initialiser;
+// the defaults are what the cli runs without options.
 struct CheckOptions {
   Kernel kernel = Kernel::Epick;  // classification is exact with Epick and Epeck; they agree on every verdict
   size_t maxFindings = 1000;      // findings (and holes) kept in Report::findings / Report::holes (stats count all)
@@ -54,7 +57,6 @@ struct CheckOptions {
   bool countOffScreen = false;
 };
 
-
 // The denormal rule one check runs with, and where it came from: the first that is not Auto of
 // CheckOptions::flushDenormals ("--flush-denormals"), lod.flush_denormals ("lod.flush_denormals"); else the driver's
 // (FactorProvider::flushesDenormals, on the GPU path with a provider) or CheckOptions::tessellator.flushDenormals.
@@ -62,8 +64,10 @@ struct DenormalRule {
   bool flush = false;
   std::string why; // e.g. "--flush-denormals on", "the driver: llvmpipe (...) flushes denormal factors"
 };
+// scene: the terrain's (Terrain::scene()); options: the check's (its factors provider is asked for the driver's rule).
 DenormalRule denormalRule(const Scene& scene, const CheckOptions& options);
 
+// What one check counted (Report::stats), or a sweep in total (accumulate, report.h). Every count starts at 0.
 struct Stats {
   int64_t patches = 0;         // patches in the layout
   int64_t culledPatches = 0;   // culled by the LOD (frustum) or by the tessellator (factor not > 0)
@@ -100,6 +104,7 @@ struct Stats {
   int64_t tJunctionsOnScreen() const { return tJunctions - tJunctionsOffScreen; }
 };
 
+// The result of one check (checkScene): findings, holes and the rest, each list in layout order.
 struct Report {
   std::string error;             // non-empty: the camera is invalid and nothing was checked
   std::vector<Finding> findings; // non-matching pairs (and matches with keepMatches), in layout order

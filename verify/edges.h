@@ -15,6 +15,7 @@
 
 namespace fftess::verify {
 
+// What one shared edge pair is, decided exactly (classifyExact, CGAL predicates on the float points).
 enum class Classification : uint8_t {
   Match,      // every vertex on one side coincides exactly with a vertex on the other, in order, endpoints included
   TJunction,  // not a match, but every vertex of each side lies exactly on the other side's polyline
@@ -37,6 +38,7 @@ struct EdgeSide {
   glm::vec3 mismatchWorld{};      // its world position
 };
 
+// One classified shared edge pair (Report::findings; matches only with CheckOptions::keepMatches).
 struct Finding {
   Classification classification = Classification::Match;
   EdgeSide a;                  // the bigger (or, same size, lower-index) patch

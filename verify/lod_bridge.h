@@ -30,20 +30,25 @@ struct LodInput {
 // A view of a prepared terrain's LOD inputs (cheap; valid while the terrain lives).
 class LodPatches {
 public:
+  // terrain: built (not Terrain::empty()); the view must not outlive it.
   explicit LodPatches(const Terrain& terrain);
   explicit LodPatches(const detail::TerrainData& data) : t_(&data) {}
+  // Patches in the terrain (the size of FactorProvider::evaluate's out).
   size_t size() const;
+  // Patch i's LOD input (i < size()), as lod/'s C++ build gets it for the same patch.
   LodInput operator[](size_t i) const;
   // The same for every view of one prepared terrain (a provider keys its uploaded inputs by it).
   const void* key() const { return t_; }
   // Patches of different sizes meet (tile rings with rings > 1): the built-in schemes run their *Tile variant.
   bool sizeJumps() const;
+  // The terrain's scene (lod.scheme and its parameters, lod.shader).
   const Scene& scene() const;
 
 private:
   const detail::TerrainData* t_;
 };
 
+// The source of a check's hull factors on the GPU path (CheckOptions::factors, check.h), implemented outside verify.
 class FactorProvider {
 public:
   virtual ~FactorProvider() = default;

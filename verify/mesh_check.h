@@ -25,6 +25,7 @@ struct PatchEdgeRef {
   bool operator==(const PatchEdgeRef& o) const { return patch == o.patch && edge == o.edge; }
 };
 
+// The result of one whole-mesh check (checkSceneMesh).
 struct MeshReport {
   std::string error;             // non-empty: the camera is invalid and nothing was checked
   int64_t patchesDrawn = 0;
@@ -36,7 +37,8 @@ struct MeshReport {
   WorkStats work;                // this camera's work
 };
 
-// terrain: from prepareTerrain; camera as for checkScene.
+// The whole-mesh check of one camera (see above). terrain: from prepareTerrain; camera as for checkScene; options:
+// only its factors (the GPU path), flushDenormals and tessellator (the denormal rule) are used; no fault injection.
 MeshReport checkSceneMesh(const Terrain& terrain, const Camera& camera, const CheckOptions& options = {});
 
 // The patch edges of a report's non-matching findings (both sides), sorted and unique: compare with

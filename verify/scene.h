@@ -37,6 +37,7 @@ enum class CornerMode : uint8_t {
   Shared,        // "shared": every corner computed once (double, rounded to float) in a shared vertex buffer
 };
 
+// [layout]: which patches make the terrain. Defaults as initialised (docs/verify.md, the scene format).
 struct Layout {
   LayoutKind kind = LayoutKind::TileRings; // layout.kind
   CornerMode corners = CornerMode::Reconstructed; // layout.corners
@@ -81,6 +82,7 @@ struct MipLevel {
   std::vector<float> texels; // row-major, z rows of x texels
 };
 
+// [displacement]: the height texture, its sampler and its mip chain. Defaults as initialised.
 struct Displacement {
   DisplacementKind kind = DisplacementKind::Fbm; // displacement.kind
   float heightScale = 4;           // displacement.height_scale (finite): world height of texel value 1
@@ -250,6 +252,7 @@ struct Camera {
   int height = 1200;         // camera.height (>= 1)
 };
 
+// A whole scene: what loadScene / parseScene return, valid (every key checked). Defaults as initialised.
 struct Scene {
   std::string source;          // file name the scene came from ("<string>" for parseScene)
   std::string name;            // name (optional)

@@ -15,6 +15,7 @@
 
 namespace fftess::verify {
 
+// One camera of a sweep, summarised (SweepResult::cameras, SweepOptions::onCamera).
 struct CameraResult {
   size_t cameraIndex = 0;
   bool done = false;             // false: skipped because of cancel, or invalid (error set)
@@ -30,6 +31,7 @@ struct CameraResult {
   Hole firstUndecided;           // the first undecided patch (Report::undecided) in layout order
 };
 
+// How a sweep runs (threads, progress, cancel, what it keeps). Each field's default is its initialiser.
 struct SweepOptions {
   int threads = 0;               // 0: std::thread::hardware_concurrency()
   // Called after each camera from a worker thread (serialised by the driver): cameras done, cameras total.
@@ -52,6 +54,7 @@ struct SweepOptions {
   bool keepCameras = true;
 };
 
+// The result of a sweep: the totals over the cameras checked, and what SweepOptions asked to keep.
 struct SweepResult {
   std::vector<CameraResult> cameras; // one per input camera, in input order (empty unless SweepOptions::keepCameras)
   std::vector<Report> reports;       // keepReports: one per camera (empty reports for skipped cameras)
@@ -63,7 +66,6 @@ struct SweepResult {
   size_t camerasUndecided = 0;       // cameras done with Stats::undecided > 0 (not clean)
   bool cancelled = false;
 };
-
 
 // Checks every camera against the one prepared terrain (shared read-only by the threads).
 SweepResult sweep(const Terrain& terrain, const std::vector<Camera>& cameras, const CheckOptions& options = {},

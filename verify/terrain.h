@@ -78,16 +78,22 @@ TerrainResult prepareTerrain(const Scene& scene);
 class Terrain {
 public:
   Terrain() = default;
+  // The scene it was built from (its own copy; the texture shared).
   const Scene& scene() const;
+  // Patches in the layout (> 0 for a built terrain).
   int patchCount() const;
-  const std::vector<PatchGeometry>& patches() const; // patches()[i] is patch i
+  // One PatchGeometry per patch, in layout order: patches()[i] is patch i (PatchRef::index == i).
+  const std::vector<PatchGeometry>& patches() const;
+  // The x/z rectangle the patches cover (the displacement texture is spread over it).
   const Extent& extent() const;
   // The work of building it: terrainBuilds = 1, heightSamples = the corner heights sampled (4 per patch when
   // displaced, else 0; plus one per rebuilt corner with lod.reconstruction = "resampled" and raised corners).
   // Checking never adds to it.
   const WorkStats& stats() const;
+  // Default-constructed (no patches): not to be checked.
   bool empty() const { return !data_; }
-  const detail::TerrainData& data() const { return *data_; } // for verify's .cpp files
+  // The prepared data itself (verify/internal.h): for verify's .cpp files, bench/ and cli/accuracy.cpp. Not empty().
+  const detail::TerrainData& data() const { return *data_; }
 
 private:
   friend TerrainResult prepareTerrain(const Scene& scene);

@@ -36,9 +36,10 @@ namespace fftess::verify {
 // Neither (a finest sub-rectangle still straddles a plane, or the budget ran out): Visibility::Undecided, listed in
 // Report::undecided with the same record (kind: culled or discarded), counted in Stats::undecided; the verdict is
 // Verdict::Undecided unless there are cracks or holes. Never a clean verdict.
-enum class HoleKind : uint8_t { Discarded, CulledWhileVisible };
-enum class Visibility : uint8_t { Invisible, Visible, Undecided };
+enum class HoleKind : uint8_t { Discarded, CulledWhileVisible }; // how the patch was not drawn (see above)
+enum class Visibility : uint8_t { Invisible, Visible, Undecided }; // the decision (see above)
 
+// One patch not drawn and not proven invisible (Report::holes, or Report::undecided when Undecided).
 struct Hole {
   HoleKind kind = HoleKind::Discarded;
   PatchRef patch;
