@@ -144,10 +144,6 @@ namespace fftess::verify::detail {
 
 namespace {
 
-bool sameBits(const glm::vec3& a, const glm::vec3& b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
-
-bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
-
 std::string vecText(const glm::vec3& v) {
   char b[96];
   std::snprintf(b, sizeof b, "(%g, %g, %g)", double(v.x), double(v.y), double(v.z));

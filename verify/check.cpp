@@ -25,10 +25,6 @@ namespace fftess::verify::detail {
 
 namespace {
 
-bool sameBits(const glm::vec3& a, const glm::vec3& b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
-
-bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
-
 bool allFinite(const glm::vec3* p, int n) {
   for (int i = 0; i < n; ++i)
     if (!finite(p[i])) return false;

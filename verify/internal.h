@@ -4,6 +4,7 @@
 #include "verify/check.h" // and through it every stage header up to the check
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <deque>
@@ -78,6 +79,11 @@ struct TerrainData {
   bool adjacency = false;           // patches of different sizes exist (tile rings with rings > 1)
   WorkStats work;                   // the build's work
 };
+
+// The same point, compared with == per component (+0 equals -0, NaN equals nothing): the check's "same bits" for
+// points that are never NaN once finite() holds. finite: every component finite.
+inline bool sameBits(const glm::vec3& a, const glm::vec3& b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
+inline bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 // Corner indices (lod.h convention) of each edge: Ueq0 = 0-2, Veq0 = 0-1, Ueq1 = 1-3, Veq1 = 2-3.
 constexpr int kEdgeCorners[4][2] = {{0, 2}, {0, 1}, {1, 3}, {2, 3}};
