@@ -1,10 +1,14 @@
 // Cameras for sweeps: the scene's path, an orbit, a flyover and seeded random positions, each computed from its
 // index when needed (CameraSet), so that memory does not depend on the camera count.
+#include "verify/camera.h"
 #include "verify/internal.h"
 
 #include "base/splitmix64.h"
 
+#include <cfloat>
 #include <cmath>
+#include <cstdio>
+#include <string>
 
 namespace fftess::verify {
 
@@ -124,3 +128,64 @@ std::vector<Camera> randomCameras(const Terrain& terrain, int count, uint64_t se
 }
 
 } // namespace fftess::verify
+
+// ---------------------------------------------------------------------------------------------------------------
+// The first stage of every check (checkTerrain) and of every scene camera (scene.cpp): is the camera usable?
+
+namespace fftess::verify::detail {
+
+namespace {
+
+std::string vecText(const glm::vec3& v) {
+  char b[96];
+  std::snprintf(b, sizeof b, "(%g, %g, %g)", double(v.x), double(v.y), double(v.z));
+  return b;
+}
+
+// glm::lookAt in float, as lod::makeCamera runs it: f = normalize(target - eye), s = normalize(cross(f, up)), with
+// normalize(v) = v * inversesqrt(dot(v, v)). Each dot must be a finite normal float (>= 2^-126): below, it underflows
+// (0 or a denormal with few bits) and the view matrix is NaN or meaningless (a view direction of float noise).
+bool lookAtFits(const Camera& c, std::string& error) {
+  const glm::vec3 d = c.target - c.eye;
+  const float dd = glm::dot(d, d);
+  if (!std::isfinite(dd) || !(dd >= FLT_MIN)) {
+    char b[96];
+    std::snprintf(b, sizeof b, "%g", double(dd));
+    error = "camera.target: the view direction target - eye = " + vecText(d) + " (eye " + vecText(c.eye) +
+            ", target " + vecText(c.target) + ") " +
+            (std::isfinite(dd) ? "is too short for float: |target - eye|^2 = " + std::string(b) +
+                                     " is below 2^-126; move camera.target away from camera.eye"
+                               : std::string("overflows float: |target - eye|^2 is not finite"));
+    return false;
+  }
+  const glm::vec3 f = d * (1.0f / std::sqrt(dd));
+  const glm::vec3 x = glm::cross(f, c.up);
+  const float xx = glm::dot(x, x);
+  if (!std::isfinite(xx) || !(xx >= FLT_MIN)) {
+    error = "camera.up: " + vecText(c.up) + " is (nearly) parallel to the view direction target - eye = " + vecText(d) +
+            " in float (|cross|^2 below 2^-126 or not finite)";
+    return false;
+  }
+  return true;
+}
+
+} // namespace
+
+bool validateCamera(const Camera& c, std::string& error) {
+  if (!finite(c.eye)) return error = "camera.eye: not finite", false;
+  if (!finite(c.target)) return error = "camera.target: not finite", false;
+  if (!finite(c.up)) return error = "camera.up: not finite", false;
+  if (sameBits(c.eye, c.target)) return error = "camera.target: equals camera.eye", false;
+  const double dx = double(c.target.x) - c.eye.x, dy = double(c.target.y) - c.eye.y, dz = double(c.target.z) - c.eye.z;
+  const double cx = dy * c.up.z - dz * c.up.y, cy = dz * c.up.x - dx * c.up.z, cz = dx * c.up.y - dy * c.up.x;
+  if (cx == 0 && cy == 0 && cz == 0) return error = "camera.up: parallel to the view direction", false;
+  if (!lookAtFits(c, error)) return false;
+  if (!(c.fovY > 0 && c.fovY < 180)) return error = "camera.fov_y: must be in (0, 180) degrees", false;
+  if (!(c.nearZ > 0) || !std::isfinite(c.nearZ)) return error = "camera.near: must be > 0", false;
+  if (!(c.farZ > c.nearZ) || !std::isfinite(c.farZ)) return error = "camera.far: must be > camera.near", false;
+  if (c.width < 1) return error = "camera.width: must be >= 1", false;
+  if (c.height < 1) return error = "camera.height: must be >= 1", false;
+  return true;
+}
+
+} // namespace fftess::verify::detail

@@ -4,6 +4,7 @@
 //          double computation (only printed).
 //   Epeck: exact predicates and exact constructions: the gap is exact until it is converted for printing.
 //   Simple_cartesian<float>: the same predicates evaluated in float, to show what a float checker gets wrong.
+#include "verify/edges.h"
 #include "verify/internal.h"
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>

@@ -1,5 +1,6 @@
 // Domain-shader emulation: world position of a domain point as the scene's domain shader computes it, in float, in
 // the order each formula states (no contraction into FMA unless the formula names fma).
+#include "verify/terrain.h"
 #include "verify/internal.h"
 
 #include <cmath>

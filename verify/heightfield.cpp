@@ -1,5 +1,6 @@
 // Heightfields: procedural fBm / ridged multifractal baked into a texture, RAW heightmaps, and bilinear sampling
 // the way a GPU sampler filters (clamp addressing, limited sub-texel precision).
+#include "verify/scene.h"
 #include "verify/internal.h"
 
 #include "base/splitmix64.h"

@@ -1,9 +1,10 @@
 // Internal header of fftess_verify (not installed, not part of the contract). No CGAL here.
 #pragma once
 
-#include "verify/verify.h"
+#include "verify/check.h" // and through it every stage header up to the check
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <deque>
@@ -59,7 +60,7 @@ struct TerrainPatch {
   std::array<std::array<int, 2>, 4> nb{{{-1, -1}, {-1, -1}, {-1, -1}, {-1, -1}}};
   lod::Patch lod;               // what lod/ sees: corners raised to their heights (lod.displaced_corners), bounds
   // Bounds of the true displaced surface's y (the texels the footprint samples, times height_scale, padded for
-  // float rounding): the hole check's visibility box (verify.h, Hole). [0, 0] on flat terrain.
+  // float rounding): the hole check's visibility box (visibility.h, Hole). [0, 0] on flat terrain.
   float surfaceMinY = 0, surfaceMaxY = 0;
   lod::TileNeighbours tile;     // tile rings with adjacency: sizes across each edge, parity, far corners
 };
@@ -78,6 +79,11 @@ struct TerrainData {
   bool adjacency = false;           // patches of different sizes exist (tile rings with rings > 1)
   WorkStats work;                   // the build's work
 };
+
+// The same point, compared with == per component (+0 equals -0, NaN equals nothing): the check's "same bits" for
+// points that are never NaN once finite() holds. finite: every component finite.
+inline bool sameBits(const glm::vec3& a, const glm::vec3& b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
+inline bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 // Corner indices (lod.h convention) of each edge: Ueq0 = 0-2, Veq0 = 0-1, Ueq1 = 1-3, Veq1 = 2-3.
 constexpr int kEdgeCorners[4][2] = {{0, 2}, {0, 1}, {1, 3}, {2, 3}};
@@ -224,7 +230,7 @@ Report checkTerrain(const TerrainData& t, const Camera& camera, const CheckOptio
 bool validateCamera(const Camera& c, std::string& error);
 
 // ---------------------------------------------------------------------------------------------------------------
-// visibility.cpp: is a patch that is not drawn on screen? (verify.h, Hole)
+// visibility.cpp: is a patch that is not drawn on screen? (visibility.h, Hole)
 
 // The box of points (float values, exact in double): grown one point at a time.
 struct PointBox {
@@ -274,7 +280,7 @@ void markOnScreen(const FrustumTest& frustum, const lod::Camera& cam, float near
                   const glm::vec3* fullA, int naFull, int first, int last, const glm::vec3* b, int nb, Finding& f,
                   Stats& stats);
 
-// The decision for one patch that is not drawn (verify.h, Hole; docs/verify.md, "Holes"): its (u, v) domain split
+// The decision for one patch that is not drawn (visibility.h, Hole; docs/verify.md, "Holes"): its (u, v) domain split
 // breadth first into dyadic sub-rectangles; each one's conservative box of the displaced surface (x/z from the
 // exact bilinear interpolation of the corners, padded for the domain shader's float rounding; y from the texels its
 // footprint can read on every mip level the domain shader samples) outside one frustum plane is invisible; its centre

@@ -1,6 +1,7 @@
 // The prepared terrain: layout (grid, NVIDIA tile rings, heightmap grid), neighbours, and every quantity the LOD
 // needs that does not depend on the camera (corner heights, height bounds, neighbour sizes, far corners), built
 // once per scene.
+#include "verify/terrain.h"
 #include "verify/internal.h"
 
 #include <atomic>
@@ -100,19 +101,12 @@ bool geometryFits(const Scene& s, double patchWorld, double minX, double minZ, c
   return true;
 }
 
-bool buildLayout(const Scene& s, TerrainData& t, std::string& error) {
+// The layout's size: its extent in base units (the smallest patch size), the builder's counts (tile rings: rings,
+// tiles per ring edge, patches per tile edge, half extent; grids: patches per side), whether sizes jump; returns the
+// world size of a base unit.
+double sizeLayout(const Scene& s, Builder& b, TerrainData& t) {
   const Layout& L = s.layout;
-  if (s.displacement.kind != DisplacementKind::None &&
-      (!s.displacement.texels || s.displacement.texels->size() !=
-                                     static_cast<size_t>(s.displacement.texWidth) * s.displacement.texHeight ||
-       s.displacement.texWidth < 1 || s.displacement.texHeight < 1)) {
-    error = "displacement: texture not loaded (use loadScene / parseScene)";
-    return false;
-  }
-  Builder b{s, t, 1, 1, 1, 0, {}, 0, 0};
-  double patchWorld = 1; // world size of a base unit
-  const bool reconstructed = L.corners == CornerMode::Reconstructed;
-
+  double patchWorld = 1;
   if (L.kind == LayoutKind::TileRings) {
     b.R = L.rings;
     b.W = L.tilesPerRingEdge;
@@ -135,6 +129,41 @@ bool buildLayout(const Scene& s, TerrainData& t, std::string& error) {
     t.unitsZ = b.nz;
     patchWorld = static_cast<double>(L.cellsPerPatch) * L.cellSize;
   }
+  return patchWorld;
+}
+
+// Neighbours: the patch(es) holding the base-unit cells just across each edge, at its two ends (TerrainPatch::nb).
+void linkNeighbours(const Builder& b, TerrainData& t) {
+  for (TerrainPatch& p : t.patches) {
+    const int64_t s0 = p.size;
+    const int64_t cells[4][2][2] = {
+        {{p.ux - 1, p.uz}, {p.ux - 1, p.uz + s0 - 1}},   // Ueq0: -x
+        {{p.ux, p.uz - 1}, {p.ux + s0 - 1, p.uz - 1}},   // Veq0: -z
+        {{p.ux + s0, p.uz}, {p.ux + s0, p.uz + s0 - 1}}, // Ueq1: +x
+        {{p.ux, p.uz + s0}, {p.ux + s0 - 1, p.uz + s0}}, // Veq1: +z
+    };
+    for (int e = 0; e < 4; ++e) {
+      const int n0 = b.locate(cells[e][0][0], cells[e][0][1]);
+      const int n1 = b.locate(cells[e][1][0], cells[e][1][1]);
+      p.nb[e][0] = n0;
+      p.nb[e][1] = n1 != n0 ? n1 : -1;
+    }
+  }
+}
+
+bool buildLayout(const Scene& s, TerrainData& t, std::string& error) {
+  const Layout& L = s.layout;
+  if (s.displacement.kind != DisplacementKind::None &&
+      (!s.displacement.texels || s.displacement.texels->size() !=
+                                     static_cast<size_t>(s.displacement.texWidth) * s.displacement.texHeight ||
+       s.displacement.texWidth < 1 || s.displacement.texHeight < 1)) {
+    error = "displacement: texture not loaded (use loadScene / parseScene)";
+    return false;
+  }
+  Builder b{s, t, 1, 1, 1, 0, {}, 0, 0};
+  const bool reconstructed = L.corners == CornerMode::Reconstructed;
+
+  const double patchWorld = sizeLayout(s, b, t); // world size of a base unit
   t.unit = patchWorld;
   const double minX = L.centerX - 0.5 * static_cast<double>(t.unitsX) * patchWorld;
   const double minZ = L.centerZ - 0.5 * static_cast<double>(t.unitsZ) * patchWorld;
@@ -213,22 +242,7 @@ bool buildLayout(const Scene& s, TerrainData& t, std::string& error) {
       }
   }
 
-  // Neighbours: the patch(es) holding the base-unit cells just across each edge, at its two ends.
-  for (TerrainPatch& p : t.patches) {
-    const int64_t s0 = p.size;
-    const int64_t cells[4][2][2] = {
-        {{p.ux - 1, p.uz}, {p.ux - 1, p.uz + s0 - 1}},   // Ueq0: -x
-        {{p.ux, p.uz - 1}, {p.ux + s0 - 1, p.uz - 1}},   // Veq0: -z
-        {{p.ux + s0, p.uz}, {p.ux + s0, p.uz + s0 - 1}}, // Ueq1: +x
-        {{p.ux, p.uz + s0}, {p.ux + s0 - 1, p.uz + s0}}, // Veq1: +z
-    };
-    for (int e = 0; e < 4; ++e) {
-      const int n0 = b.locate(cells[e][0][0], cells[e][0][1]);
-      const int n1 = b.locate(cells[e][1][0], cells[e][1][1]);
-      p.nb[e][0] = n0;
-      p.nb[e][1] = n1 != n0 ? n1 : -1;
-    }
-  }
+  linkNeighbours(b, t);
   return true;
 }
 

@@ -1,5 +1,6 @@
 // The scene's LOD settings -> lod/ calls, per camera. Everything camera-independent (corner heights, height bounds,
 // neighbour sizes, far corners) was prepared with the terrain (layout.cpp); this file only calls lod/.
+#include "verify/lod_bridge.h"
 #include "verify/internal.h"
 
 #include <chrono>

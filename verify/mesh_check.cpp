@@ -1,6 +1,7 @@
 // Whole-mesh check: full tessellation of every drawn patch -> polygon soup -> exactly-equal points merged ->
 // degenerate polygons removed -> Surface_mesh -> border edges (CGAL Polygon Mesh Processing). Border edges on the
 // terrain's outer boundary (or beside a culled patch, which the edge check skips too) are not cracks.
+#include "verify/mesh_check.h"
 #include "verify/internal.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -150,6 +151,18 @@ MeshReport checkSceneMesh(const Terrain& terrain, const Camera& camera, const Ch
   std::sort(rep.flagged.begin(), rep.flagged.end());
   rep.flagged.erase(std::unique(rep.flagged.begin(), rep.flagged.end()), rep.flagged.end());
   return rep;
+}
+
+std::vector<PatchEdgeRef> flaggedPatchEdges(const Report& report) {
+  std::vector<PatchEdgeRef> out;
+  for (const Finding& f : report.findings) {
+    if (f.classification == Classification::Match) continue;
+    out.push_back({f.a.patch.index, f.a.edge});
+    out.push_back({f.b.patch.index, f.b.edge});
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
 }
 
 } // namespace fftess::verify

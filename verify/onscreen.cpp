@@ -1,6 +1,7 @@
 // On screen or not, for every finding (docs/verify.md, "On screen"): whether the camera can see a crack or a
 // T-junction, and the worst gap of a crack that it sees. Decided in double from lod's float matrices (FrustumTest);
 // conservative: a finding is off screen only when it is proven off screen.
+#include "verify/edges.h"
 #include "verify/internal.h"
 
 #include <algorithm>

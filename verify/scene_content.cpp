@@ -1,5 +1,6 @@
 // Scene contents: files read with a size limit, and Scene::contentHash (FNV-1a 64 of what the verdict depends on).
 // docs/verify.md, Scene format (Limits, Scene::contentHash).
+#include "verify/scene.h"
 #include "verify/internal.h"
 
 #include <cstring>

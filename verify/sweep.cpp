@@ -1,6 +1,8 @@
 // Sweep driver: cameras on T threads, one terrain shared read-only, one edge cache (and scratch) per thread. Each
 // camera is made when a thread takes it (cameraAt), and per camera only aggregates are kept (and, with keepCameras, a
 // CameraResult): memory does not grow with the cameras.
+#include "verify/report.h"
+#include "verify/sweep.h"
 #include "verify/internal.h"
 
 #include <algorithm>
@@ -8,32 +10,6 @@
 #include <thread>
 
 namespace fftess::verify {
-
-void accumulate(Stats& s, const Stats& c) {
-  s.patches += c.patches;
-  s.culledPatches += c.culledPatches;
-  s.edgesChecked += c.edgesChecked;
-  s.skippedCulled += c.skippedCulled;
-  s.matches += c.matches;
-  s.tJunctions += c.tJunctions;
-  s.cracks += c.cracks;
-  s.holes += c.holes;
-  s.holesDiscarded += c.holesDiscarded;
-  s.holesCulledVisible += c.holesCulledVisible;
-  s.culledUndecided += c.culledUndecided;
-  s.undecided += c.undecided;
-  s.factorsCompared += c.factorsCompared;
-  s.factorDiffs += c.factorDiffs;
-  s.factorDiffsTessellation += c.factorDiffsTessellation;
-  s.denormalFactors += c.denormalFactors;
-  s.visibilityTests += c.visibilityTests;
-  s.worstGapWorld = std::max(s.worstGapWorld, c.worstGapWorld);
-  s.worstGapPixels = std::max(s.worstGapPixels, c.worstGapPixels);
-  s.cracksOffScreen += c.cracksOffScreen;
-  s.tJunctionsOffScreen += c.tJunctionsOffScreen;
-  s.worstGapWorldOnScreen = std::max(s.worstGapWorldOnScreen, c.worstGapWorldOnScreen);
-  s.worstGapPixelsOnScreen = std::max(s.worstGapPixelsOnScreen, c.worstGapPixelsOnScreen);
-}
 
 SweepResult sweep(const Terrain& terrain, const std::vector<Camera>& cameras, const CheckOptions& options,
                   const SweepOptions& sweepOptions) {

@@ -1,8 +1,9 @@
-// Is a patch that is not drawn on screen? The hole check's visibility decision (verify.h, Hole; docs/verify.md,
+// Is a patch that is not drawn on screen? The hole check's visibility decision (visibility.h, Hole; docs/verify.md,
 // "Holes"): the patch's (u, v) domain is split recursively; a sub-rectangle whose conservative box of the displaced
 // surface lies outside one frustum plane is invisible, a domain point strictly inside the frustum proves the patch
 // visible, anything else is split again down to a stated minimum size. All in double from lod's float matrices, so
 // the decision does not inherit the float rounding of the LOD's own cull.
+#include "verify/visibility.h"
 #include "verify/internal.h"
 
 #include <algorithm>
@@ -328,3 +329,18 @@ VisibilityDecision patchVisibility(const TerrainData& t, const TerrainPatch& p, 
 }
 
 } // namespace fftess::verify::detail
+
+namespace fftess::verify {
+
+const char* toString(HoleKind k) { return k == HoleKind::Discarded ? "discarded" : "culled_while_visible"; }
+
+const char* toString(Visibility v) {
+  switch (v) {
+  case Visibility::Invisible: return "invisible";
+  case Visibility::Visible: return "visible";
+  case Visibility::Undecided: return "undecided";
+  }
+  return "?";
+}
+
+} // namespace fftess::verify

@@ -10,11 +10,13 @@
 
 #include "lod/lod.h"
 #include "verify/internal.h" // the prepared patches' tile neighbours (NeighbourSize faults)
+#include "verify/testing.h"  // Fault, CheckOptions::fault
 
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <map>
+#include <memory>
 #include <set>
 #include <tuple>
 
@@ -121,7 +123,7 @@ struct Harness {
   Report run(const Fault& f) const {
     CheckOptions o;
     o.maxFindings = 1u << 20;
-    o.fault = f;
+    o.fault = std::make_shared<const Fault>(f);
     return checkScene(terrain, camera, o);
   }
 
@@ -246,7 +248,7 @@ struct Harness {
     CHECK(between); // the construction: visible, and only between the old grid's points
     CheckOptions o;
     o.maxFindings = 1u << 20;
-    o.fault = f;
+    o.fault = std::make_shared<const Fault>(f);
     const Report r = checkScene(terrain, c, o);
     REQUIRE(r.error.empty());
     CHECK(r.stats.cracks == 0);

@@ -2,7 +2,10 @@
 // The LOD's own record reaches each finding.
 #include "verify_test_util.h"
 
+#include "verify/testing.h" // Fault, CheckOptions::fault
+
 #include <cstring>
+#include <memory>
 
 using namespace fftess;
 using namespace fftess::verify;
@@ -192,9 +195,11 @@ TEST_CASE("culled patches run no tessellation and no domain emulation, shared ed
   CHECK(r.work.heightSamples == r.work.domainEvaluations);
   // Without sharing (a fault that changes nothing: a factor's ulp of a culled patch disables it) the same verdicts.
   CheckOptions o;
-  o.fault.kind = Fault::Kind::PointUlp;
-  o.fault.patch = 0;
-  o.fault.point = 1000; // out of range: no perturbation, but sharing is off while a fault is set
+  Fault fault;
+  fault.kind = Fault::Kind::PointUlp;
+  fault.patch = 0;
+  fault.point = 1000; // out of range: no perturbation, but sharing is off while a fault is set
+  o.fault = std::make_shared<const Fault>(fault);
   const Report plain = checkScene(t, s.camera, o);
   CHECK(plain.work.sharedEdgePoints == 0);
   CHECK(plain.stats.matches == r.stats.matches);

@@ -1,4 +1,4 @@
-// Visibility decided, not sampled (verify.h, Hole; docs/verify.md, "Holes"): a patch that is not drawn is a hole
+// Visibility decided, not sampled (visibility.h, Hole; docs/verify.md, "Holes"): a patch that is not drawn is a hole
 // when any point of its displaced surface is in view, also between the points of any fixed grid; what cannot be
 // decided is Verdict::Undecided, never watertight. The harness judges visibility by its own projection of domain
 // points (lod's camera, double), not by verify/visibility.cpp.
@@ -7,10 +7,12 @@
 #include "lod/lod.h"
 #include "base/splitmix64.h"
 #include "verify/internal.h"
+#include "verify/testing.h" // Fault, CheckOptions::fault
 
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <memory>
 #include <set>
 
 using namespace fftess;
@@ -162,8 +164,10 @@ TEST_CASE("visibility: a culled patch filling the screen between grid points is 
   CHECK_FALSE(seenOnGrid(t, s.camera, target, 33)); // ...and not on the old 33 x 33 grid
 
   CheckOptions o;
-  o.fault.kind = Fault::Kind::CullPatch; // the LOD culls it (as the issue's GLSL lod.shader does)
-  o.fault.patch = target;
+  Fault fault;
+  fault.kind = Fault::Kind::CullPatch; // the LOD culls it (as the issue's GLSL lod.shader does)
+  fault.patch = target;
+  o.fault = std::make_shared<const Fault>(fault);
   const Report r = checkScene(t, s.camera, o);
   REQUIRE(r.error.empty());
   CHECK(verdictOf(r.stats) == Verdict::Holes);
@@ -176,7 +180,8 @@ TEST_CASE("visibility: a culled patch filling the screen between grid points is 
   CHECK(r.stats.undecided == 0);
 
   // Discarded instead of culled: the same patch, a Discarded hole.
-  o.fault.kind = Fault::Kind::DropPatch;
+  fault.kind = Fault::Kind::DropPatch;
+  o.fault = std::make_shared<const Fault>(fault);
   const Report d = checkScene(t, s.camera, o);
   REQUIRE(d.holes.size() == 1);
   CHECK(d.holes[0].kind == HoleKind::Discarded);
@@ -184,7 +189,8 @@ TEST_CASE("visibility: a culled patch filling the screen between grid points is 
 
   // Sub-rectangles no finer than 1/8 of the patch: their centres miss the view, the boxes touch it. Undecided, listed,
   // and not clean; in a sweep too.
-  o.fault.kind = Fault::Kind::CullPatch;
+  fault.kind = Fault::Kind::CullPatch;
+  o.fault = std::make_shared<const Fault>(fault);
   o.visibilityDepth = 3;
   const Report u = checkScene(t, s.camera, o);
   CHECK(u.stats.holes == 0);

@@ -1,0 +1,301 @@
+// fftess verify, stage 1: the scene (docs/verify.md, "Scene files"). A scene file (TOML) or text in memory, plus
+// KEY=VALUE overrides, parsed and validated into a Scene: the layout, the displacement texture (read or generated,
+// format applied, mip chain built), the LOD scheme and its parameters, the tessellator's partitioning and stage, the
+// domain shader's interpolation and the cameras. Parse and validate happen together: a Scene is only returned
+// valid, and bad input is an error value naming the key and its file position (or the override), never an
+// exception. Every other stage starts from a Scene (terrain.h: prepareTerrain).
+#pragma once
+
+#include "lod/lod.h"
+#include "tessellator/names.h" // toString / parse of the tessellator enums in Scene
+#include "tessellator/tessellator.h"
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace fftess::verify {
+
+// Scene model. Every field has the default the scene format documents (docs/verify.md); the TOML key is named in
+// each comment. The terrain lies in the x/z plane, y is up. Domain u runs along +x, v along +z:
+//   Ueq0 = the patch's -x edge, Ueq1 = +x, Veq0 = -z, Veq1 = +z (D3D quad domain, see tessellator.h).
+
+enum class LayoutKind : uint8_t {
+  Grid,          // "grid": patches_x * patches_z patches of one size
+  TileRings,     // "tile_rings": NVIDIA sample: ring 0 is tiles_per_ring_edge^2 tiles; each further ring is the same
+                 // count of tiles of twice the size with the inner half (the previous ring) cut out
+  HeightmapGrid, // "heightmap_grid": Luna/Richards: one patch per cells_per_patch heightmap cells
+};
+
+// How the four corners of a patch are obtained (layout.corners).
+enum class CornerMode : uint8_t {
+  Reconstructed, // "reconstructed": tile origin + (i / patches_per_tile_edge) * tile_size, in float, per tile, as the
+                 // NVIDIA sample rebuilds them from the vertex id (neighbouring tiles may disagree in the last bit)
+  Shared,        // "shared": every corner computed once (double, rounded to float) in a shared vertex buffer
+};
+
+// [layout]: which patches make the terrain. Defaults as initialised (docs/verify.md, the scene format).
+struct Layout {
+  LayoutKind kind = LayoutKind::TileRings; // layout.kind
+  CornerMode corners = CornerMode::Reconstructed; // layout.corners
+  float centerX = 0, centerZ = 0;          // layout.center = [x, z]: centre of the terrain (tile_rings, grid)
+  // grid
+  int patchesX = 16, patchesZ = 16;        // layout.patches_x, layout.patches_z (>= 1)
+  float patchSize = 1;                     // layout.patch_size (> 0, finite); grid only
+  // tile_rings
+  int rings = 3;                           // layout.rings (1..16)
+  int tilesPerRingEdge = 8;                // layout.tiles_per_ring_edge (even, >= 2)
+  int patchesPerTileEdge = 8;              // layout.patches_per_tile_edge (>= 1)
+  float basePatchSize = 1;                 // layout.base_patch_size (> 0): patch size in ring 0; ring r: 2^r times
+  // heightmap_grid (needs displacement.kind = "raw" or a generator; texture size = cells_per_patch * k + 1)
+  int cellsPerPatch = 64;                  // layout.cells_per_patch (>= 1)
+  float cellSize = 1;                      // layout.cell_size (> 0): world size of one heightmap cell
+};
+
+enum class DisplacementKind : uint8_t {
+  None,   // "none": flat; heights are never sampled
+  Raw,    // "raw": 8- or 16-bit RAW heightmap file (16-bit little endian), values normalised to 0..1
+  Fbm,    // "fbm": procedural fBm of value noise baked into a texture at load
+  Ridge,  // "ridge": procedural ridged multifractal baked into a texture at load
+};
+
+// Mip selection of the displacement texture (displacement.mip; Bonaventura's coherence problem). Needs lod.scheme =
+// "bonaventura" (its exponents are the levels) when not None.
+enum class MipMode : uint8_t {
+  None,      // "none" (default): level 0 only; no mip chain is built
+  PerPatch,  // "per_patch": one level per patch, from its centre (neighbours sample a shared edge at different levels)
+  PerVertex, // "per_vertex": the corner levels (lod::Why::cornerLevel) interpolated at each domain point
+};
+
+// Texel format the heights are uploaded in (displacement.format).
+enum class TexelFormat : uint8_t {
+  Float,    // "float" (default): 32-bit float, the loaded values as they are
+  R16Float, // "r16_float": DXGI_FORMAT_R16_FLOAT (Luna): every texel rounded to IEEE half (nearest even) at load
+};
+
+// One level of the mip chain (level 1 and up; level 0 is Displacement::texels).
+struct MipLevel {
+  int width = 0, height = 0;
+  std::vector<float> texels; // row-major, z rows of x texels
+};
+
+// [displacement]: the height texture, its sampler and its mip chain. Defaults as initialised.
+struct Displacement {
+  DisplacementKind kind = DisplacementKind::Fbm; // displacement.kind
+  float heightScale = 4;           // displacement.height_scale (finite): world height of texel value 1
+  // raw
+  std::string file;                // displacement.file (relative to the scene file)
+  int width = 0, height = 0;       // displacement.width, displacement.height (raw: required; file size checked)
+  int bits = 16;                   // displacement.bits: 8 | 16
+  // fbm / ridge
+  uint64_t seed = 1;               // displacement.seed
+  int octaves = 6;                 // displacement.octaves (1..16)
+  float frequency = 4;             // displacement.frequency (> 0): base cells across the texture
+  float lacunarity = 2;            // displacement.lacunarity (> 0)
+  float gain = 0.5f;               // displacement.gain (> 0)
+  int resolution = 513;            // displacement.resolution (2..8192): generated texture is resolution^2
+  // Sampler (all kinds): bilinear, clamp addressing, texture spread over the terrain's extent.
+  int subtexelBits = 8;            // displacement.subtexel_bits (0..23, 0 = full float): filter weight precision
+  TexelFormat format = TexelFormat::Float; // displacement.format: applied to the texels at load (r16_float: half)
+  MipMode mip = MipMode::None;     // displacement.mip: the chain below is built at load only when not None
+  // Filled by loadScene: texels (row-major, z rows of x texels, 0..1), texture size.
+  std::shared_ptr<const std::vector<float>> texels;
+  int texWidth = 0, texHeight = 0;
+  // Filled by loadScene when mip != None: levels 1..n of a box-filtered chain down to 1 x 1 (after format).
+  std::shared_ptr<const std::vector<MipLevel>> mips;
+};
+
+enum class LodScheme : uint8_t {
+  Constant,       // "constant": every edge gets lod.factor (no camera, no lod/ call)
+  ScreenSphere,   // "screen_sphere": NVIDIA (lod::screenSphere; on tile rings with size jumps lod::nvidiaTile)
+  DistancePow2,   // "distance_pow2": Luna/Richards (lod::distancePow2; with size jumps lod::distancePow2Tile)
+  Bonaventura,    // "bonaventura": rounded-exponent pow2 with camera-angle correction (lod::bonaventura; with size
+                  // jumps lod::bonaventuraTile)
+  ClipDiameter,   // "clip_diameter": clip-space sphere diameter (lod::clipDiameter; with size jumps
+                  // lod::clipDiameterTile)
+  PatchCenter,    // "patch_center": deliberately broken (lod::patchCenter): screen_sphere, but every edge's sphere
+                  // sits at the patch centre instead of the edge midpoint (neighbours disagree); never gets the
+                  // tile-ring neighbour rule (lod.adjacency_clamp / lod.reconstruction are refused with it)
+  Geomorph,       // "geomorph": geomorphing (lod::geomorphLevel, lod::geomorph): float level per patch, integer
+                  // partitioning at 2^(floor(L) + 1), borders at the coarser level, inserted vertices morphed by the
+                  // domain shader (needs tessellation.partitioning = "integer" and patches of one size)
+  Shader,         // "shader": the factors come from the user's shader (lod.shader) on the GPU, and nothing else;
+                  // the default scheme when lod.shader is given (set lod.scheme to a built-in scheme instead to have
+                  // a sweep compare the shader's factors with that scheme's C++ build)
+};
+
+// Where the hull factors are evaluated (lod.evaluate).
+enum class LodEvaluate : uint8_t {
+  Cpu, // "cpu" (default): lod/'s C++ build
+  Gpu, // "gpu": the scheme's own lod/shaders/*.glsl (or lod.shader) on the local OpenGL driver, one compute dispatch
+       // per camera (CheckOptions::factors provides them; the cli builds the provider, gpu_lod/gpu_lod.h); the
+       // C++ build runs too, and where the two differ Report::factorDiffs says so. Not for "geomorph".
+};
+
+// Height bounds of each patch's culling box (lod.height_bounds).
+enum class HeightBounds : uint8_t {
+  Global,   // "global" (default): the displacement's whole range [min(0, scale), max(0, scale)] for every patch
+  PerPatch, // "per_patch": Luna's BoundsY: min/max of the texels the patch's bilinear samples can reach (all mip
+            // levels when displacement.mip is set), times height_scale
+};
+// Every scheme but patch_center gets the tile-ring neighbour rule (lod.h section 2 and 7: the smaller side
+// rebuilds the larger neighbour's edge, takes the scheme's own factor of it and halves it; the clamp rounds both
+// sides) on tile rings with more than one ring; "constant" through lod::constantTile.
+
+// What the tessellator does with a denormal hull factor (lod.flush_denormals, CheckOptions::flushDenormals). The
+// D3D11 reference keeps it: a denormal outer factor passes the cull test (x > 0) and the clamp makes it the minimum
+// tessellation. Mesa's llvmpipe flushes it to zero first, so the patch is culled (docs/oracle.md; NVIDIA keeps it,
+// measured on 306,348 patches). Which rule applies: DenormalRule / denormalRule below.
+enum class DenormalFlush : uint8_t {
+  Auto, // "auto" (default): the factor source's rule (the GPU path: the driver's, FactorProvider::flushesDenormals;
+        // lod/'s C++ path: CheckOptions::tessellator.flushDenormals, default false = the D3D11 reference)
+  On,   // true: flushed to zero before the tessellator (a denormal outer factor culls the patch)
+  Off,  // false: kept (the reference)
+};
+
+// Clamp applied where a patch meets a neighbour of a different size (lod.adjacency_clamp = "none" | "integer" |
+// "pow2"; tile rings with size jumps, every scheme but patch_center). See lod.h.
+using AdjacencyClamp = lod::AdjacencyClamp;
+
+// The scene's LOD: lod/'s own parameter structs, handed to lod/ as they are (no copies in between). A TOML key that
+// several schemes share sets the field in each struct that has it (the parser does that, once). Defaults are
+// lod.h's, except where a comment says otherwise.
+struct Lod {
+  LodScheme scheme = LodScheme::ScreenSphere; // lod.scheme
+  float factor = 8;                           // lod.factor: constant
+  // screen_sphere, patch_center. sphere.tessellatedTriWidth = lod.target_pixels (> 0); sphere.minFactor,
+  // sphere.maxFactor = lod.min_factor, lod.max_factor (min <= max); sphere.frustumCull = lod.frustum_cull;
+  // clamp = lod.adjacency_clamp; reconstruction = lod.reconstruction ("edge_vector" | "far_corner" | "resampled":
+  // how the small side rebuilds its big neighbour's edge). clamp and reconstruction are the neighbour rule's for
+  // every scheme (handed to the other schemes' lod::*Tile as a lod::TileAdjacency); they apply on tile rings with
+  // size jumps only, and setting either key anywhere else is a scene error. reconstruction defaults to Resampled
+  // here (lod.h's default for nvidiaTile alone is EdgeVector, which needs no heights).
+  lod::NvidiaTileParams screenSphere = sceneTile();
+  // distance_pow2: minDistance, maxDistance = lod.min_distance, lod.max_distance (max > min); minTessExponent,
+  // maxTessExponent = lod.min_tess, lod.max_tess; frustumCull = lod.frustum_cull.
+  lod::DistancePow2Params distancePow2{};
+  // bonaventura: the distances as distance_pow2; minExponent, maxExponent = lod.min_tess, lod.max_tess;
+  // angleCorrection = lod.angle_correction; rank = lod.rank (0..2; the scene's default is 0.4, the thesis' value;
+  // lod.h's default for the scheme alone stays 0.5); minFactor, maxFactor; frustumCull.
+  lod::BonaventuraParams bonaventura = sceneBonaventura();
+  // clip_diameter: edgesPerScreenHeight = lod.edges_per_screen_height (> 0); minFactor, maxFactor; frustumCull =
+  // lod.frustum_cull, which defaults to true here (lod.h's default for the scheme alone is false).
+  lod::ClipDiameterParams clipDiameter = sceneClipDiameter();
+  // geomorph: minDistance, maxDistance = lod.min_distance, lod.max_distance; finestLevel, coarsestLevel =
+  // lod.finest_level, lod.coarsest_level (each in [0, 5]); literalArticleWeight = lod.literal_article_weight.
+  lod::GeomorphParams geomorph{};
+  // lod.shader: the user's LOD shader (docs/gpu_lod.md), the path as written resolved against the scene file's
+  // folder; "" = none. Ends in .glsl (GLSL 4.50) or .hlsl (HLSL, through glslang and spirv-cross). Implies
+  // evaluate = Gpu.
+  std::string shader;
+  LodEvaluate evaluate = LodEvaluate::Cpu; // lod.evaluate
+  bool displacedCorners = true;  // lod.displaced_corners: corners raised to their height for the LOD (NVIDIA VS)
+  HeightBounds heightBounds = HeightBounds::Global; // lod.height_bounds
+  DenormalFlush flushDenormals = DenormalFlush::Auto; // lod.flush_denormals: "auto" | true | false
+
+  static lod::BonaventuraParams sceneBonaventura() {
+    lod::BonaventuraParams p;
+    p.rank = 0.4f;
+    return p;
+  }
+  static lod::NvidiaTileParams sceneTile() {
+    lod::NvidiaTileParams p;
+    p.reconstruction = lod::Reconstruction::Resampled;
+    return p;
+  }
+  static lod::ClipDiameterParams sceneClipDiameter() {
+    lod::ClipDiameterParams p;
+    p.frustumCull = true;
+    return p;
+  }
+};
+
+// Domain-shader interpolation of the patch corners (domain.formula). lerp(a, b, t):
+enum class LerpFormula : uint8_t {
+  Nvidia,    // "nvidia" (default): the NVIDIA sample's Bilerp with HLSL lerp = a + t*(b - a), mul and add rounded
+             // separately; identical to "lerp"
+  Lerp,      // "lerp": a + t*(b - a)
+  LerpFma,   // "lerp_fma": fma(t, b - a, a)
+  Blend,     // "blend": a*(1 - t) + b*t
+  BlendFma,  // "blend_fma": fma(b, t, a*(1 - t))
+};
+
+enum class LerpOrder : uint8_t {
+  UFirst, // "u_first": lerp(lerp(c00, c10, u), lerp(c01, c11, u), v) (the NVIDIA sample)
+  VFirst, // "v_first": lerp(lerp(c00, c01, v), lerp(c10, c11, v), u)
+};
+
+// Where the height texture coordinate comes from (domain.height_uv).
+enum class HeightUv : uint8_t {
+  World,        // "world": from the interpolated world x/z (NVIDIA): equal x/z means equal height
+  Interpolated, // "interpolated": corner texture coordinates interpolated with domain.formula (Luna)
+};
+
+struct DomainShader {
+  LerpFormula formula = LerpFormula::Nvidia; // domain.formula
+  LerpOrder order = LerpOrder::UFirst;       // domain.order
+  HeightUv heightUv = HeightUv::World;       // domain.height_uv
+};
+
+// A camera. fovY in degrees, viewport in pixels.
+struct Camera {
+  glm::vec3 eye{0, 40, -60}; // camera.eye (finite)
+  glm::vec3 target{0, 0, 0}; // camera.target (finite, != eye)
+  glm::vec3 up{0, 1, 0};     // camera.up (finite, not parallel to target - eye)
+  float fovY = 60;           // camera.fov_y in (0, 180)
+  float nearZ = 0.1f;        // camera.near (> 0)
+  float farZ = 10000;        // camera.far (> near)
+  int width = 1920;          // camera.width (>= 1)
+  int height = 1200;         // camera.height (>= 1)
+};
+
+// A whole scene: what loadScene / parseScene return, valid (every key checked). Defaults as initialised.
+struct Scene {
+  std::string source;          // file name the scene came from ("<string>" for parseScene)
+  std::string name;            // name (optional)
+  Layout layout;               // [layout]
+  Displacement displacement;   // [displacement]
+  Lod lod;                     // [lod]
+  Partitioning partitioning = Partitioning::FractionalEven; // tessellation.partitioning
+  Stage stage{};               // tessellation.stage: hw | hlsl-avg | hlsl-min | hlsl-max (+ -1axis)
+  DomainShader domain;         // [domain]
+  Camera camera;               // [camera]
+  std::vector<Camera> cameraPath; // [[camera_path]]: each entry a full camera table (missing keys from [camera])
+  // What the verdict depends on, hashed by the loader (sceneContentHash): FNV-1a 64 over the scene text, each
+  // override, the heightmap's texels and the lod.shader file's bytes. Shards of one sweep must agree (fftess merge).
+  uint64_t contentHash = 0;
+};
+
+// Result of loading: either a scene or an error message "file:line:col: key: what is wrong".
+struct SceneResult {
+  bool ok = false;
+  Scene scene;
+  std::string error;
+  explicit operator bool() const { return ok; }
+};
+
+// Loads a scene file and applies overrides. Each override is "KEY=VALUE" with KEY a dotted path
+// (lod.adjacency_clamp=integer, camera.eye=[0,10,0]); VALUE is parsed as a TOML value, a bare word as a string.
+// Overrides are validated exactly like the file (unknown keys, types, ranges); their errors name "--set KEY".
+// A heightmap file is read and its size checked; procedural displacement is baked into scene.displacement.texels.
+SceneResult loadScene(const std::string& path, const std::vector<std::string>& overrides = {});
+// The same from text in memory; sourceName is used in messages and relative file paths resolve against baseDir.
+SceneResult parseScene(const std::string& text, const std::string& sourceName = "<string>",
+                       const std::vector<std::string>& overrides = {}, const std::string& baseDir = ".");
+
+// Names as the scene format spells them (the TOML values above; "?" for a value out of range).
+const char* toString(LayoutKind k);
+const char* toString(DisplacementKind k);
+const char* toString(LodScheme s);
+const char* toString(AdjacencyClamp c);
+const char* toString(lod::Reconstruction r);
+const char* toString(LerpFormula f);
+const char* toString(MipMode m);
+const char* toString(TexelFormat f);
+const char* toString(HeightBounds b);
+const char* toString(LodEvaluate e); // "cpu", "gpu"
+
+} // namespace fftess::verify
