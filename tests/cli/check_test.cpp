@@ -249,7 +249,7 @@ TEST_CASE("check: a scene with T-junctions reports them as t_junction (text, JSO
   CHECK(json::parse(clitest::readFile(js)).at("stats").at("cracks").get<int64_t>() > 0);
 }
 
-TEST_CASE("check: --json - prints only JSON; --quiet prints nothing", "[cli][check]") {
+TEST_CASE("check: --json - prints only JSON, --quiet prints nothing", "[cli][check]") {
   auto r = run({"check", kScene, "--set", "lod.adjacency_clamp=none", "--json", "-"});
   CHECK(r.status == 1);
   CHECK(json::parse(r.out).at("kind") == "check");
@@ -300,7 +300,7 @@ TEST_CASE("check/sweep: bad scenes and overrides exit 2 with one line naming the
   for (const std::string& f : clitest::listDir(clitest::tmpDir())) CHECK(f.find(".tmp.") == std::string::npos);
 }
 
-TEST_CASE("sweep: workaround on is clean, off cracks; summary names causes; JSON and SVG", "[cli][sweep]") {
+TEST_CASE("sweep: workaround on is clean, off cracks, summary names causes, JSON and SVG", "[cli][sweep]") {
   const std::string js = clitest::tmpDir() + "/sweep.json", svg = clitest::tmpDir() + "/sweep.svg";
   auto r = run({"sweep", kScene, "--orbit", "12", "--threads", "2"});
   CHECK(r.status == 0);

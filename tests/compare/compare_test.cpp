@@ -103,7 +103,7 @@ TEST_CASE("compare: one coordinate off by one ulp or by one 16.16 step is points
   }
 }
 
-TEST_CASE("compare: flipped winding is winding_only; all flipped is named winding_swapped") {
+TEST_CASE("compare: flipped winding is winding_only, all flipped is named winding_swapped") {
   const Patch p = patchOf("tri integer triangle_ccw hw 3 4 5 4 0 0");
   CapturedPatch all = referenceCapture(p, 0, {});
   for (size_t i = 0; i < all.vertices.size(); i += 3) std::swap(all.vertices[i + 1], all.vertices[i + 2]);

@@ -82,7 +82,7 @@ TEST_CASE("bonaventura: factors are powers of two in [minFactor, maxFactor]", "[
   }
 }
 
-TEST_CASE("bonaventura: four patches sharing a corner agree on its level; the literal fourth corner does not",
+TEST_CASE("bonaventura: four patches sharing a corner agree on its level, the literal fourth corner does not",
           "[lod][bonaventura]") {
   // Patches around the grid point (0, 0): it is corner 3 of the patch at (-8,-8), 2 of (0,-8), 1 of (-8,0), 0 of
   // (0,0).

@@ -29,7 +29,7 @@ TEST_CASE("clipDiameter: hand-computed factors with the exact camera", "[lod][cl
   CHECK(r.why.factor[0].fixes == FixClampedMin);
 }
 
-TEST_CASE("clipDiameter: behind the eye gets minFactor; no culling unless asked", "[lod][clip_diameter][culling]") {
+TEST_CASE("clipDiameter: behind the eye gets minFactor, no culling unless asked", "[lod][clip_diameter][culling]") {
   const Camera cam = lodtest::exactCamera();
   PatchLod r = clipDiameter(lodtest::facingPatch(0.0f, 0.0f, 8.0f), cam); // clip.w = -8
   CHECK_FALSE(r.why.culled);

@@ -2,6 +2,7 @@
 // so the draws are the same with every standard library).
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>

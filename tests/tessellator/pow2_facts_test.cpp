@@ -12,7 +12,7 @@
 using namespace fftess;
 using namespace fftess::testing;
 
-TEST_CASE("12 beside 2x6 cracks; 8 beside 2x4 meets (integer partitioning)", "[pow2]") {
+TEST_CASE("12 beside 2x6 cracks, 8 beside 2x4 meets (integer partitioning)", "[pow2]") {
   const EdgePoints big = edgePoints(12.0f, Partitioning::Integer), small = edgePoints(6.0f, Partitioning::Integer);
   // r(12) = round(65536/12) = 5461; points i*5461 up to the middle, the second half mirrored from 1.
   CHECK(std::vector<uint32_t>(big.fixed, big.fixed + big.count) ==
@@ -55,7 +55,7 @@ TEST_CASE("S = 7: r(7) = 2 r(14) but 14 r(14) = 65534", "[pow2]") {
   CHECK_FALSE(compareHalfEdges(14.0f, 7.0f, Partitioning::Integer).match);
 }
 
-TEST_CASE("causes: 12 beside 2x6 is the reciprocal table (and the special 0.5); 7 beside 2x3.5 the point count",
+TEST_CASE("causes: 12 beside 2x6 is the reciprocal table (and the special 0.5), 7 beside 2x3.5 the point count",
           "[pow2]") {
   const HalfEdgeComparison c = compareHalfEdges(12.0f, 6.0f, Partitioning::Integer);
   REQUIRE(c.paired);

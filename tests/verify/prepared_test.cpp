@@ -87,7 +87,7 @@ TEST_CASE("prepared terrain: corner heights are sampled once, never per camera",
   CHECK(t.stats().heightSamples == built.heightSamples);
 }
 
-TEST_CASE("prepared terrain: a flat scene samples no height at all; a constant LOD calls no lod/",
+TEST_CASE("prepared terrain: a flat scene samples no height at all, a constant LOD calls no lod/",
           "[verify][prepared]") {
   const Scene flat = loadExample("rings_small.toml", {"displacement.kind=none"});
   const Terrain t = prepared(flat);

@@ -13,7 +13,7 @@
 //   screen-sphere, nvidia-tile with adjacency clamp none / integer / pow2 (EdgeVector rebuild), distance-pow2,
 //   bonaventura, clip-diameter (frustumCull on), geomorph (the patch's and its neighbours' levels, then factors),
 // every parameter at the lod.h default. The GPU side is a GL 4.5 compute shader built by text concatenation of
-// lod::glslSource(0..n-1) after "#version 450" (what tests/lod/test_glsl.cpp does), writing floatBitsToUint of every
+// lod::glslSource(0..n-1) after "#version 450" (what tests/lod/glsl_test.cpp does), writing floatBitsToUint of every
 // value to an SSBO. Compared per scheme: bit-identical factors, max ulp distance, factors culled on one side only,
 // and whether a difference changes the tessellation: fftess::edgePoints(factor, FractionalEven / Integer) differ
 // (point count or any 16.16 position). Exit status: 0 = measured (differences are results, not failures);
