@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "base/bits.h"
 #include "tessellator/batch.h"
 #include "compare/compare.h"
 
@@ -21,17 +22,6 @@ Patch patchOf(const char* line) {
   return p;
 }
 
-float f32(uint32_t b) {
-  float f;
-  std::memcpy(&f, &b, sizeof f);
-  return f;
-}
-uint32_t bits(float f) {
-  uint32_t b;
-  std::memcpy(&b, &f, sizeof b);
-  return b;
-}
-
 PatchComparison run(const Patch& p, const CapturedPatch* c, bool strict = false) {
   Tessellator t;
   CompareOptions o;
@@ -44,8 +34,8 @@ bool named(const PatchComparison& c, PortBug b) { return std::find(c.bugs.begin(
 // Every coordinate of the capture through f (coordinates 0, 1 stay).
 template <class F> CapturedPatch mapCoordinates(CapturedPatch c, F f) {
   for (auto& v : c.vertices) {
-    v.u = bits(f(f32(v.u)));
-    v.v = bits(f(f32(v.v)));
+    v.u = bitsOf(f(floatOf(v.u)));
+    v.v = bitsOf(f(floatOf(v.v)));
   }
   return c;
 }
@@ -81,10 +71,10 @@ TEST_CASE("compare: one coordinate off by one ulp or by one 16.16 step is points
     // Change one interior vertex coordinate everywhere it occurs (the point moves, its triangles follow).
     CapturedVertex victim{};
     for (auto v : c.vertices)
-      if (f32(v.u) > 0.0f && f32(v.u) < 1.0f && f32(v.v) > 0.0f && f32(v.v) < 1.0f) victim = v;
-    const float u = f32(victim.u);
+      if (floatOf(v.u) > 0.0f && floatOf(v.u) < 1.0f && floatOf(v.v) > 0.0f && floatOf(v.v) < 1.0f) victim = v;
+    const float u = floatOf(victim.u);
     REQUIRE(u > 0.0f);
-    const uint32_t moved = step ? bits(u + 1.0f / 65536.0f) : victim.u + 1;
+    const uint32_t moved = step ? bitsOf(u + 1.0f / 65536.0f) : victim.u + 1;
     for (auto& v : c.vertices)
       if (v == victim) v.u = moved;
     const PatchComparison r = run(p, &c);
@@ -192,7 +182,7 @@ TEST_CASE("compare: no mirroring of the second half is named") {
   CapturedPatch c = referenceCapture(p, 0, {});
   const float f[6] = {3, 5, 7, 6, 3, 5};
   for (auto& v : c.vertices) {
-    float u = f32(v.u), w = f32(v.v);
+    float u = floatOf(v.u), w = floatOf(v.v);
     // Which factor places each coordinate: outer edges on the border, inside factors inside.
     const bool uEdge = u == 0.0f || u == 1.0f, vEdge = w == 0.0f || w == 1.0f;
     if (uEdge && vEdge) continue;
@@ -200,8 +190,8 @@ TEST_CASE("compare: no mirroring of the second half is named") {
     const int nv = uEdge ? int(f[u == 0.0f ? 0 : 2]) : int(f[5]);
     if (!uEdge && u > 0.5f) u = place(int(std::lround(u * float(nu))), nu);
     if (!vEdge && w > 0.5f) w = place(int(std::lround(w * float(nv))), nv);
-    v.u = bits(u);
-    v.v = bits(w);
+    v.u = bitsOf(u);
+    v.v = bitsOf(w);
   }
   const PatchComparison r = run(p, &c);
   REQUIRE(r.kind == DifferenceKind::PointsDiffer);
@@ -248,7 +238,7 @@ TEST_CASE("compare: fractional factors not snapped to 16.16 and an unrounded ler
       const EdgeTrace tr = traceEdge(f, Partitioning::FractionalEven);
       bool moves = false;
       for (int k = 0; k < tr.count; ++k)
-        moves = moves || bits(buggyEdgeParam(b, tr, k, tr.clamped)) != bits(tr.points[k].param);
+        moves = moves || bitsOf(buggyEdgeParam(b, tr, k, tr.clamped)) != bitsOf(tr.points[k].param);
       if (moves) break;
     }
     char line[96];
@@ -259,12 +249,12 @@ TEST_CASE("compare: fractional factors not snapped to 16.16 and an unrounded ler
     const EdgeTrace tr = traceEdge(p.factors[0], p.partitioning);
     bool changed = false;
     for (auto& v : c.vertices) {
-      if (v.u != 0 || f32(v.v) == 0.0f || f32(v.v) == 1.0f) continue;
+      if (v.u != 0 || floatOf(v.v) == 0.0f || floatOf(v.v) == 1.0f) continue;
       for (int k = 0; k < tr.count; ++k)
-        if (bits(tr.points[k].param) == v.v) {
+        if (bitsOf(tr.points[k].param) == v.v) {
           const float m = buggyEdgeParam(b, tr, k, tr.clamped);
-          changed = changed || bits(m) != v.v;
-          v.v = bits(m);
+          changed = changed || bitsOf(m) != v.v;
+          v.v = bitsOf(m);
           break;
         }
     }

@@ -2,6 +2,7 @@
 // whole-mesh check agrees with the edge check on every test scene. Both CGAL kernels throughout.
 #include "verify_test_util.h"
 
+#include "base/bits.h"
 #include "verify/internal.h"
 
 #include <cmath>
@@ -10,16 +11,11 @@
 using namespace fftess::verify;
 using namespace fftess::verify::test;
 using fftess::Partitioning;
+using fftess::bitsOf;
 
 namespace {
 
 const Kernel kKernels[] = {Kernel::Epick, Kernel::Epeck};
-
-uint32_t bitsOf(float f) {
-  uint32_t b;
-  std::memcpy(&b, &f, sizeof b);
-  return b;
-}
 
 } // namespace
 

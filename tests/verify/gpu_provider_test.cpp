@@ -3,6 +3,7 @@
 // and compared with the C++ build: equal factors give the C++ verdict and no difference; one factor moved by an ulp
 // is reported as exactly one FactorDiff with both bits; a NaN factor makes a hole. docs/gpu_lod.md.
 #include "verify_test_util.h"
+#include "base/bits.h"
 #include "verify/internal.h"
 
 #include <catch2/catch.hpp>
@@ -123,9 +124,7 @@ struct DenormalStandIn : FactorProvider {
     out.assign(patches.size(), fftess::lod::PatchLod{});
     for (fftess::lod::PatchLod& l : out)
       for (float& f : l.factors) f = 4.0f;
-    uint32_t bits = 0x000116C2u; // 1e-40
-    float denormal;
-    std::memcpy(&denormal, &bits, 4);
+    const float denormal = fftess::floatOf(0x000116C2u); // 1e-40
     for (int e = 0; e < 4; ++e) out[static_cast<size_t>(patch)].factors[e] = denormal;
     return true;
   }

@@ -2,19 +2,13 @@
 // The LOD's own record reaches each finding.
 #include "verify_test_util.h"
 
+#include "base/bits.h"
+
 #include <cstring>
 
 using namespace fftess;
 using namespace fftess::verify;
 using namespace fftess::verify::test;
-
-namespace {
-uint32_t floatBits(float f) {
-  uint32_t u;
-  std::memcpy(&u, &f, sizeof u);
-  return u;
-}
-} // namespace
 
 TEST_CASE("prepared terrain: one build serves check, mesh check, sweep, cameras, extent and geometry",
           "[verify][prepared]") {
@@ -136,7 +130,7 @@ TEST_CASE("findings carry the LOD's own record", "[verify][prepared][causes]") {
       CHECK((f.a.lod.why.fixes & lod::FixSmallerNeighbour) != 0);
       CHECK((f.b.lod.why.fixes & lod::FixLargerNeighbour) != 0);
       CHECK_FALSE(f.a.lod.culled);
-      CHECK(f.a.hullFactorBits == floatBits(f.a.hullFactor));
+      CHECK(f.a.hullFactorBits == bitsOf(f.a.hullFactor));
       CHECK(lodWords(f.b).find("integer_clamp") != std::string::npos);
       CHECK(lodWords(f.b).find("neighbour 2x") != std::string::npos);
     }
