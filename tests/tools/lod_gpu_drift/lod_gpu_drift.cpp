@@ -18,6 +18,7 @@
 // and whether a difference changes the tessellation: fftess::edgePoints(factor, FractionalEven / Integer) differ
 // (point count or any 16.16 position). Exit status: 0 = measured (differences are results, not failures);
 // 1 = usage; 3 = no suitable GL 4.5 context; 4 = shader compile/link or GL error.
+#include "base/bits.h"
 #include "base/splitmix64.h"
 #include "lod/lod.h"
 #include "tessellator/tessellator.h"
@@ -67,16 +68,8 @@ constexpr int kOutStride = kOutLevels + 5;
 constexpr int kCategories = 5;
 const char* const kCategoryNames[kCategories] = {"general", "near", "far", "edge-on", "random"};
 
-uint32_t bitsOf(float f) {
-  uint32_t u;
-  std::memcpy(&u, &f, 4);
-  return u;
-}
-float floatOf(uint32_t u) {
-  float f;
-  std::memcpy(&f, &u, 4);
-  return f;
-}
+using fftess::bitsOf; // base/bits.h
+using fftess::floatOf;
 
 // ---------------------------------------------------------------- generator
 // splitmix64 (base/splitmix64.h), with the draws this tool has always made.

@@ -23,7 +23,9 @@
 // the same patches as that llvmpipe test. The context is gl/gl_context.h (hardware EGL devices first).
 #include "gl_capture.h"     // Patch, enums, parseBatch, batchLine, toString (batch.cpp); pointBound, glSpacing
 #include "gl_context.h"     // headless EGL context, GL loader, renderer check
-#include "random_patches.h" // the seeded generator (Rng, randomPatch, sweepPatches, generatePatches, bitsOf, floatOf)
+#include "random_patches.h" // the seeded generator (Rng, randomPatch, sweepPatches, generatePatches)
+
+#include "base/bits.h"
 
 #include "tessellator/tessellator.h"
 
@@ -43,6 +45,8 @@
 #include <vector>
 
 using namespace fftess::oracle;
+using fftess::bitsOf;
+using fftess::floatOf;
 
 namespace {
 
