@@ -1,6 +1,7 @@
 // fftess check / sweep end to end on the bundled scenes: exit statuses, JSON shape (docs/cli.md), SVG well-formed,
 // bad scene files and overrides, no partial report files.
 #include "run.h"
+#include "usage_error.h"
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
@@ -283,14 +284,7 @@ TEST_CASE("check/sweep: bad scenes and overrides exit 2 with one line naming the
       {{"check"}, "scene"},
   };
   for (const Case& c : cases) {
-    std::string joined;
-    for (const auto& a : c.args) joined += a + " ";
-    INFO(joined);
-    const auto r = run(c.args);
-    CHECK(r.status == 2);
-    CHECK(r.out.empty());
-    CHECK(r.err.find(c.mention) != std::string::npos);
-    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    clitest::checkUsageError(c.args, c.mention);
     CHECK_FALSE(clitest::fileExists(report));
   }
   // A report that cannot be written: exit 2, naming the file, nothing left behind.
