@@ -73,7 +73,8 @@ TEST_CASE("table kernels equal the old path on every equal-factor quad and tri",
   checkChunks(testing::equalFactorChunks());
 }
 
-TEST_CASE("portable loops equal the old path too (the AVX2 kernels are chosen at run time)", "[tessellator][differential]") {
+TEST_CASE("portable loops equal the old path too (the AVX2 kernels are chosen at run time)",
+          "[tessellator][differential]") {
   fftess::simd::forcePortable(true);
   checkChunks(testing::portableChunks());
   fftess::simd::forcePortable(false);

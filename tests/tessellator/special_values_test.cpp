@@ -48,7 +48,7 @@ int zeroAreaTriangles(const Tessellator& t) {
 
 } // namespace
 
-TEST_CASE("special edge factors: culling, clamping, rounding", "[special]") {
+TEST_CASE("special edge factors: culling, clamping, rounding", "[tessellator][special]") {
   const Partitioning I = Partitioning::Integer, E = Partitioning::FractionalEven, O = Partitioning::FractionalOdd,
                      P = Partitioning::Pow2;
   const EdgeCase table[] = {
@@ -82,7 +82,8 @@ TEST_CASE("special edge factors: culling, clamping, rounding", "[special]") {
   CHECK(edgePoints(floatOf(0x40000002), E).fixedFactor == 0x20000u);
 }
 
-TEST_CASE("denormal outer factors: reference keeps the patch, flushDenormals culls it (llvmpipe)", "[special]") {
+TEST_CASE("denormal outer factors: reference keeps the patch, flushDenormals culls it (llvmpipe)",
+          "[tessellator][special]") {
   Tessellator t;
   Patch p = uniformQuad(Partitioning::Integer, 4.0f);
   p.factors[Veq0] = floatOf(0x00000001);
@@ -93,7 +94,7 @@ TEST_CASE("denormal outer factors: reference keeps the patch, flushDenormals cul
   CHECK(edgePoints(floatOf(0x00000001), Partitioning::Integer, {}, flush).culled);
 }
 
-TEST_CASE("all factors 1", "[special]") {
+TEST_CASE("all factors 1", "[tessellator][special]") {
   Tessellator t;
   // integer and fractional_odd: the minimum quad, 4 points and 2 triangles
   for (Partitioning part : {Partitioning::Integer, Partitioning::Pow2, Partitioning::FractionalOdd}) {
@@ -107,7 +108,7 @@ TEST_CASE("all factors 1", "[special]") {
   CHECK(t.indices().size() == 24);
 }
 
-TEST_CASE("duplicates and zero-area triangles are real output", "[special]") {
+TEST_CASE("duplicates and zero-area triangles are real output", "[tessellator][special]") {
   Tessellator t;
   // fractional_even 2 + 2^-16: 25 points, 16 of them duplicates, 24 zero-area triangles
   t.tessellate(uniformQuad(Partitioning::FractionalEven, 2.0f + 1.0f / 65536.0f));
@@ -125,7 +126,7 @@ TEST_CASE("duplicates and zero-area triangles are real output", "[special]") {
   CHECK(distinctPoints(t) < int(t.points().size()));
 }
 
-TEST_CASE("HLSL stage: pow2 rounding by exponent bump, rounded and unrounded factors", "[special][hlsl]") {
+TEST_CASE("HLSL stage: pow2 rounding by exponent bump, rounded and unrounded factors", "[tessellator][special][hlsl]") {
   Stage max;
   REQUIRE(parseStage("hlsl-max", max));
   const float in[6] = {24.0f, 1.0000153f, 28.0f, 0.383f, 1.0f, 1.0f};
@@ -155,7 +156,7 @@ TEST_CASE("HLSL stage: pow2 rounding by exponent bump, rounded and unrounded fac
   CHECK(bitsOf(hc.unrounded[Ueq0]) == 0x7fc00000u);
 }
 
-TEST_CASE("float <-> 16.16 conversion around integers", "[special]") {
+TEST_CASE("float <-> 16.16 conversion around integers", "[tessellator][special]") {
   // One 16.16 step above 2 is a new factor; half a step (2 + 2^-17) rounds to even (2); 3/4 of a step rounds up.
   CHECK(edgePoints(2.0f + 1.0f / 65536.0f, Partitioning::FractionalEven).fixedFactor == 0x20001u);
   CHECK(edgePoints(2.0f + 1.0f / 131072.0f, Partitioning::FractionalEven).fixedFactor == 0x20000u);
