@@ -2,8 +2,6 @@
 // The LOD's own record reaches each finding.
 #include "verify_test_util.h"
 
-#include "base/bits.h"
-
 #include <cstring>
 
 using namespace fftess;

@@ -1,6 +1,7 @@
 // Shared helpers of the verifier tests.
 #pragma once
 
+#include "base/bits.h"
 #include "lod/lod.h"
 #include "verify/verify.h"
 

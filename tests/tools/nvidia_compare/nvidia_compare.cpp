@@ -25,8 +25,6 @@
 #include "gl_context.h"     // headless EGL context, GL loader, renderer check
 #include "random_patches.h" // the seeded generator (Rng, randomPatch, sweepPatches, generatePatches)
 
-#include "base/bits.h"
-
 #include "tessellator/tessellator.h"
 
 #include <algorithm>
@@ -45,7 +43,7 @@
 #include <vector>
 
 using namespace fftess::oracle;
-using fftess::bitsOf;
+using fftess::bitsOf;  // base/bits.h
 using fftess::floatOf;
 
 namespace {
