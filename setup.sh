@@ -6,7 +6,7 @@
 #   bash setup.sh build  install and build only
 #   bash setup.sh fuzz   also install clang; build both libFuzzer targets (build-fuzz/) and run each on its seed
 #                        corpus for FUZZ_RUNS inputs (default 100000). CI does not run this: its short fuzz run is
-#                        the replay ctests (fuzz_*_replay: corpus + fixed mutations), which the sanitizer build of
+#                        the replay ctests (test_*_fuzz_replay: corpus + fixed mutations), which the sanitizer build of
 #                        `test` runs under ASan+UBSan with g++.
 # Environment: BUILD_DIR (default build), BUILD_TYPE (default Release), JOBS (default: all cores),
 #   SANITIZE (default 1; 0 skips the sanitizer build of `test`), SANITIZE_DIR (default build-sanitize).

@@ -1,5 +1,5 @@
 // The seeded random patch generator of the GPU oracle tests: the same seed gives the same patches in
-// oracle_vs_emulator_test.cpp (llvmpipe vs fftess) and nvidia/nvidia_compare.cpp (NVIDIA vs fftess), on every platform
+// tests/oracle/vs_emulator_test.cpp (llvmpipe vs fftess) and nvidia/nvidia_compare.cpp (NVIDIA vs fftess), on every platform
 // and standard library. Distribution: docs/oracle.md, "What is compared, and why" (against fftess).
 //
 // The patches of a run with seed S and N random patches: sweepPatches(), then N times randomPatch(rng) from

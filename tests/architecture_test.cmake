@@ -1,4 +1,4 @@
-# ctest architecture_layout: the house rules that a reader of docs/architecture.md relies on, checked on every
+# ctest architecture:layout: the house rules that a reader of docs/architecture.md relies on, checked on every
 # product source file (not on tests/, docs/ or tests/tools/):
 #  1. includes point down: a quoted #include "FOLDER/..." names a module the including module may use (the table
 #     below, the same as the target links in CMakeLists.txt); any other quoted include must be a file beside the
@@ -50,11 +50,11 @@ foreach(module IN LISTS modules)
   endforeach()
 endforeach()
 if(checked LESS 50)
-  message(FATAL_ERROR "architecture_layout: only ${checked} files found under ${SOURCE}: wrong SOURCE?")
+  message(FATAL_ERROR "architecture:layout: only ${checked} files found under ${SOURCE}: wrong SOURCE?")
 endif()
 if(problems)
-  message(FATAL_ERROR "architecture_layout: ${checked} product files checked; these break the layout "
+  message(FATAL_ERROR "architecture:layout: ${checked} product files checked; these break the layout "
                       "(docs/architecture.md):\n${problems}")
 endif()
-message(STATUS "architecture_layout: ${checked} product files: includes point down, none includes tests/, none over "
+message(STATUS "architecture:layout: ${checked} product files: includes point down, none includes tests/, none over "
                "${max_lines} lines")

@@ -4,7 +4,7 @@
 // scene is prepared (prepareTerrain) and, when that succeeds, checked from its own camera (CGAL) without crashing.
 // Build (clang): cmake -S . -B build-fuzz -G Ninja -DCMAKE_CXX_COMPILER=clang++ -DFFTESS_FUZZ=ON
 //   cmake --build build-fuzz --target fuzz_scene && build-fuzz/verify/fuzz_scene -runs=100000 verify/fuzz_corpus
-// Without clang, tests/verify/fuzz_replay_main.cpp runs the corpus (and mutations of it) through this same entry
+// Without clang, tests/fuzz_replay_main.cpp runs the corpus (and mutations of it) through this same entry
 // point as a ctest, under the sanitizer build's ASan+UBSan.
 #include "verify/verify.h"
 

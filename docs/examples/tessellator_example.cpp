@@ -1,4 +1,4 @@
-// Example from docs/tessellator.md; built and run by ctest ("tessellator: docs example").
+// Example from docs/tessellator.md; built and run by ctest ("tessellator:docs example").
 #include <cstdio>
 
 #include "tessellator/tessellator.h"

@@ -29,7 +29,8 @@ std::string errorOf(const std::string& text) {
 
 } // namespace
 
-TEST_CASE("capture: CSV with header, comments, decimal and hex floats, rows in any order within a patch") {
+TEST_CASE("capture: CSV with header, comments, decimal and hex floats, rows in any order within a patch",
+          "[compare][capture]") {
   const auto p = readAll("patch,primitive,vertex,u,v,w\n"
                          "# a comment\n"
                          "0,0,1,0.5,0,0.5\n"
@@ -50,7 +51,7 @@ TEST_CASE("capture: CSV with header, comments, decimal and hex floats, rows in a
   CHECK(p[1].verticesPerPrimitive == 1);
 }
 
-TEST_CASE("capture: hex blocks as fftess tessellate --format hex writes them") {
+TEST_CASE("capture: hex blocks as fftess tessellate --format hex writes them", "[compare][capture]") {
   const auto p = readAll("patch 0 points 3 indices 3\n00000000 3f800000\n00000000 00000000\n3f800000 00000000\n"
                          "0 1 2\npatch 3 points 0 indices 0\n");
   REQUIRE(p.size() == 2);
@@ -60,7 +61,7 @@ TEST_CASE("capture: hex blocks as fftess tessellate --format hex writes them") {
   CHECK(p[1].vertices.empty());
 }
 
-TEST_CASE("capture: bad input names file and line") {
+TEST_CASE("capture: bad input names file and line", "[compare][capture]") {
   CHECK(errorOf("0,0,0,0.5\n") == "cap.csv:1: expected 5 or 6 fields 'patch,primitive,vertex,u,v[,w]', found 4");
   CHECK(errorOf("0,0,0,0.5,zz\n").rfind("cap.csv:1: field 5 (v) 'zz'", 0) == 0);
   CHECK(errorOf("0,0,0,0,0\n0,0,3,0,0\n") == "cap.csv:2: field 3 (vertex) '3' is not 0, 1 or 2");

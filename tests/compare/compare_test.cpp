@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "base/bits.h"
 #include "tessellator/batch.h"
 #include "compare/compare.h"
 
@@ -21,17 +22,6 @@ Patch patchOf(const char* line) {
   return p;
 }
 
-float f32(uint32_t b) {
-  float f;
-  std::memcpy(&f, &b, sizeof f);
-  return f;
-}
-uint32_t bits(float f) {
-  uint32_t b;
-  std::memcpy(&b, &f, sizeof b);
-  return b;
-}
-
 PatchComparison run(const Patch& p, const CapturedPatch* c, bool strict = false) {
   Tessellator t;
   CompareOptions o;
@@ -44,8 +34,8 @@ bool named(const PatchComparison& c, PortBug b) { return std::find(c.bugs.begin(
 // Every coordinate of the capture through f (coordinates 0, 1 stay).
 template <class F> CapturedPatch mapCoordinates(CapturedPatch c, F f) {
   for (auto& v : c.vertices) {
-    v.u = bits(f(f32(v.u)));
-    v.v = bits(f(f32(v.v)));
+    v.u = bitsOf(f(floatOf(v.u)));
+    v.v = bitsOf(f(floatOf(v.v)));
   }
   return c;
 }
@@ -62,7 +52,8 @@ const char* const kPatches[] = {
 
 } // namespace
 
-TEST_CASE("compare: the emulator's own output is the same, in both modes, as triangles and as point lists") {
+TEST_CASE("compare: the emulator's own output is the same, in both modes, as triangles and as point lists",
+          "[compare]") {
   for (const char* line : kPatches) {
     const Patch p = patchOf(line);
     for (bool pointList : {false, true}) {
@@ -74,17 +65,18 @@ TEST_CASE("compare: the emulator's own output is the same, in both modes, as tri
   }
 }
 
-TEST_CASE("compare: one coordinate off by one ulp or by one 16.16 step is points_differ, with its nearest point") {
+TEST_CASE("compare: one coordinate off by one ulp or by one 16.16 step is points_differ, with its nearest point",
+          "[compare]") {
   const Patch p = patchOf("quad fractional_even triangle_cw hw 2.5 4 5.25 3 3.5 2.75");
   for (int step : {0, 1}) {
     CapturedPatch c = referenceCapture(p, 0, {});
     // Change one interior vertex coordinate everywhere it occurs (the point moves, its triangles follow).
     CapturedVertex victim{};
     for (auto v : c.vertices)
-      if (f32(v.u) > 0.0f && f32(v.u) < 1.0f && f32(v.v) > 0.0f && f32(v.v) < 1.0f) victim = v;
-    const float u = f32(victim.u);
+      if (floatOf(v.u) > 0.0f && floatOf(v.u) < 1.0f && floatOf(v.v) > 0.0f && floatOf(v.v) < 1.0f) victim = v;
+    const float u = floatOf(victim.u);
     REQUIRE(u > 0.0f);
-    const uint32_t moved = step ? bits(u + 1.0f / 65536.0f) : victim.u + 1;
+    const uint32_t moved = step ? bitsOf(u + 1.0f / 65536.0f) : victim.u + 1;
     for (auto& v : c.vertices)
       if (v == victim) v.u = moved;
     const PatchComparison r = run(p, &c);
@@ -103,7 +95,7 @@ TEST_CASE("compare: one coordinate off by one ulp or by one 16.16 step is points
   }
 }
 
-TEST_CASE("compare: flipped winding is winding_only; all flipped is named winding_swapped") {
+TEST_CASE("compare: flipped winding is winding_only, all flipped is named winding_swapped", "[compare]") {
   const Patch p = patchOf("tri integer triangle_ccw hw 3 4 5 4 0 0");
   CapturedPatch all = referenceCapture(p, 0, {});
   for (size_t i = 0; i < all.vertices.size(); i += 3) std::swap(all.vertices[i + 1], all.vertices[i + 2]);
@@ -120,7 +112,7 @@ TEST_CASE("compare: flipped winding is winding_only; all flipped is named windin
   CHECK_FALSE(named(r, PortBug::WindingSwapped));
 }
 
-TEST_CASE("compare: rotated triangles match by default and differ with strict order") {
+TEST_CASE("compare: rotated triangles match by default and differ with strict order", "[compare]") {
   const Patch p = patchOf("quad integer triangle_cw hw 3 3 3 3 3 3");
   CapturedPatch c = referenceCapture(p, 0, {});
   for (size_t i = 0; i < c.vertices.size(); i += 3)
@@ -134,7 +126,7 @@ TEST_CASE("compare: rotated triangles match by default and differ with strict or
   CHECK(run(p, &r, true).kind == DifferenceKind::OrderDiffers);
 }
 
-TEST_CASE("compare: a missing patch, a patch culled on either side") {
+TEST_CASE("compare: a missing patch, a patch culled on either side", "[compare]") {
   const Patch p = patchOf("quad integer triangle_cw hw 3 3 3 3 3 3");
   CHECK(run(p, nullptr).kind == DifferenceKind::CulledInCapture);
   CapturedPatch empty;
@@ -146,7 +138,7 @@ TEST_CASE("compare: a missing patch, a patch culled on either side") {
   CHECK(run(culled, nullptr).kind == DifferenceKind::Same);
 }
 
-TEST_CASE("compare: multiplicity and primitives_differ") {
+TEST_CASE("compare: multiplicity and primitives_differ", "[compare]") {
   const Patch p = patchOf("quad integer point hw 3 3 3 3 3 3");
   CapturedPatch c = referenceCapture(p, 0, {});
   c.vertices.push_back(c.vertices[3]);
@@ -161,7 +153,7 @@ TEST_CASE("compare: multiplicity and primitives_differ") {
   CHECK(run(t, &q).kind == DifferenceKind::PrimitivesDiffer);
 }
 
-TEST_CASE("compare: float division instead of the 16.16 reciprocal is named, with its step") {
+TEST_CASE("compare: float division instead of the 16.16 reciprocal is named, with its step", "[compare]") {
   for (int n : {3, 5, 7}) {
     char buf[96];
     std::snprintf(buf, sizeof buf, "quad integer triangle_cw hw %d %d %d %d %d %d", n, n, n, n, n, n);
@@ -181,7 +173,7 @@ TEST_CASE("compare: float division instead of the 16.16 reciprocal is named, wit
   }
 }
 
-TEST_CASE("compare: no mirroring of the second half is named") {
+TEST_CASE("compare: no mirroring of the second half is named", "[compare]") {
   const Patch p = patchOf("quad integer point hw 3 5 7 6 3 5");
   // The buggy port: point k of n at k * round(65536 / n) also past the middle (not 1 - (n - k) * ...).
   auto place = [](int k, int n) {
@@ -192,7 +184,7 @@ TEST_CASE("compare: no mirroring of the second half is named") {
   CapturedPatch c = referenceCapture(p, 0, {});
   const float f[6] = {3, 5, 7, 6, 3, 5};
   for (auto& v : c.vertices) {
-    float u = f32(v.u), w = f32(v.v);
+    float u = floatOf(v.u), w = floatOf(v.v);
     // Which factor places each coordinate: outer edges on the border, inside factors inside.
     const bool uEdge = u == 0.0f || u == 1.0f, vEdge = w == 0.0f || w == 1.0f;
     if (uEdge && vEdge) continue;
@@ -200,8 +192,8 @@ TEST_CASE("compare: no mirroring of the second half is named") {
     const int nv = uEdge ? int(f[u == 0.0f ? 0 : 2]) : int(f[5]);
     if (!uEdge && u > 0.5f) u = place(int(std::lround(u * float(nu))), nu);
     if (!vEdge && w > 0.5f) w = place(int(std::lround(w * float(nv))), nv);
-    v.u = bits(u);
-    v.v = bits(w);
+    v.u = bitsOf(u);
+    v.v = bitsOf(w);
   }
   const PatchComparison r = run(p, &c);
   REQUIRE(r.kind == DifferenceKind::PointsDiffer);
@@ -210,7 +202,7 @@ TEST_CASE("compare: no mirroring of the second half is named") {
   CHECK(r.points[0].step == "mirrored half");
 }
 
-TEST_CASE("compare: the middle point computed instead of the exact 0.5 is named") {
+TEST_CASE("compare: the middle point computed instead of the exact 0.5 is named", "[compare]") {
   const Patch p = patchOf("quad integer triangle_ccw hw 6 6 6 6 6 6");
   // 3 * round(65536 / 6) = 32769, not 32768.
   const CapturedPatch c =
@@ -222,7 +214,7 @@ TEST_CASE("compare: the middle point computed instead of the exact 0.5 is named"
   CHECK(r.points.at(0).du + r.points.at(0).dv == 1.0);
 }
 
-TEST_CASE("compare: denormals flushed and pow2 not mapped to integer are named") {
+TEST_CASE("compare: denormals flushed and pow2 not mapped to integer are named", "[compare]") {
   const Patch d = patchOf("quad integer triangle_cw hw 4 0x00000010 4 4 4 4");
   const PatchComparison r = run(d, nullptr);
   CHECK(r.kind == DifferenceKind::CulledInCapture);
@@ -238,7 +230,8 @@ TEST_CASE("compare: denormals flushed and pow2 not mapped to integer are named")
   CHECK_FALSE(named(q, PortBug::Pow2AsFractionalOdd));
 }
 
-TEST_CASE("compare: fractional factors not snapped to 16.16 and an unrounded lerp are named (bug-model captures)") {
+TEST_CASE("compare: fractional factors not snapped to 16.16 and an unrounded lerp are named (bug-model captures)",
+          "[compare]") {
   // These two captures come from compare's own bug model applied to the reference (buggyEdgeParam): the test checks
   // that the model changes the output and that the recognition finds it, not the model itself.
   for (PortBug b : {PortBug::FactorsNotSnapped, PortBug::LerpNotRounded}) {
@@ -248,7 +241,7 @@ TEST_CASE("compare: fractional factors not snapped to 16.16 and an unrounded ler
       const EdgeTrace tr = traceEdge(f, Partitioning::FractionalEven);
       bool moves = false;
       for (int k = 0; k < tr.count; ++k)
-        moves = moves || bits(buggyEdgeParam(b, tr, k, tr.clamped)) != bits(tr.points[k].param);
+        moves = moves || bitsOf(buggyEdgeParam(b, tr, k, tr.clamped)) != bitsOf(tr.points[k].param);
       if (moves) break;
     }
     char line[96];
@@ -259,12 +252,12 @@ TEST_CASE("compare: fractional factors not snapped to 16.16 and an unrounded ler
     const EdgeTrace tr = traceEdge(p.factors[0], p.partitioning);
     bool changed = false;
     for (auto& v : c.vertices) {
-      if (v.u != 0 || f32(v.v) == 0.0f || f32(v.v) == 1.0f) continue;
+      if (v.u != 0 || floatOf(v.v) == 0.0f || floatOf(v.v) == 1.0f) continue;
       for (int k = 0; k < tr.count; ++k)
-        if (bits(tr.points[k].param) == v.v) {
+        if (bitsOf(tr.points[k].param) == v.v) {
           const float m = buggyEdgeParam(b, tr, k, tr.clamped);
-          changed = changed || bits(m) != v.v;
-          v.v = bits(m);
+          changed = changed || bitsOf(m) != v.v;
+          v.v = bitsOf(m);
           break;
         }
     }
@@ -277,7 +270,7 @@ TEST_CASE("compare: fractional factors not snapped to 16.16 and an unrounded ler
   }
 }
 
-TEST_CASE("compare: summary counts and the bug that explains every differing patch") {
+TEST_CASE("compare: summary counts and the bug that explains every differing patch", "[compare]") {
   CompareSummary s;
   Tessellator t;
   const Patch p = patchOf("tri integer triangle_ccw hw 3 4 5 4 0 0");
@@ -294,7 +287,8 @@ TEST_CASE("compare: summary counts and the bug that explains every differing pat
   CHECK(s.explainingAll()[0] == PortBug::WindingSwapped);
 }
 
-TEST_CASE("compare: an unsnapped fractional factor just above an even integer adds points, named factors_not_snapped") {
+TEST_CASE("compare: an unsnapped fractional factor just above an even integer adds points, named factors_not_snapped",
+          "[compare]") {
   // 2 + 2^-22 rounds to 2.0 in 16.16: the reference places 3 points on Ueq0 (facts.md). A port comparing the float
   // sees a factor above 2 and grows two more points at the ends of the middle (here: duplicates of 0 and 0.5 after
   // rounding), as the reference does for 2 + 2^-16, the next 16.16 value.

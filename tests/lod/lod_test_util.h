@@ -7,19 +7,14 @@
 #include <cstring>
 #include <string>
 
+#include "base/bits.h"
 #include "lod/lod.h"
 
 namespace lodtest {
 
-inline uint32_t bits(float f) {
-  uint32_t u;
-  std::memcpy(&u, &f, sizeof u);
-  return u;
-}
-
 inline std::string hex(float f) {
   char buf[64];
-  std::snprintf(buf, sizeof buf, "%.9g (0x%08x)", static_cast<double>(f), static_cast<unsigned>(bits(f)));
+  std::snprintf(buf, sizeof buf, "%.9g (0x%08x)", static_cast<double>(f), static_cast<unsigned>(fftess::bitsOf(f)));
   return buf;
 }
 

@@ -1,4 +1,4 @@
-# ctest gpu_lod_*: `fftess sweep` with the LOD evaluated by the local OpenGL driver (llvmpipe in CI), docs/gpu_lod.md.
+# ctest "oracle:gpu lod *": `fftess sweep` with the LOD evaluated by the local OpenGL driver (llvmpipe in CI), docs/gpu_lod.md.
 #   CASE=glsl     docs/examples/gpu_distance_glsl.toml (lod.shader in GLSL): with lod.adjacency_clamp = pow2 and none,
 #                 the same verdict line as the built-in C++ scheme (--set lod.shader=''), and the factor comparison
 #                 section printed

@@ -1,14 +1,18 @@
-// Differential test: the table kernels (issue 11) against the path they replaced (tests/tessellator/legacy), which
-// was bit-exact with Microsoft's reference on all golden data. Many seeded random patches of every domain,
-// partitioning, topology and stage, with special values (NaN, +-Inf, +-0, denormals, negatives, > 64, one 16.16
-// step around integers), through one reused Tessellator (buffers grow and shrink between patches).
+// Differential test: the table kernels (issue 11) against the path they replaced, which was bit-exact with
+// Microsoft's reference on all golden data. That path is kept as data: data/differential.hashes holds, for each chunk
+// of differential_cases.h, the hash of its outputs (OutputHash), produced once from the old kernels before they were
+// deleted. Many seeded random patches of every domain, partitioning, topology and stage, with special values (NaN,
+// +-Inf, +-0, denormals, negatives, > 64, one 16.16 step around integers), through one reused Tessellator (buffers
+// grow and shrink between patches).
 #include <catch2/catch.hpp>
 
-#include <cstring>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
 #include <vector>
 
-#include "factor_samples.h"
-#include "legacy/legacy.h"
+#include "differential_cases.h"
 #include "tessellator/simd.h"
 #include "tessellator/tessellator.h"
 
@@ -16,37 +20,41 @@ using namespace fftess;
 
 namespace {
 
-std::string describe(const Patch& p, const Options& o) {
-  std::string s = std::string(toString(p.domain)) + " " + toString(p.partitioning) + " " + toString(p.primitive) +
-                  " " + toString(p.stage);
-  for (float f : p.factors) s += " " + testing::hex(f);
-  if (o.flushDenormals) s += " (flush denormals)";
-  return s;
+// NAME -> HASH of data/differential.hashes ('#' lines are comments).
+std::map<std::string, uint64_t> readHashes() {
+  const std::string path = std::string(FFTESS_TESSELLATOR_TEST_DATA) + "/differential.hashes";
+  std::ifstream in(path);
+  INFO("data file " << path);
+  REQUIRE(in.good());
+  std::map<std::string, uint64_t> hashes;
+  std::string line;
+  for (int n = 1; std::getline(in, line); ++n) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream words(line);
+    std::string name, hex;
+    INFO(path << ":" << n << ": " << line);
+    REQUIRE(bool(words >> name >> hex));
+    REQUIRE(hex.size() == 16);
+    hashes[name] = std::stoull(hex, nullptr, 16);
+  }
+  return hashes;
 }
 
-bool sameOutput(const Tessellator& t, int n, const std::vector<DomainPoint>& pts, const std::vector<int32_t>& idx) {
-  return n == int(pts.size()) && t.points().size() == pts.size() && t.indices().size() == idx.size() &&
-         (pts.empty() || std::memcmp(t.points().data(), pts.data(), pts.size() * sizeof(DomainPoint)) == 0) &&
-         (idx.empty() || std::memcmp(t.indices().data(), idx.data(), idx.size() * sizeof(int32_t)) == 0);
-}
-
-void runDraws(uint32_t seed, int count, bool uniformFactors) {
-  testing::FactorDraw draw(seed);
-  testing::FactorDraw uniform(seed ^ 0x9e3779b9u);
+// Every chunk's outputs hash to the file's value for its name; at most five differing chunks are named.
+void checkChunks(const std::vector<testing::DifferentialChunk>& chunks) {
+  static const std::map<std::string, uint64_t> expected = readHashes();
   Tessellator t;
-  std::vector<DomainPoint> pts;
-  std::vector<int32_t> idx;
   int mismatches = 0;
-  for (int i = 0; i < count; ++i) {
-    Patch p = draw.patch();
-    if (uniformFactors) // the common case: plain factors 0..66 in steps of 1/8 and arbitrary fractions
-      for (float& f : p.factors)
-        f = (uniform.rng.next() & 1) ? float(uniform.rng.next() % 529) / 8.0f : float(uniform.rng.next() % 66000000) / 1e6f;
-    Options o;
-    o.flushDenormals = (draw.rng.next() & 7) == 0;
-    const int n = t.tessellate(p, o);
-    legacy::tessellate(p, o, pts, idx);
-    if (!sameOutput(t, n, pts, idx) && ++mismatches <= 5) FAIL_CHECK("differs from the old path: " << describe(p, o));
+  for (const testing::DifferentialChunk& chunk : chunks) {
+    const auto want = expected.find(chunk.name);
+    INFO("chunk " << chunk.name << " (" << chunk.cases.size() << " patches)");
+    REQUIRE(want != expected.end());
+    testing::OutputHash hash;
+    for (const testing::DifferentialCase& c : chunk.cases) {
+      const int n = t.tessellate(c.patch, c.options);
+      hash.patch(n, t.points(), t.indices());
+    }
+    if (hash.h != want->second && ++mismatches <= 5) FAIL_CHECK("differs from the old path");
   }
   CHECK(mismatches == 0);
 }
@@ -54,38 +62,20 @@ void runDraws(uint32_t seed, int count, bool uniformFactors) {
 } // namespace
 
 TEST_CASE("table kernels equal the old path on random patches with special values", "[tessellator][differential]") {
-  for (uint32_t seed : {1u, 2u, 3u, 4u}) runDraws(seed, 50000, false);
+  checkChunks(testing::specialValueChunks());
 }
 
 TEST_CASE("table kernels equal the old path on random plain factors", "[tessellator][differential]") {
-  for (uint32_t seed : {11u, 12u, 13u, 14u}) runDraws(seed, 50000, true);
+  checkChunks(testing::plainFactorChunks());
 }
 
 TEST_CASE("table kernels equal the old path on every equal-factor quad and tri", "[tessellator][differential]") {
-  Tessellator t;
-  std::vector<DomainPoint> pts;
-  std::vector<int32_t> idx;
-  int mismatches = 0;
-  for (Domain d : {Domain::Quad, Domain::Tri, Domain::Isoline})
-    for (int part = 0; part < 4; ++part)
-      for (int prim = 0; prim < 4; ++prim)
-        for (int k = 0; k <= 66 * 16; ++k) {
-          Patch p;
-          p.domain = d;
-          p.partitioning = Partitioning(part);
-          p.primitive = OutputPrimitive(prim);
-          if (d == Domain::Isoline && prim > 1) continue;
-          for (float& f : p.factors) f = float(k) / 16.0f;
-          const int n = t.tessellate(p);
-          legacy::tessellate(p, {}, pts, idx);
-          if (!sameOutput(t, n, pts, idx) && ++mismatches <= 5) FAIL_CHECK("differs: " << describe(p, {}));
-        }
-  CHECK(mismatches == 0);
+  checkChunks(testing::equalFactorChunks());
 }
 
-TEST_CASE("portable loops equal the old path too (the AVX2 kernels are chosen at run time)", "[tessellator][differential]") {
+TEST_CASE("portable loops equal the old path too (the AVX2 kernels are chosen at run time)",
+          "[tessellator][differential]") {
   fftess::simd::forcePortable(true);
-  runDraws(5u, 50000, false);
-  runDraws(15u, 50000, true);
+  checkChunks(testing::portableChunks());
   fftess::simd::forcePortable(false);
 }

@@ -2,12 +2,14 @@
 // so the draws are the same with every standard library).
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <string>
 #include <vector>
 
+#include "base/bits.h"
 #include "tessellator/names.h"
 #include "tessellator/tessellator.h"
 #include "tessellator/trace.h"
@@ -16,29 +18,19 @@
 namespace fftess {
 namespace testing {
 
-inline uint32_t bits(float f) {
-  uint32_t u;
-  std::memcpy(&u, &f, 4);
-  return u;
-}
-inline float fromBits(uint32_t u) {
-  float f;
-  std::memcpy(&f, &u, 4);
-  return f;
-}
 inline std::string hex(float f) {
   char buf[16];
-  std::snprintf(buf, sizeof buf, "0x%08x", bits(f));
+  std::snprintf(buf, sizeof buf, "0x%08x", bitsOf(f));
   return buf;
 }
 
 // Special values: NaN (both signs), +-Inf, +-0, denormals, negatives, 1, one ulp and one 16.16 step around
 // integers and even integers, 63.99998, 64, 64.00001, above 64.
 inline std::vector<float> specialFactors() {
-  std::vector<float> v = {fromBits(0x7fc00000), fromBits(0xffc00000), fromBits(0x7f800001), fromBits(0x7f800000),
-                          fromBits(0xff800000), 0.0f, -0.0f, fromBits(0x00000001), fromBits(0x007fffff),
-                          fromBits(0x80000001), -1.0f, -64.0f, 0.5f, 1.0f, 63.99998f, 64.0f, 64.00001f, 65.0f,
-                          1e30f, fromBits(0x7f7fffff)};
+  std::vector<float> v = {floatOf(0x7fc00000), floatOf(0xffc00000), floatOf(0x7f800001), floatOf(0x7f800000),
+                          floatOf(0xff800000), 0.0f, -0.0f, floatOf(0x00000001), floatOf(0x007fffff),
+                          floatOf(0x80000001), -1.0f, -64.0f, 0.5f, 1.0f, 63.99998f, 64.0f, 64.00001f, 65.0f,
+                          1e30f, floatOf(0x7f7fffff)};
   for (int k : {1, 2, 3, 4, 5, 7, 8, 12, 16, 31, 32, 33, 62, 63, 64}) {
     const float f = float(k);
     v.push_back(f);

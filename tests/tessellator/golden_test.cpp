@@ -131,24 +131,31 @@ void compareHashes(const std::string& file) {
 
 } // namespace
 
-TEST_CASE("golden full outputs: quad hw", "[golden]") { compareFull("quad-hw"); }
-TEST_CASE("golden full outputs: quad hlsl", "[golden]") { compareFull("quad-hlsl"); }
-TEST_CASE("golden full outputs: tri hw", "[golden]") { compareFull("tri-hw"); }
-TEST_CASE("golden full outputs: tri hlsl", "[golden]") { compareFull("tri-hlsl"); }
-TEST_CASE("golden full outputs: isoline hw", "[golden]") { compareFull("isoline-hw"); }
-TEST_CASE("golden full outputs: isoline hlsl", "[golden]") { compareFull("isoline-hlsl"); }
+TEST_CASE("golden full outputs: quad hw", "[tessellator][golden]") { compareFull("quad-hw"); }
+TEST_CASE("golden full outputs: quad hlsl", "[tessellator][golden]") { compareFull("quad-hlsl"); }
+TEST_CASE("golden full outputs: tri hw", "[tessellator][golden]") { compareFull("tri-hw"); }
+TEST_CASE("golden full outputs: tri hlsl", "[tessellator][golden]") { compareFull("tri-hlsl"); }
+TEST_CASE("golden full outputs: isoline hw", "[tessellator][golden]") { compareFull("isoline-hw"); }
+TEST_CASE("golden full outputs: isoline hlsl", "[tessellator][golden]") { compareFull("isoline-hlsl"); }
 
-TEST_CASE("golden hash-file patches, invariants: quad hw", "[golden][slow]") { checkHashFileInvariants("quad-hw.hashes"); }
-TEST_CASE("golden hashes: quad hw", "[golden][hashes]") { compareHashes("quad-hw.hashes"); }
-TEST_CASE("golden hash-file patches, invariants: quad hlsl", "[golden][slow]") { checkHashFileInvariants("quad-hlsl.hashes"); }
-TEST_CASE("golden hashes: quad hlsl", "[golden][hashes]") { compareHashes("quad-hlsl.hashes"); }
-TEST_CASE("golden hash-file patches, invariants: quad sweep", "[golden][slow]") { checkHashFileInvariants("quad-sweep.hashes"); }
-TEST_CASE("golden hashes: quad sweep", "[golden][hashes]") { compareHashes("quad-sweep.hashes"); }
-TEST_CASE("golden hash-file patches, invariants: tri hw", "[golden][slow]") { checkHashFileInvariants("tri-hw.hashes"); }
-TEST_CASE("golden hashes: tri hw", "[golden][hashes]") { compareHashes("tri-hw.hashes"); }
-TEST_CASE("golden hash-file patches, invariants: tri hlsl", "[golden][slow]") { checkHashFileInvariants("tri-hlsl.hashes"); }
-TEST_CASE("golden hashes: tri hlsl", "[golden][hashes]") { compareHashes("tri-hlsl.hashes"); }
-TEST_CASE("golden hash-file patches, invariants: isoline hw", "[golden][slow]") { checkHashFileInvariants("isoline-hw.hashes"); }
-TEST_CASE("golden hashes: isoline hw", "[golden][hashes]") { compareHashes("isoline-hw.hashes"); }
-TEST_CASE("golden hash-file patches, invariants: isoline hlsl", "[golden][slow]") { checkHashFileInvariants("isoline-hlsl.hashes"); }
-TEST_CASE("golden hashes: isoline hlsl", "[golden][hashes]") { compareHashes("isoline-hlsl.hashes"); }
+TEST_CASE("golden hash-file patches, invariants: quad hw",
+          "[tessellator][golden][slow]") { checkHashFileInvariants("quad-hw.hashes"); }
+TEST_CASE("golden hashes: quad hw", "[tessellator][golden][hashes]") { compareHashes("quad-hw.hashes"); }
+TEST_CASE("golden hash-file patches, invariants: quad hlsl",
+          "[tessellator][golden][slow]") { checkHashFileInvariants("quad-hlsl.hashes"); }
+TEST_CASE("golden hashes: quad hlsl", "[tessellator][golden][hashes]") { compareHashes("quad-hlsl.hashes"); }
+TEST_CASE("golden hash-file patches, invariants: quad sweep",
+          "[tessellator][golden][slow]") { checkHashFileInvariants("quad-sweep.hashes"); }
+TEST_CASE("golden hashes: quad sweep", "[tessellator][golden][hashes]") { compareHashes("quad-sweep.hashes"); }
+TEST_CASE("golden hash-file patches, invariants: tri hw",
+          "[tessellator][golden][slow]") { checkHashFileInvariants("tri-hw.hashes"); }
+TEST_CASE("golden hashes: tri hw", "[tessellator][golden][hashes]") { compareHashes("tri-hw.hashes"); }
+TEST_CASE("golden hash-file patches, invariants: tri hlsl",
+          "[tessellator][golden][slow]") { checkHashFileInvariants("tri-hlsl.hashes"); }
+TEST_CASE("golden hashes: tri hlsl", "[tessellator][golden][hashes]") { compareHashes("tri-hlsl.hashes"); }
+TEST_CASE("golden hash-file patches, invariants: isoline hw",
+          "[tessellator][golden][slow]") { checkHashFileInvariants("isoline-hw.hashes"); }
+TEST_CASE("golden hashes: isoline hw", "[tessellator][golden][hashes]") { compareHashes("isoline-hw.hashes"); }
+TEST_CASE("golden hash-file patches, invariants: isoline hlsl",
+          "[tessellator][golden][slow]") { checkHashFileInvariants("isoline-hlsl.hashes"); }
+TEST_CASE("golden hashes: isoline hlsl", "[tessellator][golden][hashes]") { compareHashes("isoline-hlsl.hashes"); }

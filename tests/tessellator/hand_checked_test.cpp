@@ -25,7 +25,7 @@ Patch make(Domain d, Partitioning part, OutputPrimitive prim, std::initializer_l
 
 } // namespace
 
-TEST_CASE("quad integer, all factors 2", "[hand]") {
+TEST_CASE("quad integer, all factors 2", "[tessellator][hand]") {
   Tessellator t;
   t.tessellate(make(Domain::Quad, Partitioning::Integer, OutputPrimitive::TriangleCw, {2, 2, 2, 2, 2, 2}));
   // Outer ring clockwise from (0,1): Ueq0 down, Veq0 right, Ueq1 up, Veq1 left; then the centre.
@@ -35,7 +35,7 @@ TEST_CASE("quad integer, all factors 2", "[hand]") {
   CHECK(t.indices() == std::vector<int32_t>{0, 1, 8, 1, 2, 8, 2, 3, 8, 3, 4, 8, 4, 5, 8, 5, 6, 8, 6, 7, 8, 7, 0, 8});
 }
 
-TEST_CASE("quad integer, outer 3 3 1 1, inside 1 1: odd edges, degenerate inside", "[hand]") {
+TEST_CASE("quad integer, outer 3 3 1 1, inside 1 1: odd edges, degenerate inside", "[tessellator][hand]") {
   Tessellator t;
   t.tessellate(make(Domain::Quad, Partitioning::Integer, OutputPrimitive::Point, {3, 3, 1, 1, 1, 1}));
   const float a = float(21845) / 65536.0f, b = float(65536 - 21845) / 65536.0f; // r(3) = 21845
@@ -44,7 +44,7 @@ TEST_CASE("quad integer, outer 3 3 1 1, inside 1 1: odd edges, degenerate inside
   CHECK(t.indices() == std::vector<int32_t>{0, 1, 2, 3, 4, 5, 6, 7, 8});
 }
 
-TEST_CASE("tri integer, all factors 1: the minimum triangle", "[hand]") {
+TEST_CASE("tri integer, all factors 1: the minimum triangle", "[tessellator][hand]") {
   Tessellator t;
   t.tessellate(make(Domain::Tri, Partitioning::Integer, OutputPrimitive::TriangleCw, {1, 1, 1, 1}));
   CHECK(flat(t) == std::vector<float>{0, 1, 0, 0, 1, 0}); // V, W, U
@@ -53,7 +53,7 @@ TEST_CASE("tri integer, all factors 1: the minimum triangle", "[hand]") {
   CHECK(t.indices() == std::vector<int32_t>{0, 2, 1});
 }
 
-TEST_CASE("isoline: density 2, detail 2", "[hand]") {
+TEST_CASE("isoline: density 2, detail 2", "[tessellator][hand]") {
   Tessellator t;
   t.tessellate(make(Domain::Isoline, Partitioning::Integer, OutputPrimitive::Line, {2, 2}));
   // Two lines at v = 0 and v = 0.5 (the line at v = 1 is not drawn), three points each.
@@ -63,7 +63,7 @@ TEST_CASE("isoline: density 2, detail 2", "[hand]") {
   CHECK(t.indices() == std::vector<int32_t>{0, 1, 2, 3, 4, 5});
 }
 
-TEST_CASE("fractional_even 3: points grow from the middle", "[hand]") {
+TEST_CASE("fractional_even 3: points grow from the middle", "[tessellator][hand]") {
   // Half factor 1.5: floor placement 2 segments (0, 0.5), ceil placement 4 segments (0, 0.25, 0.5), blended with
   // the fraction 0.5: point 1 = 0.5*0.5 + 0.5*0.25 = 0.375; the new points grow out of the middle.
   const EdgePoints e = edgePoints(3.0f, Partitioning::FractionalEven);

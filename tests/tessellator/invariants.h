@@ -53,8 +53,8 @@ inline void checkOuterRing(const Patch& p, const Tessellator& t, const Options& 
       }
       const float expected = ep.param[forward ? k : last - k];
       INFO("point " << idx << " (" << hex(q.u) << ", " << hex(q.v) << ") k " << k);
-      REQUIRE(bits(along) == bits(expected));
-      REQUIRE(bits(across) == bits(expectAcross));
+      REQUIRE(bitsOf(along) == bitsOf(expected));
+      REQUIRE(bitsOf(across) == bitsOf(expectAcross));
     }
     start += last;
   }
@@ -86,8 +86,8 @@ inline bool checkInvariants(const Patch& p, const Options& o, const Tessellator&
       REQUIRE(q.v <= 1.0f);
       REQUIRE(1.0f - (1.0f - q.u) == q.u);
       REQUIRE(1.0f - (1.0f - q.v) == q.v);
-      REQUIRE(bits(q.u) != 0x80000000u);
-      REQUIRE(bits(q.v) != 0x80000000u);
+      REQUIRE(bitsOf(q.u) != 0x80000000u);
+      REQUIRE(bitsOf(q.v) != 0x80000000u);
       if (p.domain == Domain::Tri) REQUIRE(q.u + q.v <= 1.0f);
     }
     // Every index in range.
@@ -107,7 +107,7 @@ inline bool checkInvariants(const Patch& p, const Options& o, const Tessellator&
       tw.tessellate(other, o);
       REQUIRE(tw.points().size() == pts.size());
       REQUIRE(std::equal(pts.begin(), pts.end(), tw.points().begin(), [](DomainPoint a, DomainPoint b) {
-        return bits(a.u) == bits(b.u) && bits(a.v) == bits(b.v);
+        return bitsOf(a.u) == bitsOf(b.u) && bitsOf(a.v) == bitsOf(b.v);
       }));
       REQUIRE(tw.indices().size() == idx.size());
       for (size_t k = 0; k < idx.size(); k += 3) {

@@ -10,7 +10,7 @@
 using namespace fftess;
 using namespace fftess::testing;
 
-TEST_CASE("invariants on random patches with special values", "[invariants][slow]") {
+TEST_CASE("invariants on random patches with special values", "[tessellator][invariants][slow]") {
   FactorDraw draw(20261121u);
   Tessellator t, tw;
   int tessellated = 0, culled = 0;
@@ -29,7 +29,7 @@ TEST_CASE("invariants on random patches with special values", "[invariants][slow
   CHECK(culled > 1000);
 }
 
-TEST_CASE("edge query: symmetric, increasing, the trace gives the same points", "[invariants][edge]") {
+TEST_CASE("edge query: symmetric, increasing, the trace gives the same points", "[tessellator][invariants][edge]") {
   for (Partitioning part :
        {Partitioning::Integer, Partitioning::Pow2, Partitioning::FractionalOdd, Partitioning::FractionalEven}) {
     for (float f : specialFactors()) {
@@ -48,7 +48,7 @@ TEST_CASE("edge query: symmetric, increasing, the trace gives the same points", 
           // Symmetry: t -> 1 - t maps the point set onto itself, in exact 16.16.
           REQUIRE(e.fixed[k] + e.fixed[e.count - 1 - k] == 0x10000u);
           if (k > 0) REQUIRE(e.fixed[k] >= e.fixed[k - 1]); // duplicates are allowed (reference behaviour)
-          REQUIRE(bits(e.param[k]) == bits(float(e.fixed[k]) / 65536.0f));
+          REQUIRE(bitsOf(e.param[k]) == bitsOf(float(e.fixed[k]) / 65536.0f));
         }
         // The trace reproduces the same points.
         const EdgeTrace tr = traceEdge(f, part, st);
@@ -61,8 +61,9 @@ TEST_CASE("edge query: symmetric, increasing, the trace gives the same points", 
 
 // The claim the random invariants rest on, tested head-on: the Ueq0 edge of a full tessellation is the edge query's,
 // whatever the other five factors are (small, large, fractional, culling-free extremes).
-TEST_CASE("an outer edge depends only on its own factor, not on its neighbours or the inside", "[invariants][edge]") {
-  const float others[] = {1.0f, 2.0f, 3.5f, 7.25f, 33.3f, 64.0f, fromBits(0x00000001), fromBits(0x7f800000)};
+TEST_CASE("an outer edge depends only on its own factor, not on its neighbours or the inside",
+          "[tessellator][invariants][edge]") {
+  const float others[] = {1.0f, 2.0f, 3.5f, 7.25f, 33.3f, 64.0f, floatOf(0x00000001), floatOf(0x7f800000)};
   Tessellator t, tw;
   int compared = 0;
   for (Partitioning part :

@@ -7,7 +7,7 @@
 
 using namespace fftess;
 
-TEST_CASE("names: every enum value round-trips through toString and parse", "[names]") {
+TEST_CASE("names: every enum value round-trips through toString and parse", "[tessellator][names]") {
   for (Domain d : {Domain::Quad, Domain::Tri, Domain::Isoline}) {
     Domain back = Domain::Quad == d ? Domain::Tri : Domain::Quad;
     REQUIRE(parseDomain(toString(d), back));
@@ -42,7 +42,7 @@ TEST_CASE("names: every enum value round-trips through toString and parse", "[na
   CHECK(std::string(toString(hw)) == "hw");
 }
 
-TEST_CASE("names: the lists are the tables, in help order, and nothing else parses", "[names]") {
+TEST_CASE("names: the lists are the tables, in help order, and nothing else parses", "[tessellator][names]") {
   CHECK(joinNames(domainNames()) == "quad|tri|isoline");
   CHECK(joinNames(partitioningNames()) == "integer|pow2|fractional_even|fractional_odd");
   CHECK(joinNames(outputPrimitiveNames()) == "point|line|triangle_cw|triangle_ccw");

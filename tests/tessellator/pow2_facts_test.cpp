@@ -12,7 +12,7 @@
 using namespace fftess;
 using namespace fftess::testing;
 
-TEST_CASE("12 beside 2x6 cracks; 8 beside 2x4 meets (integer partitioning)", "[pow2]") {
+TEST_CASE("12 beside 2x6 cracks, 8 beside 2x4 meets (integer partitioning)", "[tessellator][pow2]") {
   const EdgePoints big = edgePoints(12.0f, Partitioning::Integer), small = edgePoints(6.0f, Partitioning::Integer);
   // r(12) = round(65536/12) = 5461; points i*5461 up to the middle, the second half mirrored from 1.
   CHECK(std::vector<uint32_t>(big.fixed, big.fixed + big.count) ==
@@ -30,7 +30,7 @@ TEST_CASE("12 beside 2x6 cracks; 8 beside 2x4 meets (integer partitioning)", "[p
   CHECK(ok.worstGap == 0);
 }
 
-TEST_CASE("which B beside 2x(B/2) meet: integer and fractional_even", "[pow2]") {
+TEST_CASE("which B beside 2x(B/2) meet: integer and fractional_even", "[tessellator][pow2]") {
   std::vector<int> integerMatches, evenMatches;
   int64_t worst = 0;
   std::vector<int> worstAt;
@@ -47,7 +47,7 @@ TEST_CASE("which B beside 2x(B/2) meet: integer and fractional_even", "[pow2]") 
   CHECK(worstAt == std::vector<int>{44, 54});
 }
 
-TEST_CASE("S = 7: r(7) = 2 r(14) but 14 r(14) = 65534", "[pow2]") {
+TEST_CASE("S = 7: r(7) = 2 r(14) but 14 r(14) = 65534", "[tessellator][pow2]") {
   const EdgeTrace big = traceEdge(14.0f, Partitioning::Integer), small = traceEdge(7.0f, Partitioning::Integer);
   CHECK(big.reciprocalCeil == 4681u);
   CHECK(small.reciprocalCeil == 9362u);
@@ -55,8 +55,8 @@ TEST_CASE("S = 7: r(7) = 2 r(14) but 14 r(14) = 65534", "[pow2]") {
   CHECK_FALSE(compareHalfEdges(14.0f, 7.0f, Partitioning::Integer).match);
 }
 
-TEST_CASE("causes: 12 beside 2x6 is the reciprocal table (and the special 0.5); 7 beside 2x3.5 the point count",
-          "[pow2]") {
+TEST_CASE("causes: 12 beside 2x6 is the reciprocal table (and the special 0.5), 7 beside 2x3.5 the point count",
+          "[tessellator][pow2]") {
   const HalfEdgeComparison c = compareHalfEdges(12.0f, 6.0f, Partitioning::Integer);
   REQUIRE(c.paired);
   int attributed = 0;
@@ -85,7 +85,7 @@ TEST_CASE("causes: 12 beside 2x6 is the reciprocal table (and the special 0.5); 
   CHECK(alone > 0);
 }
 
-TEST_CASE("point budgets reproduce every traced point exactly", "[pow2]") {
+TEST_CASE("point budgets reproduce every traced point exactly", "[tessellator][pow2]") {
   int points = 0;
   for (Partitioning part :
        {Partitioning::Integer, Partitioning::Pow2, Partitioning::FractionalOdd, Partitioning::FractionalEven})
@@ -100,7 +100,7 @@ TEST_CASE("point budgets reproduce every traced point exactly", "[pow2]") {
   CHECK(points > 1000);
 }
 
-TEST_CASE("shared-edge ticks of a 2x jump agree with compareHalfEdges", "[pow2]") {
+TEST_CASE("shared-edge ticks of a 2x jump agree with compareHalfEdges", "[tessellator][pow2]") {
   for (int B = 2; B <= 64; B += 2) {
     const HalfEdgeComparison c = compareHalfEdges(float(B), float(B / 2), Partitioning::Integer);
     // The big edge's first half against the first small edge, as a crack report's inset sees them.

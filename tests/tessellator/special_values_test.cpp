@@ -30,7 +30,7 @@ Patch uniformQuad(Partitioning part, float f, OutputPrimitive prim = OutputPrimi
 
 int distinctPoints(const Tessellator& t) {
   std::set<std::pair<uint32_t, uint32_t>> s;
-  for (const DomainPoint& q : t.points()) s.insert({bits(q.u), bits(q.v)});
+  for (const DomainPoint& q : t.points()) s.insert({bitsOf(q.u), bitsOf(q.v)});
   return int(s.size());
 }
 
@@ -48,7 +48,7 @@ int zeroAreaTriangles(const Tessellator& t) {
 
 } // namespace
 
-TEST_CASE("special edge factors: culling, clamping, rounding", "[special]") {
+TEST_CASE("special edge factors: culling, clamping, rounding", "[tessellator][special]") {
   const Partitioning I = Partitioning::Integer, E = Partitioning::FractionalEven, O = Partitioning::FractionalOdd,
                      P = Partitioning::Pow2;
   const EdgeCase table[] = {
@@ -68,32 +68,33 @@ TEST_CASE("special edge factors: culling, clamping, rounding", "[special]") {
       {0x42800001, I, false, 64, 65}, // 64.000008 clamps to 64
       {0x3f800001, I, false, 2, 3},  // integer ceil in float: 1 + 2^-23 -> 2 segments
       {0x3f800001, P, false, 2, 3},  // pow2 in the hardware stage is integer
-      {0x40000002, E, false, fromBits(0x40000002), 3}, // fractional: 2 + 2^-22 is 2 in 16.16
+      {0x40000002, E, false, floatOf(0x40000002), 3}, // fractional: 2 + 2^-22 is 2 in 16.16
       {0x40400000, P, false, 3, 4},  // hardware pow2 does not round to a power of two
   };
   for (const EdgeCase& c : table) {
-    const EdgePoints e = edgePoints(fromBits(c.input), c.partitioning);
-    INFO("input " << hex(fromBits(c.input)) << " " << toString(c.partitioning));
+    const EdgePoints e = edgePoints(floatOf(c.input), c.partitioning);
+    INFO("input " << hex(floatOf(c.input)) << " " << toString(c.partitioning));
     CHECK(e.culled == c.culled);
     if (c.culled) continue;
     CHECK(hex(e.processedFactor) == hex(c.processed));
     CHECK(e.count == c.points);
   }
-  CHECK(edgePoints(fromBits(0x40000002), E).fixedFactor == 0x20000u);
+  CHECK(edgePoints(floatOf(0x40000002), E).fixedFactor == 0x20000u);
 }
 
-TEST_CASE("denormal outer factors: reference keeps the patch, flushDenormals culls it (llvmpipe)", "[special]") {
+TEST_CASE("denormal outer factors: reference keeps the patch, flushDenormals culls it (llvmpipe)",
+          "[tessellator][special]") {
   Tessellator t;
   Patch p = uniformQuad(Partitioning::Integer, 4.0f);
-  p.factors[Veq0] = fromBits(0x00000001);
+  p.factors[Veq0] = floatOf(0x00000001);
   Options flush;
   flush.flushDenormals = true;
   CHECK(t.tessellate(p) > 0);
   CHECK(t.tessellate(p, flush) == 0);
-  CHECK(edgePoints(fromBits(0x00000001), Partitioning::Integer, {}, flush).culled);
+  CHECK(edgePoints(floatOf(0x00000001), Partitioning::Integer, {}, flush).culled);
 }
 
-TEST_CASE("all factors 1", "[special]") {
+TEST_CASE("all factors 1", "[tessellator][special]") {
   Tessellator t;
   // integer and fractional_odd: the minimum quad, 4 points and 2 triangles
   for (Partitioning part : {Partitioning::Integer, Partitioning::Pow2, Partitioning::FractionalOdd}) {
@@ -107,7 +108,7 @@ TEST_CASE("all factors 1", "[special]") {
   CHECK(t.indices().size() == 24);
 }
 
-TEST_CASE("duplicates and zero-area triangles are real output", "[special]") {
+TEST_CASE("duplicates and zero-area triangles are real output", "[tessellator][special]") {
   Tessellator t;
   // fractional_even 2 + 2^-16: 25 points, 16 of them duplicates, 24 zero-area triangles
   t.tessellate(uniformQuad(Partitioning::FractionalEven, 2.0f + 1.0f / 65536.0f));
@@ -125,7 +126,7 @@ TEST_CASE("duplicates and zero-area triangles are real output", "[special]") {
   CHECK(distinctPoints(t) < int(t.points().size()));
 }
 
-TEST_CASE("HLSL stage: pow2 rounding by exponent bump, rounded and unrounded factors", "[special][hlsl]") {
+TEST_CASE("HLSL stage: pow2 rounding by exponent bump, rounded and unrounded factors", "[tessellator][special][hlsl]") {
   Stage max;
   REQUIRE(parseStage("hlsl-max", max));
   const float in[6] = {24.0f, 1.0000153f, 28.0f, 0.383f, 1.0f, 1.0f};
@@ -149,13 +150,13 @@ TEST_CASE("HLSL stage: pow2 rounding by exponent bump, rounded and unrounded fac
   std::copy(in, in + 6, p.factors);
   CHECK(t.tessellate(p) == 98);
   // culled patch: rounded all zero, unrounded = the raw edges
-  const float culled[6] = {fromBits(0x7fc00000), 3, 3, 3, 0.5f, 0.5f};
+  const float culled[6] = {floatOf(0x7fc00000), 3, 3, 3, 0.5f, 0.5f};
   const HlslFactors hc = processHlslFactors(Domain::Quad, Partitioning::Integer, max, culled);
-  for (float f : hc.rounded) CHECK(bits(f) == 0u);
-  CHECK(bits(hc.unrounded[Ueq0]) == 0x7fc00000u);
+  for (float f : hc.rounded) CHECK(bitsOf(f) == 0u);
+  CHECK(bitsOf(hc.unrounded[Ueq0]) == 0x7fc00000u);
 }
 
-TEST_CASE("float <-> 16.16 conversion around integers", "[special]") {
+TEST_CASE("float <-> 16.16 conversion around integers", "[tessellator][special]") {
   // One 16.16 step above 2 is a new factor; half a step (2 + 2^-17) rounds to even (2); 3/4 of a step rounds up.
   CHECK(edgePoints(2.0f + 1.0f / 65536.0f, Partitioning::FractionalEven).fixedFactor == 0x20001u);
   CHECK(edgePoints(2.0f + 1.0f / 131072.0f, Partitioning::FractionalEven).fixedFactor == 0x20000u);

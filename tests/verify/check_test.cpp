@@ -2,6 +2,7 @@
 // whole-mesh check agrees with the edge check on every test scene. Both CGAL kernels throughout.
 #include "verify_test_util.h"
 
+#include "base/bits.h"
 #include "verify/internal.h"
 
 #include <cmath>
@@ -10,20 +11,15 @@
 using namespace fftess::verify;
 using namespace fftess::verify::test;
 using fftess::Partitioning;
+using fftess::bitsOf;
 
 namespace {
 
 const Kernel kKernels[] = {Kernel::Epick, Kernel::Epeck};
 
-uint32_t bitsOf(float f) {
-  uint32_t b;
-  std::memcpy(&b, &f, sizeof b);
-  return b;
-}
-
 } // namespace
 
-TEST_CASE("uniform_grid_never_cracks: every scheme and partitioning", "[verify][check]") {
+TEST_CASE("check: a uniform grid never cracks, in every scheme and partitioning", "[verify][check]") {
   const char* schemes[] = {"constant", "screen_sphere", "distance_pow2", "bonaventura", "clip_diameter"};
   const char* parts[] = {"integer", "pow2", "fractional_odd", "fractional_even"};
   for (const char* scheme : schemes)
@@ -50,7 +46,7 @@ TEST_CASE("uniform_grid_never_cracks: every scheme and partitioning", "[verify][
     }
 }
 
-TEST_CASE("broken_lod_patch_center_is_caught", "[verify][check]") {
+TEST_CASE("check: the broken LOD (factor from the patch centre) is caught", "[verify][check]") {
   for (Kernel k : kKernels) {
     CheckOptions o;
     o.kernel = k;
@@ -81,7 +77,7 @@ TEST_CASE("broken_lod_patch_center_is_caught", "[verify][check]") {
 // ~ 2.92e-9. In float the determinant 5 * 0.2f - 1 * 1 rounds to 0 (5 * 0.2f = 1.0000000149 rounds to 1.0f) and
 // the vertex appears to lie on the segment: a T-junction. The exact kernels are right: the two sides do not share
 // the point, and displacing them differently can only widen the gap.
-TEST_CASE("exact_and_float_checkers_disagree_on_a_sub_ulp_offset", "[verify][check]") {
+TEST_CASE("check: the exact and float checkers disagree on a sub-ulp offset", "[verify][check]") {
   const float fifth = 0.2f;
   REQUIRE(bitsOf(fifth) == 0x3E4CCCCDu);
   const glm::vec3 a[] = {{0, 0, 0}, {5, 1, 0}};
@@ -99,7 +95,7 @@ TEST_CASE("exact_and_float_checkers_disagree_on_a_sub_ulp_offset", "[verify][che
   CHECK(naive.classification == Classification::TJunction);
 }
 
-TEST_CASE("t_junction_on_flat_terrain_crack_when_displaced", "[verify][check]") {
+TEST_CASE("check: a T-junction on flat terrain, a crack when displaced", "[verify][check]") {
   // Integer clamp at a 12 | 2x6 jump: flat terrain keeps every vertex on the big edge's line (T-junctions);
   // displacement lifts the off-line vertices (cracks). Same pairs, same first mismatch. The LOD sees flat corners
   // in both runs (lod.displaced_corners = false, frustum culling off), so both choose the same factors and only
@@ -142,7 +138,7 @@ TEST_CASE("t_junction_on_flat_terrain_crack_when_displaced", "[verify][check]") 
   }
 }
 
-TEST_CASE("whole_mesh_check_agrees_with_edge_check", "[verify][check][mesh][slow]") {
+TEST_CASE("check: the whole-mesh check agrees with the edge check", "[verify][check][mesh][slow]") {
   struct Case {
     const char* file;
     std::vector<std::string> overrides;
@@ -179,7 +175,7 @@ TEST_CASE("whole_mesh_check_agrees_with_edge_check", "[verify][check][mesh][slow
 // with the clamp off) and skips the culled one; the whole-mesh check must do the same per half (it used to ignore
 // the whole big edge, and `fftess check --mesh` exited 3). Random cameras 6 and 7 of seed 1 on rings_small.toml with
 // the clamp off have such cracks.
-TEST_CASE("whole_mesh_check_agrees_beside_a_half_culled_edge", "[verify][check][mesh]") {
+TEST_CASE("check: the whole-mesh check agrees beside a half-culled edge", "[verify][check][mesh]") {
   const Scene s = loadExample("rings_small.toml", {"lod.adjacency_clamp=none"});
   const Terrain t = prepared(s);
   const detail::TerrainData& d = t.data();
@@ -216,7 +212,7 @@ TEST_CASE("whole_mesh_check_agrees_beside_a_half_culled_edge", "[verify][check][
   CHECK(halfCulled > 0); // the case is there
 }
 
-TEST_CASE("epick_and_epeck_agree_on_every_verdict", "[verify][check]") {
+TEST_CASE("check: Epick and Epeck agree on every verdict", "[verify][check]") {
   Scene s = loadExample("rings_small.toml", {"lod.adjacency_clamp=none"});
   CheckOptions a, b;
   a.kernel = Kernel::Epick;
@@ -236,7 +232,7 @@ TEST_CASE("epick_and_epeck_agree_on_every_verdict", "[verify][check]") {
 // and 0.27f (0x3E8A3D71). At u = 1, "lerp" computes -0.23f + 1*(0.27f - -0.23f): the difference 0.5 rounds, and
 // the sum lands one ulp below the corner, 0x3E8A3D70; "blend" computes -0.23f*0 + 0.27f*1 = the corner exactly.
 // That ulp is why two patches can disagree at a shared corner although they read the same vertex buffer.
-TEST_CASE("domain_formula_order_decides_corner_bits", "[verify][domain]") {
+TEST_CASE("domain: the formula's order decides the corner bits", "[verify][domain]") {
   const char* base = R"([layout]
 kind = "grid"
 patches_x = 1

@@ -1,6 +1,7 @@
 // Seed effects selectable in a scene and checked: geomorphing (lod.scheme = "geomorph"), Bonaventura's mip-level
 // coherence (displacement.mip), Luna's R16_FLOAT heights (displacement.format) and per-patch height bounds
 // (lod.height_bounds), the inside-factor rule (lod.inside); and none of them costs anything unless a scene asks.
+#include "base/bits.h"
 #include "verify/internal.h"
 #include "verify_test_util.h"
 
@@ -14,16 +15,6 @@ using namespace fftess::verify::test;
 
 namespace {
 
-uint32_t bitsOf(float f) {
-  uint32_t u;
-  std::memcpy(&u, &f, sizeof u);
-  return u;
-}
-float fromBits(uint32_t u) {
-  float f;
-  std::memcpy(&f, &u, sizeof f);
-  return f;
-}
 std::string hex(uint32_t v, int digits) {
   char buf[16];
   std::snprintf(buf, sizeof buf, "0x%0*x", digits, v);
@@ -74,7 +65,7 @@ TEST_CASE("effects: float -> half -> float special values, printed in hex", "[ve
       {0x3f7ff000u, 0x3c00}, // 1 - 2^-12: tie between 1 - 2^-11 and 1 -> even (1, the carry into the exponent)
   };
   for (const Row& r : rows) {
-    const uint16_t h = detail::floatToHalf(fromBits(r.in));
+    const uint16_t h = detail::floatToHalf(floatOf(r.in));
     INFO("float " << hex(r.in, 8) << " -> half " << hex(h, 4) << ", expected " << hex(r.half, 4));
     CHECK(h == r.half);
   }

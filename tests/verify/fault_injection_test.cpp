@@ -77,26 +77,6 @@ float perturbed(const Fault& f, float x) {
   return std::nextafter(x, f.direction < 0 ? -INFINITY : INFINITY);
 }
 
-// The harness's own visibility test of a patch (independent of verify/visibility.cpp): a grid of n x n domain
-// points (edges included), each projected in double with lod's camera; strictly inside the clip volume counts.
-bool inView(const Camera& c, const glm::vec3& p) {
-  const lod::Camera cam =
-      lod::makeCamera(c.eye, c.target, c.up, c.fovY * (3.14159265358979323846f / 180.0f), c.nearZ, c.farZ,
-                      glm::vec2(static_cast<float>(c.width), static_cast<float>(c.height)));
-  const glm::dmat4 m = glm::dmat4(cam.projection) * glm::dmat4(cam.view);
-  const glm::dvec4 q = m * glm::dvec4(p.x, p.y, p.z, 1.0);
-  return q.w > 0 && std::fabs(q.x) < q.w && std::fabs(q.y) < q.w && q.z > -q.w && q.z < q.w;
-}
-
-bool seenOnGrid(const Terrain& t, const Camera& c, int patch, int n = 17) {
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i)
-      if (inView(c, domainPosition(t, patch, static_cast<float>(i) / static_cast<float>(n - 1),
-                                   static_cast<float>(j) / static_cast<float>(n - 1))))
-        return true;
-  return false;
-}
-
 struct Harness {
   const char* name;
   Scene scene;
@@ -244,7 +224,7 @@ struct Harness {
                                 (180.0 / 3.14159265358979323846));
     INFO(name << ": " << kindName(f.kind) << " patch " << f.patch << " at u " << u << " v " << v << " fov_y "
               << c.fovY);
-    const bool between = inView(c, p) && !seenOnGrid(terrain, c, f.patch, 33);
+    const bool between = inView(lodCameraOf(c), p) && !seenOnGrid(terrain, c, f.patch, 33);
     CHECK(between); // the construction: visible, and only between the old grid's points
     CheckOptions o;
     o.maxFindings = 1u << 20;
@@ -256,7 +236,8 @@ struct Harness {
     CHECK(r.stats.undecided == 0);
     CHECK(r.stats.holes == 1);
     const bool hole = r.holes.size() == 1 && r.holes[0].patch.index == f.patch &&
-                      r.holes[0].kind == HoleKind::CulledWhileVisible && inView(c, r.holes[0].visiblePoint);
+                      r.holes[0].kind == HoleKind::CulledWhileVisible &&
+                      inView(lodCameraOf(c), r.holes[0].visiblePoint);
     CHECK(hole);
     if (!between) {
       ++t.undecidable;
@@ -333,7 +314,7 @@ void printTally(const char* title, const std::map<Kind, Tally>& tally) {
 
 } // namespace
 
-TEST_CASE("fault_injection_every_fault_is_found_and_nothing_else", "[verify][faults]") {
+TEST_CASE("fault injection: every fault is found and nothing else", "[verify][faults]") {
   std::map<Kind, Tally> tally;
   Harness rings = makeHarness("rings_small (screen_sphere, pow2, fbm)", "rings_small.toml", {}, false, tally);
   Harness grid = makeHarness("grid (distance_pow2, fractional_odd, ridge)", "grid.toml", {}, false, tally);

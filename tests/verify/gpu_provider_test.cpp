@@ -3,6 +3,7 @@
 // and compared with the C++ build: equal factors give the C++ verdict and no difference; one factor moved by an ulp
 // is reported as exactly one FactorDiff with both bits; a NaN factor makes a hole. docs/gpu_lod.md.
 #include "verify_test_util.h"
+#include "base/bits.h"
 #include "verify/internal.h"
 
 #include <catch2/catch.hpp>
@@ -39,7 +40,7 @@ struct StandIn : FactorProvider {
 
 } // namespace
 
-TEST_CASE("gpu path: scene keys lod.shader and lod.evaluate", "[gpu_lod]") {
+TEST_CASE("gpu path: scene keys lod.shader and lod.evaluate", "[verify][gpu_lod]") {
   const std::string dir = std::string(FFTESS_EXAMPLES_DIR);
   SceneResult r = loadScene(dir + "/gpu_distance_glsl.toml");
   REQUIRE(r);
@@ -61,7 +62,7 @@ TEST_CASE("gpu path: scene keys lod.shader and lod.evaluate", "[gpu_lod]") {
   CHECK_THAT(loadScene(dir + "/geomorph.toml", {"lod.evaluate=gpu"}).error, Catch::Contains("no GPU path"));
 }
 
-TEST_CASE("gpu path: a stand-in provider's factors are checked and compared with the C++ build", "[gpu_lod]") {
+TEST_CASE("gpu path: a stand-in provider's factors are checked and compared with the C++ build", "[verify][gpu_lod]") {
   const Scene cpuScene = loadExample("grid.toml", {"lod.scheme=distance_pow2"});
   const Scene gpuScene = loadExample("grid.toml", {"lod.scheme=distance_pow2", "lod.evaluate=gpu"});
   const Terrain cpu = prepared(cpuScene), gpu = prepared(gpuScene);
@@ -123,9 +124,7 @@ struct DenormalStandIn : FactorProvider {
     out.assign(patches.size(), fftess::lod::PatchLod{});
     for (fftess::lod::PatchLod& l : out)
       for (float& f : l.factors) f = 4.0f;
-    uint32_t bits = 0x000116C2u; // 1e-40
-    float denormal;
-    std::memcpy(&denormal, &bits, 4);
+    const float denormal = fftess::floatOf(0x000116C2u); // 1e-40
     for (int e = 0; e < 4; ++e) out[static_cast<size_t>(patch)].factors[e] = denormal;
     return true;
   }
@@ -137,7 +136,7 @@ struct DenormalStandIn : FactorProvider {
 
 } // namespace
 
-TEST_CASE("gpu path: denormal factors take the driver's rule, overridable, and are reported either way", "[gpu_lod]") {
+TEST_CASE("gpu path: denormal factors take the driver's rule, overridable, and are reported either way", "[verify][gpu_lod]") {
   // Flat (no displacement): with the denormal kept, the patch is drawn at the minimum (1 segment per outer edge, a
   // T-junction or crack against the neighbours' 4); flushed, it is discarded: a hole where the camera sees it.
   const std::vector<std::string> flat{"lod.scheme=constant", "lod.evaluate=gpu", "displacement.kind=none",
@@ -209,7 +208,7 @@ TEST_CASE("gpu path: denormal factors take the driver's rule, overridable, and a
   CHECK(denormalRule(sceneOn, o).why == "lod.flush_denormals = true");
 }
 
-TEST_CASE("lod.flush_denormals: \"auto\", true or false, anything else named with its position", "[gpu_lod]") {
+TEST_CASE("lod.flush_denormals: \"auto\", true or false, anything else named with its position", "[verify][gpu_lod]") {
   CHECK(loadExample("grid.toml").lod.flushDenormals == DenormalFlush::Auto);
   CHECK(loadExample("grid.toml", {"lod.flush_denormals=false"}).lod.flushDenormals == DenormalFlush::Off);
   CHECK(loadExample("grid.toml", {"lod.flush_denormals=\"auto\""}).lod.flushDenormals == DenormalFlush::Auto);

@@ -49,7 +49,7 @@ void requireWatertight(const Scene& s, const Camera& cam, const char* what) {
 
 } // namespace
 
-TEST_CASE("hard_geometry_128km_world_camera_1cm_above_a_corner", "[verify][hard]") {
+TEST_CASE("hard geometry: a 128 km world, the camera 1 cm above a corner", "[verify][hard]") {
   for (bool rings : {false, true}) {
     Scene s = world(rings);
     const Terrain terrain = prepared(s);
@@ -114,17 +114,17 @@ void requireHolesAtTheEyePlane(const glm::vec3& eye, const char* what, int expec
 
 } // namespace
 
-TEST_CASE("hard_geometry_eye_exactly_on_an_edge_reports_holes", "[verify][hard]") {
+TEST_CASE("hard geometry: an eye exactly on an edge reports holes", "[verify][hard]") {
   // (0, 0, 2): the midpoint of the shared edge x = 0, z in [0, 4].
   requireHolesAtTheEyePlane({0.0f, 0.0f, 2.0f}, "eye on an edge", 2);
 }
 
-TEST_CASE("hard_geometry_eye_exactly_on_a_corner_reports_holes", "[verify][hard]") {
+TEST_CASE("hard geometry: an eye exactly on a corner reports holes", "[verify][hard]") {
   // (0, 0, 0): four patches' corner; the edges along x at z = 0 have their midpoints in the image plane.
   requireHolesAtTheEyePlane({0.0f, 0.0f, 0.0f}, "eye on a corner", 2);
 }
 
-TEST_CASE("hard_geometry_eye_exactly_on_an_interior_vertex", "[verify][hard]") {
+TEST_CASE("hard geometry: an eye exactly on an interior vertex", "[verify][hard]") {
   // (1, 0, 2): an interior vertex of patch [0,4]x[0,4] (u = 1/4, v = 1/2 at factor 4); the plane z = 2 holds the
   // midpoints of the edges x = 0 and x = 4: holes. (1, 0, 1) holds none: the control, watertight.
   requireHolesAtTheEyePlane({1.0f, 0.0f, 2.0f}, "eye on an interior vertex", 1);
@@ -135,7 +135,7 @@ TEST_CASE("hard_geometry_eye_exactly_on_an_interior_vertex", "[verify][hard]") {
   requireWatertight(s, cam, "eye on an interior vertex off the midpoint rows");
 }
 
-TEST_CASE("hard_geometry_holes_with_frustum_culling_on", "[verify][hard]") {
+TEST_CASE("hard geometry: holes with frustum culling on", "[verify][hard]") {
   // The same eye with screen_sphere's own frustum test: it keeps the patches beside the eye, so the NaN still
   // reaches the tessellator.
   Scene s = flatGrid();
@@ -148,7 +148,7 @@ TEST_CASE("hard_geometry_holes_with_frustum_culling_on", "[verify][hard]") {
   CHECK(verdictOf(r.stats) == Verdict::Holes);
 }
 
-TEST_CASE("hard_geometry_world_far_from_the_origin", "[verify][hard]") {
+TEST_CASE("hard geometry: a world far from the origin", "[verify][hard]") {
   SECTION("centre at 1e5: watertight with pow2") {
     const Scene s = loadExample("rings_small.toml", {"layout.center=[1e5,1e5]"});
     const Terrain t = prepared(s);
@@ -188,7 +188,7 @@ TEST_CASE("hard_geometry_world_far_from_the_origin", "[verify][hard]") {
   }
 }
 
-TEST_CASE("hard_geometry_camera_below_the_displaced_surface", "[verify][hard]") {
+TEST_CASE("hard geometry: a camera below the displaced surface", "[verify][hard]") {
   // Looking up at the terrain from below: the LOD, the tessellator and the check see the same surface.
   const Scene s = loadExample("rings_small.toml");
   Camera cam = s.camera;
@@ -197,7 +197,7 @@ TEST_CASE("hard_geometry_camera_below_the_displaced_surface", "[verify][hard]") 
   requireWatertight(s, cam, "below the surface");
 }
 
-TEST_CASE("hard_geometry_grazing_angles", "[verify][hard]") {
+TEST_CASE("hard geometry: grazing angles", "[verify][hard]") {
   const Scene s = loadExample("rings_small.toml");
   const Terrain t = prepared(s);
   // The eye a hair above the highest texel, looking horizontally across the whole terrain in several directions.
@@ -213,7 +213,7 @@ TEST_CASE("hard_geometry_grazing_angles", "[verify][hard]") {
   }
 }
 
-TEST_CASE("hard_geometry_patches_behind_the_camera", "[verify][hard]") {
+TEST_CASE("hard geometry: patches behind the camera", "[verify][hard]") {
   for (bool rings : {false, true}) {
     Scene s = world(rings, {"lod.frustum_cull=false"});
     Camera cam = s.camera;
@@ -229,7 +229,7 @@ TEST_CASE("hard_geometry_patches_behind_the_camera", "[verify][hard]") {
   }
 }
 
-TEST_CASE("hard_geometry_far_patches_at_the_minimum_factor", "[verify][hard]") {
+TEST_CASE("hard geometry: far patches at the minimum factor", "[verify][hard]") {
   Scene s = world(false, {"lod.frustum_cull=false", "lod.target_pixels=20"});
   Camera cam = s.camera;
   cam.eye = glm::vec3{-63500.0f, 30.0f, -63500.0f}; // one corner of the world
@@ -254,7 +254,7 @@ TEST_CASE("hard_geometry_far_patches_at_the_minimum_factor", "[verify][hard]") {
   CHECK(far > 100);
 }
 
-TEST_CASE("hard_geometry_raw_heightmaps_at_full_scale", "[verify][hard]") {
+TEST_CASE("hard geometry: raw heightmaps at full scale", "[verify][hard]") {
   // 16-bit RAW heightmaps of 0 and of 65535 everywhere (and an 8-bit 255): the heights are exactly 0 and exactly
   // height_scale, the terrain is a plane, and the NVIDIA setup is watertight.
   const std::string dir = std::string(FFTESS_TEST_TMP_DIR) + "/raw_full_scale";
@@ -288,7 +288,7 @@ TEST_CASE("hard_geometry_raw_heightmaps_at_full_scale", "[verify][hard]") {
   }
 }
 
-TEST_CASE("hard_geometry_non_finite_inputs_never_reach_the_lod_silently", "[verify][hard]") {
+TEST_CASE("hard geometry: non-finite inputs never reach the LOD silently", "[verify][hard]") {
   // Every float a scene gives the LOD, the layout or the camera: NaN, +Inf and -Inf are refused at load with the
   // key named. What is left for NaN is arithmetic (w = 0, tested above), and that is reported as a hole.
   const char* keys[] = {"layout.patch_size", "layout.base_patch_size", "layout.cell_size", "displacement.height_scale",
@@ -312,7 +312,7 @@ TEST_CASE("hard_geometry_non_finite_inputs_never_reach_the_lod_silently", "[veri
     }
 }
 
-TEST_CASE("hard_geometry_factors_one_ulp_around_powers_of_two_through_each_clamp", "[verify][hard]") {
+TEST_CASE("hard geometry: factors one ulp around powers of two, through each clamp", "[verify][hard]") {
   // lod.scheme = constant on tile rings: every edge's factor is f, the neighbour rule makes the jump's sides
   // big = clamp(f) and small = big / 2. For f one ulp below, at and one ulp above 2, 4, .., 64 and each clamp, the
   // hull factors at every jump are what the clamp's recipe says (computed here, not by lod/), and a jump cracks

@@ -13,11 +13,6 @@ using namespace fftess::verify::test;
 
 namespace {
 
-// lod's camera for a scene camera, built here from lod::makeCamera (as the scene format documents it).
-lod::Camera lodCameraOf(const Camera& c) {
-  return lod::makeCamera(c.eye, c.target, c.up, c.fovY * (3.14159265358979323846f / 180.0f), c.nearZ, c.farZ,
-                         glm::vec2(float(c.width), float(c.height)));
-}
 
 // Strictly inside the clip volume, in double from lod's float matrices (an independent test of a point).
 bool insideView(const lod::Camera& cam, const glm::vec3& p) {

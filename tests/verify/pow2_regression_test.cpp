@@ -41,7 +41,7 @@ double along(const Finding& f, const fftess::DomainPoint& d, int edge) {
 
 } // namespace
 
-TEST_CASE("pow2_regression_no_clamp_cracks_at_a_2x_jump", "[verify][pow2]") {
+TEST_CASE("pow2 regression: without a clamp a 2x jump cracks", "[verify][pow2]") {
   Scene s = loadExample("terrain.toml", {"lod.adjacency_clamp=none"});
   for (Kernel k : {Kernel::Epick, Kernel::Epeck}) {
     CheckOptions o;
@@ -56,7 +56,7 @@ TEST_CASE("pow2_regression_no_clamp_cracks_at_a_2x_jump", "[verify][pow2]") {
   }
 }
 
-TEST_CASE("pow2_regression_integer_clamp_12_beside_2x6_cracks_where_16_16_predicts", "[verify][pow2]") {
+TEST_CASE("pow2 regression: with the integer clamp 12 beside 2x6 cracks where 16.16 predicts", "[verify][pow2]") {
   // The model first: B = 12 misses 2 x 6 from point 1 on, by 1.5/65536 of the big edge in the second half.
   REQUIRE(modelPoint(1, 12) == 5461);
   REQUIRE(modelPoint(1, 6) == 10923);
@@ -104,7 +104,7 @@ TEST_CASE("pow2_regression_integer_clamp_12_beside_2x6_cracks_where_16_16_predic
   }
 }
 
-TEST_CASE("pow2_regression_pow2_clamp_never_cracks_over_1000_cameras", "[verify][pow2][sweep][slow]") {
+TEST_CASE("pow2 regression: the pow2 clamp never cracks over 1000 cameras", "[verify][pow2][sweep][slow]") {
   Scene s = loadExample("rings_small.toml");
   const Terrain terrain = prepared(s);
   std::vector<Camera> cams = randomCameras(terrain, 900, 20261122);
@@ -131,7 +131,7 @@ TEST_CASE("pow2_regression_pow2_clamp_never_cracks_over_1000_cameras", "[verify]
 // spheres and can round to different powers of two (the seed's own warning: the vector math is not guaranteed to
 // rebuild the same vertex). resampled (the default scene's) re-acquires the rebuilt corner's height as the vertex
 // shader samples it; far_corner passes the larger patch's own corner. Recorded so that a change in lod/ shows here.
-TEST_CASE("pow2_clamp_with_displaced_corners_edge_vector_mismatches_factors", "[verify][pow2]") {
+TEST_CASE("pow2 regression: with displaced corners the EdgeVector rebuild mismatches factors", "[verify][pow2]") {
   Scene bad = loadExample("terrain.toml", {"lod.displaced_corners=true", "lod.reconstruction=edge_vector"});
   Report r = checkScene(prepared(bad), bad.camera);
   CHECK(r.stats.cracks > 0);

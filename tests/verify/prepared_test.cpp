@@ -11,14 +11,6 @@ using namespace fftess;
 using namespace fftess::verify;
 using namespace fftess::verify::test;
 
-namespace {
-uint32_t floatBits(float f) {
-  uint32_t u;
-  std::memcpy(&u, &f, sizeof u);
-  return u;
-}
-} // namespace
-
 TEST_CASE("prepared terrain: one build serves check, mesh check, sweep, cameras, extent and geometry",
           "[verify][prepared]") {
   const Scene s = loadExample("rings_small.toml");
@@ -90,7 +82,7 @@ TEST_CASE("prepared terrain: corner heights are sampled once, never per camera",
   CHECK(t.stats().heightSamples == built.heightSamples);
 }
 
-TEST_CASE("prepared terrain: a flat scene samples no height at all; a constant LOD calls no lod/",
+TEST_CASE("prepared terrain: a flat scene samples no height at all, a constant LOD calls no lod/",
           "[verify][prepared]") {
   const Scene flat = loadExample("rings_small.toml", {"displacement.kind=none"});
   const Terrain t = prepared(flat);
@@ -139,7 +131,7 @@ TEST_CASE("findings carry the LOD's own record", "[verify][prepared][causes]") {
       CHECK((f.a.lod.why.fixes & lod::FixSmallerNeighbour) != 0);
       CHECK((f.b.lod.why.fixes & lod::FixLargerNeighbour) != 0);
       CHECK_FALSE(f.a.lod.culled);
-      CHECK(f.a.hullFactorBits == floatBits(f.a.hullFactor));
+      CHECK(f.a.hullFactorBits == bitsOf(f.a.hullFactor));
       CHECK(lodWords(f.b).find("integer_clamp") != std::string::npos);
       CHECK(lodWords(f.b).find("neighbour 2x") != std::string::npos);
     }

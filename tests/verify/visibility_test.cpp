@@ -21,29 +21,6 @@ using namespace fftess::verify::test;
 
 namespace {
 
-lod::Camera lodCamera(const Camera& c) {
-  return lod::makeCamera(c.eye, c.target, c.up, c.fovY * (3.14159265358979323846f / 180.0f), c.nearZ, c.farZ,
-                         glm::vec2(static_cast<float>(c.width), static_cast<float>(c.height)));
-}
-
-// Strictly inside the clip volume, in double (the harness's own test).
-bool inView(const lod::Camera& cam, const glm::vec3& p) {
-  const glm::dmat4 m = glm::dmat4(cam.projection) * glm::dmat4(cam.view);
-  const glm::dvec4 q = m * glm::dvec4(p.x, p.y, p.z, 1.0);
-  return q.w > 0 && std::fabs(q.x) < q.w && std::fabs(q.y) < q.w && q.z > -q.w && q.z < q.w;
-}
-
-// Some point of an n x n grid of domain points (edges included) of the patch is in view.
-bool seenOnGrid(const Terrain& t, const Camera& c, int patch, int n) {
-  const lod::Camera cam = lodCamera(c);
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i)
-      if (inView(cam, domainPosition(t, patch, static_cast<float>(i) / static_cast<float>(n - 1),
-                                     static_cast<float>(j) / static_cast<float>(n - 1))))
-        return true;
-  return false;
-}
-
 // A user's distance-rule shader whose frustum test leaves out the height bounds: lod::distancePow2Tile on the
 // patch with useHeightBounds off (the culling box spans the corners' heights only).
 struct NoHeightBounds : FactorProvider {
@@ -106,7 +83,7 @@ TEST_CASE("visibility: a distance rule without height bounds is never watertight
     undecided += r.stats.undecided;
     // Never clean while a culled patch near the view is undecided (the 33 x 33 grid left them uncounted).
     if (r.stats.undecided > 0 || r.stats.culledUndecided > 0) CHECK(verdictOf(r.stats) != Verdict::Watertight);
-    const lod::Camera cam = lodCamera(cams[k]);
+    const lod::Camera cam = lodCameraOf(cams[k]);
     REQUIRE(provider->evaluate(LodPatches(t), cam, lodOut, err));
     std::set<int> holePatches;
     for (const Hole& h : r.holes) {
@@ -176,7 +153,7 @@ TEST_CASE("visibility: a culled patch filling the screen between grid points is 
   CHECK(h.patch.index == target);
   CHECK(h.kind == HoleKind::CulledWhileVisible);
   CHECK(h.visibility == Visibility::Visible);
-  CHECK(inView(lodCamera(s.camera), h.visiblePoint));
+  CHECK(inView(lodCameraOf(s.camera), h.visiblePoint));
   CHECK(r.stats.undecided == 0);
 
   // Discarded instead of culled: the same patch, a Discarded hole.

@@ -10,6 +10,7 @@
 // available (the NVIDIA device run); it prints the summary and the patches/points/time figures.
 #include "gl_capture.h" // oracle::Patch, parseBatch, batchLine
 #include "gl_context.h"
+#include "base/bits.h"
 #include "base/splitmix64.h"
 
 #include "compare/compare.h"
@@ -34,12 +35,6 @@ constexpr size_t kChunk = 1024; // patches per dispatch
 int fail(const std::string& why, int status = 2) {
   std::fprintf(stderr, "fftess_compute_port: %s\n", why.c_str());
   return status;
-}
-
-uint32_t bitsOf(float f) {
-  uint32_t b;
-  std::memcpy(&b, &f, sizeof b);
-  return b;
 }
 
 // Quad patches for the port: integer, pow2, fractional_even; factors mostly in (0.5, 66), some exact integers.

@@ -1,4 +1,4 @@
-# ctest oracle_compute_port: the compute port on llvmpipe, 600 random quad patches (integer, pow2, fractional_even):
+# ctest "oracle:compute port": the compute port on llvmpipe, 600 random quad patches (integer, pow2, fractional_even):
 # `fftess compare` finds its points bit-exact (exit 0); with each bug switch it exits 1 and names the bug.
 function(run_port bug csv)
   execute_process(COMMAND ${PORT} --random 600 --seed 3 --bug ${bug} --batch-out ${OUT}/port.batch --csv ${csv}

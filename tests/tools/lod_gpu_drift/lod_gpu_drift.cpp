@@ -13,11 +13,12 @@
 //   screen-sphere, nvidia-tile with adjacency clamp none / integer / pow2 (EdgeVector rebuild), distance-pow2,
 //   bonaventura, clip-diameter (frustumCull on), geomorph (the patch's and its neighbours' levels, then factors),
 // every parameter at the lod.h default. The GPU side is a GL 4.5 compute shader built by text concatenation of
-// lod::glslSource(0..n-1) after "#version 450" (what tests/lod/test_glsl.cpp does), writing floatBitsToUint of every
+// lod::glslSource(0..n-1) after "#version 450" (what tests/lod/glsl_test.cpp does), writing floatBitsToUint of every
 // value to an SSBO. Compared per scheme: bit-identical factors, max ulp distance, factors culled on one side only,
 // and whether a difference changes the tessellation: fftess::edgePoints(factor, FractionalEven / Integer) differ
 // (point count or any 16.16 position). Exit status: 0 = measured (differences are results, not failures);
 // 1 = usage; 3 = no suitable GL 4.5 context; 4 = shader compile/link or GL error.
+#include "base/bits.h"
 #include "base/splitmix64.h"
 #include "lod/lod.h"
 #include "tessellator/tessellator.h"
@@ -67,16 +68,8 @@ constexpr int kOutStride = kOutLevels + 5;
 constexpr int kCategories = 5;
 const char* const kCategoryNames[kCategories] = {"general", "near", "far", "edge-on", "random"};
 
-uint32_t bitsOf(float f) {
-  uint32_t u;
-  std::memcpy(&u, &f, 4);
-  return u;
-}
-float floatOf(uint32_t u) {
-  float f;
-  std::memcpy(&f, &u, 4);
-  return f;
-}
+using fftess::bitsOf; // base/bits.h
+using fftess::floatOf;
 
 // ---------------------------------------------------------------- generator
 // splitmix64 (base/splitmix64.h), with the draws this tool has always made.

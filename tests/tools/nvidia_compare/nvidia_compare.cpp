@@ -19,7 +19,7 @@
 // Not compared: indices as numbers (the hardware's numbering is not observable without an order assumption), quad/tri
 // 'line' and 'point' topologies beyond their points (GL has no such output), w of tri points, the HLSL stage.
 //
-// The generator is gl/random_patches.h, shared with tests/oracle/oracle_vs_emulator_test.cpp, so a seed gives
+// The generator is gl/random_patches.h, shared with tests/oracle/vs_emulator_test.cpp, so a seed gives
 // the same patches as that llvmpipe test. The context is gl/gl_context.h (hardware EGL devices first).
 #include "gl_capture.h"     // Patch, enums, parseBatch, batchLine, toString (batch.cpp); pointBound, glSpacing
 #include "gl_context.h"     // headless EGL context, GL loader, renderer check

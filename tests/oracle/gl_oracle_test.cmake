@@ -1,4 +1,4 @@
-# ctest oracle_cli: the fftess_gl_oracle command line as docs/oracle.md shows it.
+# ctest "oracle:gl_oracle command line": the fftess_gl_oracle command line as docs/oracle.md shows it.
 #   1. data/example.batch gives exactly data/example.out (checked once against fftess with flushDenormals; the same
 #      bytes the golden .out files use);
 #   2. a batch with an hlsl stage is refused: exit 2, the line number in the message, nothing on stdout.

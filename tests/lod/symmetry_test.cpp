@@ -7,7 +7,7 @@
 #include "lod_test_util.h"
 
 using namespace fftess::lod;
-using lodtest::bits;
+using fftess::bitsOf;
 using lodtest::hex;
 
 namespace {
@@ -45,10 +45,10 @@ Agreement sharedEdges(const char* name, const SchemeFn& fn, bool expectAgreement
     if (ra.why.culled || rr.why.culled || ru.why.culled) {
       continue; // culling is per patch; the sweep keeps most patches in view
     }
-    const bool same[4] = {bits(ra.factors[2]) == bits(rr.factors[0]),  // a.Ueq1 == right.Ueq0
-                          bits(ra.factors[3]) == bits(ru.factors[1]),  // a.Veq1 == up.Veq0
-                          bits(ra.factors[0]) == bits(rm.factors[2]),  // reversed corner order
-                          bits(ra.factors[1]) == bits(rm.factors[1])};
+    const bool same[4] = {bitsOf(ra.factors[2]) == bitsOf(rr.factors[0]),  // a.Ueq1 == right.Ueq0
+                          bitsOf(ra.factors[3]) == bitsOf(ru.factors[1]),  // a.Veq1 == up.Veq0
+                          bitsOf(ra.factors[0]) == bitsOf(rm.factors[2]),  // reversed corner order
+                          bitsOf(ra.factors[1]) == bitsOf(rm.factors[1])};
     int wrong = 0;
     for (bool ok : same) {
       if (expectAgreement) CHECK(ok);

@@ -1,5 +1,6 @@
 // fftess: version, help on every subcommand, bad usage, bench launcher.
 #include "run.h"
+#include "usage_error.h"
 
 #include <catch2/catch.hpp>
 
@@ -42,16 +43,7 @@ TEST_CASE("bad usage exits 2 with a one-line reason on stderr", "[cli]") {
       {{"explain", "--why-pow2", "12", "6"}, "--why-pow2"},
       {{"explain", "--stage", "gpu", "12", "6"}, "--stage"},
   };
-  for (const Case& c : cases) {
-    std::string joined;
-    for (const auto& a : c.args) joined += a + " ";
-    INFO(joined);
-    const auto r = run(c.args);
-    CHECK(r.status == 2);
-    CHECK(r.out.empty());
-    CHECK(r.err.find(c.mention) != std::string::npos);
-    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
-  }
+  for (const Case& c : cases) clitest::checkUsageError(c.args, c.mention);
 }
 
 #ifdef FFTESS_HAVE_BENCH

@@ -82,7 +82,7 @@ json explainJson(const std::vector<std::string>& args) {
 
 } // namespace
 
-TEST_CASE("why-pow2, integer: only powers of two meet; 12 beside 6 misses by 1.5/65536", "[cli][explain]") {
+TEST_CASE("why-pow2, integer: only powers of two meet, 12 beside 6 misses by 1.5/65536", "[cli][explain]") {
   const json pairs = whyPow2("integer");
   std::set<int> meet;
   double worstEven = 0;
@@ -158,7 +158,7 @@ TEST_CASE("explain 12 6: every mismatch attributed to the 16.16 step that caused
   CHECK(text.out.find("worst gap 1.5/65536") != std::string::npos);
 }
 
-TEST_CASE("explain 8 4 meets; fractional factors name placement or point counts", "[cli][explain]") {
+TEST_CASE("explain 8 4 meets, fractional factors name placement or point counts", "[cli][explain]") {
   json j = explainJson({"8", "4"});
   CHECK(j.at("match") == true);
   CHECK(j.at("mismatches") == 0);

@@ -4,7 +4,7 @@
 #include "lod_test_util.h"
 
 using namespace fftess::lod;
-using lodtest::bits;
+using fftess::bitsOf;
 using lodtest::hex;
 
 namespace {
@@ -42,17 +42,17 @@ TEST_CASE("nvidiaTile: smaller side rebuilds the larger edge and halves its fact
       n.farCorner[0] = glm::vec3(-1.0f, odd ? -3.0f : 3.0f, -8.0f);
       const PatchLod r = nvidiaTile(patch, n, cam, tileParams(14.0f, c.clamp, Reconstruction::FarCorner));
       INFO("clamp " << static_cast<int>(c.clamp) << " odd " << odd << " got " << hex(r.factors[0]));
-      CHECK(bits(r.factors[0]) == bits(c.want));
-      CHECK(bits(r.why.factor[0].metric) == bits(480.0f));
+      CHECK(bitsOf(r.factors[0]) == bitsOf(c.want));
+      CHECK(bitsOf(r.why.factor[0].metric) == bitsOf(480.0f));
       CHECK(r.why.factor[0].fixes == (FixLargerNeighbour | c.fix));
       // The other edges see same-size neighbours: 240 px / 14.
-      CHECK(bits(r.factors[1]) == bits(240.0f / 14.0f));
+      CHECK(bitsOf(r.factors[1]) == bitsOf(240.0f / 14.0f));
       CHECK(r.why.factor[1].fixes == FixNone);
       // Inside factors come from the patch's own edges, not the halved one.
-      CHECK(bits(r.factors[5]) == bits(240.0f / 14.0f));
+      CHECK(bitsOf(r.factors[5]) == bitsOf(240.0f / 14.0f));
     }
   }
-  CHECK(bits(f * 0.5f) == bits(17.1428566f));
+  CHECK(bitsOf(f * 0.5f) == bitsOf(17.1428566f));
 }
 
 TEST_CASE("nvidiaTile: larger side rounds its own factor", "[lod][nvidia_tile]") {
@@ -61,17 +61,17 @@ TEST_CASE("nvidiaTile: larger side rounds its own factor", "[lod][nvidia_tile]")
   TileNeighbours n;
   n.size[2] = 0.5f;
   // 240 / 14 = 17.142857: integer -> 18, pow2 -> 32, none -> as is.
-  CHECK(bits(nvidiaTile(patch, n, cam, tileParams(14.0f, AdjacencyClamp::Integer, Reconstruction::EdgeVector))
-                 .factors[2]) == bits(18.0f));
-  CHECK(bits(nvidiaTile(patch, n, cam, tileParams(14.0f, AdjacencyClamp::Pow2, Reconstruction::EdgeVector))
-                 .factors[2]) == bits(32.0f));
-  CHECK(bits(nvidiaTile(patch, n, cam, tileParams(14.0f, AdjacencyClamp::None, Reconstruction::EdgeVector))
-                 .factors[2]) == bits(240.0f / 14.0f));
+  CHECK(bitsOf(nvidiaTile(patch, n, cam, tileParams(14.0f, AdjacencyClamp::Integer, Reconstruction::EdgeVector))
+                 .factors[2]) == bitsOf(18.0f));
+  CHECK(bitsOf(nvidiaTile(patch, n, cam, tileParams(14.0f, AdjacencyClamp::Pow2, Reconstruction::EdgeVector))
+                 .factors[2]) == bitsOf(32.0f));
+  CHECK(bitsOf(nvidiaTile(patch, n, cam, tileParams(14.0f, AdjacencyClamp::None, Reconstruction::EdgeVector))
+                 .factors[2]) == bitsOf(240.0f / 14.0f));
   // 240 / 120 = 2 -> pow2 lower bound 4; integer lower bound 4 too (the sample's recipe: larger side >= 4).
-  CHECK(bits(nvidiaTile(patch, n, cam, tileParams(120.0f, AdjacencyClamp::Pow2, Reconstruction::EdgeVector))
-                 .factors[2]) == bits(4.0f));
-  CHECK(bits(nvidiaTile(patch, n, cam, tileParams(120.0f, AdjacencyClamp::Integer, Reconstruction::EdgeVector))
-                 .factors[2]) == bits(4.0f));
+  CHECK(bitsOf(nvidiaTile(patch, n, cam, tileParams(120.0f, AdjacencyClamp::Pow2, Reconstruction::EdgeVector))
+                 .factors[2]) == bitsOf(4.0f));
+  CHECK(bitsOf(nvidiaTile(patch, n, cam, tileParams(120.0f, AdjacencyClamp::Integer, Reconstruction::EdgeVector))
+                 .factors[2]) == bitsOf(4.0f));
   const PatchLod r = nvidiaTile(patch, n, cam, tileParams(14.0f, AdjacencyClamp::Pow2, Reconstruction::EdgeVector));
   CHECK(r.why.factor[2].fixes == (FixSmallerNeighbour | FixPow2Clamp));
 }
@@ -101,8 +101,8 @@ TEST_CASE("nvidiaTile: clamp ranges over a camera sweep", "[lod][nvidia_tile]") 
       const float s0 = nvidiaTile(small0, n0, cam, p).factors[2];
       const float s1 = nvidiaTile(small1, n1, cam, p).factors[2];
       INFO("camera " << i << " clamp " << static_cast<int>(clamp) << " L " << hex(L) << " s0 " << hex(s0));
-      CHECK(bits(s0) == bits(s1));
-      CHECK(bits(s0) == bits(L * 0.5f));
+      CHECK(bitsOf(s0) == bitsOf(s1));
+      CHECK(bitsOf(s0) == bitsOf(L * 0.5f));
       if (clamp == AdjacencyClamp::Pow2) {
         CHECK((L == 4.0f || L == 8.0f || L == 16.0f || L == 32.0f || L == 64.0f));
         CHECK(s0 >= 2.0f);
@@ -136,9 +136,9 @@ TEST_CASE("nvidiaTile: EdgeVector rebuild agrees on flat exact terrain, can miss
     const Camera cam = lodtest::sweepCamera(i);
     NvidiaTileParams p = tileParams(60.0f, AdjacencyClamp::None, Reconstruction::EdgeVector);
     p.sphere.frustumCull = false;
-    CHECK(bits(nvidiaTile(small0, n0, cam, p).factors[2]) == bits(nvidiaTile(big, nb, cam, p).factors[0] * 0.5f));
+    CHECK(bitsOf(nvidiaTile(small0, n0, cam, p).factors[2]) == bitsOf(nvidiaTile(big, nb, cam, p).factors[0] * 0.5f));
     CHECK(nvidiaTile(bigD, nb, cam, p).why.factor[0].fixes == FixSmallerNeighbour); // unclamped: 60 px triangles
-    if (bits(nvidiaTile(small0D, n0, cam, p).factors[2]) != bits(nvidiaTile(bigD, nb, cam, p).factors[0] * 0.5f)) {
+    if (bitsOf(nvidiaTile(small0D, n0, cam, p).factors[2]) != bitsOf(nvidiaTile(bigD, nb, cam, p).factors[0] * 0.5f)) {
       ++mismatchesDisplaced;
     }
   }
@@ -153,7 +153,7 @@ TEST_CASE("nvidiaTile: culling writes -1", "[lod][nvidia_tile][culling]") {
   const PatchLod r = nvidiaTile(lodtest::facingPatch(0.0f, 0.0f, 8.0f), n, cam);
   CHECK(r.why.culled);
   for (float f : r.factors) {
-    CHECK(bits(f) == bits(-1.0f));
+    CHECK(bitsOf(f) == bitsOf(-1.0f));
   }
 }
 
@@ -279,7 +279,7 @@ TEST_CASE("tile rule, every scheme: the smaller side takes the scheme's factor o
   // The rebuilt corner's x/z are the far corner's here (exact coordinates).
   CHECK(rebuiltCorner(small0.corners[1], small0.corners[3], false).z == big.corners[2].z);
   CHECK(rebuiltCorner(small1.corners[1], small1.corners[3], true).z == big.corners[0].z);
-  CHECK(bits(rebuiltCorner(small0.corners[1], small0.corners[3], false).y) == bits(small0.corners[3].y));
+  CHECK(bitsOf(rebuiltCorner(small0.corners[1], small0.corners[3], false).y) == bitsOf(small0.corners[3].y));
 
   for (Base b : {Base::Sphere, Base::Distance, Base::Bonaventura, Base::Clip}) {
     for (AdjacencyClamp clamp : {AdjacencyClamp::None, AdjacencyClamp::Integer, AdjacencyClamp::Pow2}) {
@@ -298,14 +298,14 @@ TEST_CASE("tile rule, every scheme: the smaller side takes the scheme's factor o
           INFO(baseName(b) << " clamp " << int(clamp) << " rec " << int(rec) << " camera " << i << " L "
                            << hex(L.factors[0]) << " s0 " << hex(s0.factors[2]) << " s1 " << hex(s1.factors[2]));
           // Larger side: larger(own factor), fixes recorded.
-          CHECK(bits(L.factors[0]) == bits(largerOf(own.factors[0], clamp)));
+          CHECK(bitsOf(L.factors[0]) == bitsOf(largerOf(own.factors[0], clamp)));
           CHECK(L.why.factor[0].fixes == (own.why.factor[0].fixes | FixSmallerNeighbour | clampBit));
           // Everything else is the scheme's own (edges without a jump, inside factors).
-          for (int k = 1; k < 6; ++k) CHECK(bits(L.factors[k]) == bits(own.factors[k]));
-          CHECK(bits(s0.factors[5]) == bits(ownLod(b, small0, cam).factors[5]));
+          for (int k = 1; k < 6; ++k) CHECK(bitsOf(L.factors[k]) == bitsOf(own.factors[k]));
+          CHECK(bitsOf(s0.factors[5]) == bitsOf(ownLod(b, small0, cam).factors[5]));
           CHECK((s0.why.factor[2].fixes & (FixLargerNeighbour | clampBit)) == (FixLargerNeighbour | clampBit));
-          const bool agree = bits(s0.factors[2]) == bits(L.factors[0] * 0.5f) &&
-                             bits(s1.factors[2]) == bits(L.factors[0] * 0.5f);
+          const bool agree = bitsOf(s0.factors[2]) == bitsOf(L.factors[0] * 0.5f) &&
+                             bitsOf(s1.factors[2]) == bitsOf(L.factors[0] * 0.5f);
           if (rec == Reconstruction::EdgeVector) {
             edgeVectorMisses += agree ? 0 : 1;
           } else {
@@ -332,13 +332,13 @@ TEST_CASE("tile rule: the integer clamp is the sample's recipe, NaN stays visibl
   for (const Case& c : cases) {
     const PatchLod r = constantTile(c.factor, n, {AdjacencyClamp::Integer, Reconstruction::EdgeVector});
     INFO("factor " << c.factor << " larger " << hex(r.factors[2]) << " smaller " << hex(r.factors[0]));
-    CHECK(bits(r.factors[2]) == bits(c.larger));
-    CHECK(bits(r.factors[0]) == bits(c.larger * 0.5f));
+    CHECK(bitsOf(r.factors[2]) == bitsOf(c.larger));
+    CHECK(bitsOf(r.factors[0]) == bitsOf(c.larger * 0.5f));
     CHECK(r.factors[0] >= 2.0f);
     CHECK(r.factors[0] <= 32.0f);
     CHECK(r.why.factor[0].fixes == (FixLargerNeighbour | FixIntegerClamp));
     CHECK(r.why.factor[2].fixes == (FixSmallerNeighbour | FixIntegerClamp));
-    CHECK(bits(r.factors[1]) == bits(c.factor)); // no jump: the constant itself
+    CHECK(bitsOf(r.factors[1]) == bitsOf(c.factor)); // no jump: the constant itself
     CHECK(r.why.scheme == Scheme::Constant);
   }
   // NaN: none and integer keep NaN on both sides of the jump (the tessellator then culls the patch); pow2 maps it
@@ -350,8 +350,8 @@ TEST_CASE("tile rule: the integer clamp is the sample's recipe, NaN stays visibl
     CHECK(std::isnan(r.factors[2]));
   }
   const PatchLod p = constantTile(nan, n, {AdjacencyClamp::Pow2, Reconstruction::EdgeVector});
-  CHECK(bits(p.factors[2]) == bits(4.0f));
-  CHECK(bits(p.factors[0]) == bits(2.0f));
+  CHECK(bitsOf(p.factors[2]) == bitsOf(4.0f));
+  CHECK(bitsOf(p.factors[0]) == bitsOf(2.0f));
   CHECK(std::isnan(p.factors[1]));
   // The same through a camera scheme: a NaN corner gives NaN factors; integer keeps them NaN at the jump.
   Patch bad = lodtest::terrainPatch(0.0f, 0.0f, 8.0f, false);

@@ -9,8 +9,8 @@
 // (where the index comparison says more than the coordinate one); denormal/agree/GL-culled = patches with a
 // denormal factor, how many agree anyway, how many llvmpipe culled instead.
 //
-//   fftess_oracle_golden_test [GOLDEN_DIR]      (default ../shared/golden)
-#include "test_support.h"
+//   test_oracle_golden [GOLDEN_DIR]      (default ../shared/golden)
+#include "oracle_test_util.h"
 
 #include <chrono>
 #include <cstdio>

@@ -4,7 +4,7 @@
 #include "lod_test_util.h"
 
 using namespace fftess::lod;
-using lodtest::bits;
+using fftess::bitsOf;
 using lodtest::hex;
 
 namespace {
@@ -29,16 +29,16 @@ TEST_CASE("bonaventura: hand-computed factors", "[lod][bonaventura]") {
   // - 0.25 = 1.25; exponent 3.75 -> rounded 4 -> 16.
   const Camera cam = fromAbove(260.0f);
   PatchLod r = bonaventura(square(0.0f, 0.0f, 0.0f, 1.0f), cam);
-  CHECK(bits(r.why.factor[4].metric) == bits(260.0f));
-  CHECK(bits(r.why.factor[4].exponent) == bits(3.75f));
-  CHECK(bits(r.factors[4]) == bits(16.0f));
-  CHECK(bits(r.factors[5]) == bits(16.0f));
+  CHECK(bitsOf(r.why.factor[4].metric) == bitsOf(260.0f));
+  CHECK(bitsOf(r.why.factor[4].exponent) == bitsOf(3.75f));
+  CHECK(bitsOf(r.factors[4]) == bitsOf(16.0f));
+  CHECK(bitsOf(r.factors[5]) == bitsOf(16.0f));
   CHECK(r.why.factor[4].fixes == (FixRoundedExponent | FixAngleCorrection));
   // Without the correction: exponent 3 -> 8.
   BonaventuraParams p;
   p.angleCorrection = false;
   r = bonaventura(square(0.0f, 0.0f, 0.0f, 1.0f), cam, p);
-  CHECK(bits(r.factors[4]) == bits(8.0f));
+  CHECK(bitsOf(r.factors[4]) == bitsOf(8.0f));
   CHECK(r.why.factor[4].fixes == FixRoundedExponent);
   // Grazing: a point level with the eye at d = 260: acos(0) = pi/2, correction 0 * 0.5 + 0.75; exponent 2.25 -> 4.
   const Camera level = makeCamera(glm::vec3(0.0f), glm::vec3(0.0f, 0.0f, -1.0f), glm::vec3(0.0f, 1.0f, 0.0f), 1.2f,
@@ -46,9 +46,9 @@ TEST_CASE("bonaventura: hand-computed factors", "[lod][bonaventura]") {
   BonaventuraParams q;
   q.frustumCull = false;
   r = bonaventura(square(0.0f, 0.0f, -260.0f, 1.0f), level, q);
-  CHECK(bits(std::acos(0.0f)) == bits(1.57079632679489662f));
-  CHECK(bits(r.why.factor[4].exponent) == bits(2.25f));
-  CHECK(bits(r.factors[4]) == bits(4.0f));
+  CHECK(bitsOf(std::acos(0.0f)) == bitsOf(1.57079632679489662f));
+  CHECK(bitsOf(r.why.factor[4].exponent) == bitsOf(2.25f));
+  CHECK(bitsOf(r.factors[4]) == bitsOf(4.0f));
   // Rounding: exponent exactly x.5 rounds up (floor(e + 0.5)); rank 0 = no correction effect.
   q.rank = 0.0f;
   q.minDistance = 0.0f;
@@ -57,10 +57,10 @@ TEST_CASE("bonaventura: hand-computed factors", "[lod][bonaventura]") {
   q.minExponent = 1.0f; // d = 260 along -z: s = 0.65 -> 5 + 0.65 * -4 = 2.4 -> 2 -> 4
   r = bonaventura(square(0.0f, 0.0f, -260.0f, 1.0f), level, q);
   INFO("exponent " << hex(r.why.factor[4].exponent));
-  CHECK(bits(r.factors[4]) == bits(4.0f));
+  CHECK(bitsOf(r.factors[4]) == bitsOf(4.0f));
   r = bonaventura(square(0.0f, 0.0f, -250.0f, 1.0f), level, q); // s = 0.625, exponent 2.5 -> 3 -> 8
-  CHECK(bits(r.why.factor[4].exponent) == bits(2.5f));
-  CHECK(bits(r.factors[4]) == bits(8.0f));
+  CHECK(bitsOf(r.why.factor[4].exponent) == bitsOf(2.5f));
+  CHECK(bitsOf(r.factors[4]) == bitsOf(8.0f));
 }
 
 TEST_CASE("bonaventura: factors are powers of two in [minFactor, maxFactor]", "[lod][bonaventura]") {
@@ -82,7 +82,7 @@ TEST_CASE("bonaventura: factors are powers of two in [minFactor, maxFactor]", "[
   }
 }
 
-TEST_CASE("bonaventura: four patches sharing a corner agree on its level; the literal fourth corner does not",
+TEST_CASE("bonaventura: four patches sharing a corner agree on its level, the literal fourth corner does not",
           "[lod][bonaventura]") {
   // Patches around the grid point (0, 0): it is corner 3 of the patch at (-8,-8), 2 of (0,-8), 1 of (-8,0), 0 of
   // (0,0).
@@ -96,15 +96,15 @@ TEST_CASE("bonaventura: four patches sharing a corner agree on its level; the li
     BonaventuraParams p;
     p.frustumCull = false;
     const float la = bonaventura(a, cam, p).why.cornerLevel[3];
-    CHECK(bits(la) == bits(bonaventura(b, cam, p).why.cornerLevel[2]));
-    CHECK(bits(la) == bits(bonaventura(c, cam, p).why.cornerLevel[1]));
-    CHECK(bits(la) == bits(bonaventura(d, cam, p).why.cornerLevel[0]));
+    CHECK(bitsOf(la) == bitsOf(bonaventura(b, cam, p).why.cornerLevel[2]));
+    CHECK(bitsOf(la) == bitsOf(bonaventura(c, cam, p).why.cornerLevel[1]));
+    CHECK(bitsOf(la) == bitsOf(bonaventura(d, cam, p).why.cornerLevel[0]));
     p.literalFourthCornerAngle = true;
-    if (bits(bonaventura(a, cam, p).why.cornerLevel[3]) != bits(bonaventura(d, cam, p).why.cornerLevel[0])) {
+    if (bitsOf(bonaventura(a, cam, p).why.cornerLevel[3]) != bitsOf(bonaventura(d, cam, p).why.cornerLevel[0])) {
       ++literalDiffers;
     }
     // The literal switch touches only corner 3.
-    CHECK(bits(bonaventura(d, cam, p).why.cornerLevel[0]) == bits(la));
+    CHECK(bitsOf(bonaventura(d, cam, p).why.cornerLevel[0]) == bitsOf(la));
   }
   CHECK(literalDiffers > 90);
 }
@@ -114,7 +114,7 @@ TEST_CASE("bonaventura: culling", "[lod][bonaventura][culling]") {
   const PatchLod r = bonaventura(square(0.0f, 400.0f, 0.0f, 1.0f), cam); // above (behind) the eye
   CHECK(r.why.culled);
   for (float f : r.factors) {
-    CHECK(bits(f) == bits(0.0f));
+    CHECK(bitsOf(f) == bitsOf(0.0f));
   }
   CHECK_FALSE(bonaventura(square(0.0f, 0.0f, 0.0f, 1.0f), cam).why.culled);
 }
@@ -127,6 +127,6 @@ TEST_CASE("bonaventura: eye exactly on the evaluated point stays finite", "[lod]
   for (float f : r.factors) {
     CHECK(std::isfinite(f));
   }
-  CHECK(bits(r.factors[4]) == bits(64.0f)); // d = 0: exponent 6 * 1.25 = 7.5 -> 8 -> clamped to 64
+  CHECK(bitsOf(r.factors[4]) == bitsOf(64.0f)); // d = 0: exponent 6 * 1.25 = 7.5 -> 8 -> clamped to 64
   CHECK((r.why.factor[4].fixes & FixClampedMax) != 0);
 }

@@ -63,7 +63,7 @@ TEST_CASE("interrupt: Ctrl-C early in a 10^8-camera sweep stops at once, with a 
   CHECK(noTempFiles(d));
 }
 
-TEST_CASE("interrupt: Ctrl-C mid-sweep stops within a second; the report counts the cameras not done",
+TEST_CASE("interrupt: Ctrl-C mid-sweep stops within a second, the report counts the cameras not done",
           "[cli][interrupt]") {
   const std::string d = scratch("sigint-mid");
   const std::string js = d + "/y.json", svg = d + "/y.svg";

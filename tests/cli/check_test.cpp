@@ -1,6 +1,7 @@
 // fftess check / sweep end to end on the bundled scenes: exit statuses, JSON shape (docs/cli.md), SVG well-formed,
 // bad scene files and overrides, no partial report files.
 #include "run.h"
+#include "usage_error.h"
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
@@ -249,7 +250,7 @@ TEST_CASE("check: a scene with T-junctions reports them as t_junction (text, JSO
   CHECK(json::parse(clitest::readFile(js)).at("stats").at("cracks").get<int64_t>() > 0);
 }
 
-TEST_CASE("check: --json - prints only JSON; --quiet prints nothing", "[cli][check]") {
+TEST_CASE("check: --json - prints only JSON, --quiet prints nothing", "[cli][check]") {
   auto r = run({"check", kScene, "--set", "lod.adjacency_clamp=none", "--json", "-"});
   CHECK(r.status == 1);
   CHECK(json::parse(r.out).at("kind") == "check");
@@ -283,14 +284,7 @@ TEST_CASE("check/sweep: bad scenes and overrides exit 2 with one line naming the
       {{"check"}, "scene"},
   };
   for (const Case& c : cases) {
-    std::string joined;
-    for (const auto& a : c.args) joined += a + " ";
-    INFO(joined);
-    const auto r = run(c.args);
-    CHECK(r.status == 2);
-    CHECK(r.out.empty());
-    CHECK(r.err.find(c.mention) != std::string::npos);
-    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    clitest::checkUsageError(c.args, c.mention);
     CHECK_FALSE(clitest::fileExists(report));
   }
   // A report that cannot be written: exit 2, naming the file, nothing left behind.
@@ -300,7 +294,7 @@ TEST_CASE("check/sweep: bad scenes and overrides exit 2 with one line naming the
   for (const std::string& f : clitest::listDir(clitest::tmpDir())) CHECK(f.find(".tmp.") == std::string::npos);
 }
 
-TEST_CASE("sweep: workaround on is clean, off cracks; summary names causes; JSON and SVG", "[cli][sweep]") {
+TEST_CASE("sweep: workaround on is clean, off cracks, summary names causes, JSON and SVG", "[cli][sweep]") {
   const std::string js = clitest::tmpDir() + "/sweep.json", svg = clitest::tmpDir() + "/sweep.svg";
   auto r = run({"sweep", kScene, "--orbit", "12", "--threads", "2"});
   CHECK(r.status == 0);

@@ -5,7 +5,7 @@
 // input that did it is written to ./fuzz-crash-input on the way out (a sanitizer's death callback, or a handler for
 // the fatal signals). Nothing is written while inputs pass: rewriting the file before every input made the replay
 // wait on the disk (6 s per 2,000 inputs on ext4).
-//   fuzz_scene_replay [-runs=N] [-seed=S] DIR...
+//   test_verify_fuzz_replay [-runs=N] [-seed=S] DIR...
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>

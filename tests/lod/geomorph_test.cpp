@@ -4,7 +4,7 @@
 #include "lod_test_util.h"
 
 using namespace fftess::lod;
-using lodtest::bits;
+using fftess::bitsOf;
 
 TEST_CASE("geomorph: level from distance (hand-computed)", "[lod][geomorph]") {
   // Centre at d = 260: s = 0.5, level 5 + 0.5 * (0 - 5) = 2.5.
@@ -15,11 +15,11 @@ TEST_CASE("geomorph: level from distance (hand-computed)", "[lod][geomorph]") {
   p.corners[1] = glm::vec3(1.0f, 0.0f, -261.0f);
   p.corners[2] = glm::vec3(-1.0f, 0.0f, -259.0f);
   p.corners[3] = glm::vec3(1.0f, 0.0f, -259.0f);
-  CHECK(bits(geomorphLevel(p, cam)) == bits(2.5f));
+  CHECK(bitsOf(geomorphLevel(p, cam)) == bitsOf(2.5f));
   for (glm::vec3& c : p.corners) {
     c.z -= 1000.0f;
   }
-  CHECK(bits(geomorphLevel(p, cam)) == bits(0.0f));
+  CHECK(bitsOf(geomorphLevel(p, cam)) == bitsOf(0.0f));
 }
 
 TEST_CASE("geomorph: factors follow the coarser neighbour", "[lod][geomorph]") {
@@ -28,7 +28,7 @@ TEST_CASE("geomorph: factors follow the coarser neighbour", "[lod][geomorph]") {
   // Edges: 2^(floor(min(2.5, n)) + 1): 8, 4, 8, 8; inside 2^(2 + 1) = 8.
   const float want[6] = {8.0f, 4.0f, 8.0f, 8.0f, 8.0f, 8.0f};
   for (int i = 0; i < 6; ++i) {
-    CHECK(bits(r.factors[i]) == bits(want[i]));
+    CHECK(bitsOf(r.factors[i]) == bitsOf(want[i]));
   }
   CHECK(r.why.factor[1].fixes == FixCoarserNeighbour);
   CHECK(r.why.factor[0].fixes == FixNone);
@@ -44,7 +44,7 @@ TEST_CASE("geomorph: factors follow the coarser neighbour", "[lod][geomorph]") {
     }
   }
   const float nanLevels[4] = {NAN, NAN, NAN, NAN};
-  CHECK(bits(geomorph(NAN, nanLevels).factors[0]) == bits(2.0f));
+  CHECK(bitsOf(geomorph(NAN, nanLevels).factors[0]) == bitsOf(2.0f));
 }
 
 TEST_CASE("geomorph: border heights, hand-computed, and both sides agree", "[lod][geomorph]") {
@@ -60,16 +60,16 @@ TEST_CASE("geomorph: border heights, hand-computed, and both sides agree", "[lod
   REQUIRE(a.segments == 4);
   const float want[5] = {0.0f, 448.0f, 1024.0f, 2496.0f, 4096.0f};
   for (int k = 0; k <= 4; ++k) {
-    CHECK(bits(a.heights[k]) == bits(want[k]));
+    CHECK(bitsOf(a.heights[k]) == bitsOf(want[k]));
   }
   CHECK(b.segments == a.segments);
   for (int k = 0; k < 65; ++k) {
-    CHECK(bits(a.heights[k]) == bits(b.heights[k]));
+    CHECK(bitsOf(a.heights[k]) == bitsOf(b.heights[k]));
   }
   // Finest: level 5.x -> 64 segments, every height its own sample when even.
   const GeomorphEdge f = geomorphEdgeHeights(5.5f, 5.75f, fine);
   CHECK(f.segments == 64);
-  CHECK(bits(f.heights[64]) == bits(4096.0f));
+  CHECK(bitsOf(f.heights[64]) == bitsOf(4096.0f));
 }
 
 TEST_CASE("geomorph: the article's literal inserted-vertex weight is not symmetric", "[lod][geomorph]") {
@@ -85,24 +85,24 @@ TEST_CASE("geomorph: the article's literal inserted-vertex weight is not symmetr
   REQUIRE(a.segments == 8);
   REQUIRE(b.segments == 8);
   // k = 1 (t = 8/64): midpoint (0 + 256) / 2 = 128, true 64: 128 - 64 * w.
-  CHECK(bits(a.heights[1]) == bits(128.0f - 64.0f * 0.375f));
-  CHECK(bits(b.heights[1]) == bits(128.0f - 64.0f * 0.125f));
-  CHECK(bits(a.heights[1]) != bits(b.heights[1]));
+  CHECK(bitsOf(a.heights[1]) == bitsOf(128.0f - 64.0f * 0.375f));
+  CHECK(bitsOf(b.heights[1]) == bitsOf(128.0f - 64.0f * 0.125f));
+  CHECK(bitsOf(a.heights[1]) != bitsOf(b.heights[1]));
 }
 
 TEST_CASE("geomorph: the per-vertex pieces (weight, morphed height), hand-computed", "[lod][geomorph]") {
   // Border weight: the tween of min(L, Ln), the same from both sides.
-  CHECK(bits(geomorphWeight(2.25f, 3.5f)) == bits(0.25f));
-  CHECK(bits(geomorphWeight(3.5f, 2.25f)) == bits(0.25f));
-  CHECK(bits(geomorphWeight(2.75f, 2.75f)) == bits(0.75f));
+  CHECK(bitsOf(geomorphWeight(2.25f, 3.5f)) == bitsOf(0.25f));
+  CHECK(bitsOf(geomorphWeight(3.5f, 2.25f)) == bitsOf(0.25f));
+  CHECK(bitsOf(geomorphWeight(2.75f, 2.75f)) == bitsOf(0.75f));
   // The article's weight (1 - tween(Ln)) * tween(L): (1 - 0.5) * 0.25 = 0.125 one way, (1 - 0.25) * 0.5 = 0.375 the
   // other.
   GeomorphParams lit;
   lit.literalArticleWeight = true;
-  CHECK(bits(geomorphWeight(2.25f, 3.5f, lit)) == bits(0.125f));
-  CHECK(bits(geomorphWeight(3.5f, 2.25f, lit)) == bits(0.375f));
+  CHECK(bitsOf(geomorphWeight(2.25f, 3.5f, lit)) == bitsOf(0.125f));
+  CHECK(bitsOf(geomorphWeight(3.5f, 2.25f, lit)) == bitsOf(0.375f));
   // m = (2 + 6) * 0.5 = 4; 4 + 0.25 * (8 - 4) = 5. Tween 0: the midpoint; tween 1: the true height.
-  CHECK(bits(geomorphHeight(8.0f, 2.0f, 6.0f, 0.25f)) == bits(5.0f));
-  CHECK(bits(geomorphHeight(8.0f, 2.0f, 6.0f, 0.0f)) == bits(4.0f));
-  CHECK(bits(geomorphHeight(8.0f, 2.0f, 6.0f, 1.0f)) == bits(8.0f));
+  CHECK(bitsOf(geomorphHeight(8.0f, 2.0f, 6.0f, 0.25f)) == bitsOf(5.0f));
+  CHECK(bitsOf(geomorphHeight(8.0f, 2.0f, 6.0f, 0.0f)) == bitsOf(4.0f));
+  CHECK(bitsOf(geomorphHeight(8.0f, 2.0f, 6.0f, 1.0f)) == bitsOf(8.0f));
 }

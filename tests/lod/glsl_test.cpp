@@ -191,7 +191,7 @@ void main() {
   CHECK(rc == 0);
 }
 
-TEST_CASE("glsl: embedded sources equal the files; files keep to the shared subset", "[lod][glsl]") {
+TEST_CASE("glsl: embedded sources equal the files, files keep to the shared subset", "[lod][glsl]") {
   for (int i = 0; i < fftess::lod::glslSourceCount(); ++i) {
     const std::string name = fftess::lod::glslSourceName(i);
     const std::string file = readFile(fs::path(FFTESS_LOD_SHADER_DIR) / name);

@@ -4,7 +4,7 @@
 #include "lod_test_util.h"
 
 using namespace fftess::lod;
-using lodtest::bits;
+using fftess::bitsOf;
 using lodtest::hex;
 
 TEST_CASE("screenSphere: hand-computed factors with the exact camera", "[lod][screen_sphere]") {
@@ -17,10 +17,10 @@ TEST_CASE("screenSphere: hand-computed factors with the exact camera", "[lod][sc
   const PatchLod r = screenSphere(patch, cam, p);
   for (int i = 0; i < 6; ++i) {
     INFO("factor " << i << " = " << hex(r.factors[i]));
-    CHECK(bits(r.factors[i]) == bits(40.0f));
+    CHECK(bitsOf(r.factors[i]) == bitsOf(40.0f));
   }
   for (int i = 0; i < 4; ++i) {
-    CHECK(bits(r.why.factor[i].metric) == bits(240.0f));
+    CHECK(bitsOf(r.why.factor[i].metric) == bitsOf(240.0f));
     CHECK(r.why.factor[i].fixes == FixNone);
   }
   CHECK_FALSE(r.why.culled);
@@ -33,15 +33,15 @@ TEST_CASE("screenSphere: clamps to [minFactor, maxFactor] and records it", "[lod
   ScreenSphereParams p; // 3 px: 240 / 3 = 80 > 64
   PatchLod r = screenSphere(patch, cam, p);
   for (int i = 0; i < 4; ++i) {
-    CHECK(bits(r.factors[i]) == bits(64.0f));
-    CHECK(bits(r.why.factor[i].unclamped) == bits(80.0f));
+    CHECK(bitsOf(r.factors[i]) == bitsOf(64.0f));
+    CHECK(bitsOf(r.why.factor[i].unclamped) == bitsOf(80.0f));
     CHECK(r.why.factor[i].fixes == FixClampedMax);
   }
   p.tessellatedTriWidth = 480.0f; // 0.5 -> 1
   r = screenSphere(patch, cam, p);
   for (int i = 0; i < 4; ++i) {
-    CHECK(bits(r.factors[i]) == bits(1.0f));
-    CHECK(bits(r.why.factor[i].unclamped) == bits(0.5f));
+    CHECK(bitsOf(r.factors[i]) == bitsOf(1.0f));
+    CHECK(bitsOf(r.why.factor[i].unclamped) == bitsOf(0.5f));
     CHECK(r.why.factor[i].fixes == FixClampedMin);
   }
   // Range over a camera sweep: every factor in [min, max].
@@ -69,17 +69,17 @@ TEST_CASE("screenSphere: inside rules", "[lod][screen_sphere]") {
   p.tessellatedTriWidth = 12.0f;
   p.inside = InsideRule::Average;
   const PatchLod avg = screenSphere(patch, cam, p);
-  CHECK(bits(avg.factors[4]) == bits((avg.factors[1] + avg.factors[3]) * 0.5f));
-  CHECK(bits(avg.factors[5]) == bits((avg.factors[0] + avg.factors[2]) * 0.5f));
+  CHECK(bitsOf(avg.factors[4]) == bitsOf((avg.factors[1] + avg.factors[3]) * 0.5f));
+  CHECK(bitsOf(avg.factors[5]) == bitsOf((avg.factors[0] + avg.factors[2]) * 0.5f));
   p.inside = InsideRule::Min;
   const PatchLod mn = screenSphere(patch, cam, p);
-  CHECK(bits(mn.factors[5]) == bits(std::min(mn.factors[0], mn.factors[2])));
+  CHECK(bitsOf(mn.factors[5]) == bitsOf(std::min(mn.factors[0], mn.factors[2])));
   p.inside = InsideRule::Max;
   const PatchLod mx = screenSphere(patch, cam, p);
-  CHECK(bits(mx.factors[5]) == bits(std::max(mx.factors[0], mx.factors[2])));
+  CHECK(bitsOf(mx.factors[5]) == bitsOf(std::max(mx.factors[0], mx.factors[2])));
   CHECK(mn.factors[5] < mx.factors[5]); // the edges differ, so the rules do
   // Ueq1 (x = +1 at z = -4): sphere diameter 2 at distance 4 -> 2/4 * 960 = 480 px -> 40.
-  CHECK(bits(mx.factors[2]) == bits(40.0f));
+  CHECK(bitsOf(mx.factors[2]) == bitsOf(40.0f));
 }
 
 TEST_CASE("screenSphere: frustum culling writes -1", "[lod][screen_sphere][culling]") {
@@ -90,7 +90,7 @@ TEST_CASE("screenSphere: frustum culling writes -1", "[lod][screen_sphere][culli
     const PatchLod r = screenSphere(patch, cam);
     CHECK(r.why.culled);
     for (int i = 0; i < 6; ++i) {
-      CHECK(bits(r.factors[i]) == bits(-1.0f));
+      CHECK(bitsOf(r.factors[i]) == bitsOf(-1.0f));
       CHECK((r.why.factor[i].fixes & FixCulled) != 0);
     }
   }

@@ -1,4 +1,4 @@
-#include "test_support.h"
+#include "oracle_test_util.h"
 
 #include <algorithm>
 #include <cstdio>

@@ -32,7 +32,7 @@ TEST_CASE("compare: the float-division port of the README is named (text and JSO
   CHECK(doc["listed"][0]["points"][0]["step"] == "reciprocal rounding");
 }
 
-TEST_CASE("compare: a hex capture from tessellate is the same, also in strict order; a lost patch differs", "[cli]") {
+TEST_CASE("compare: a hex capture from tessellate is the same, also in strict order, a lost patch differs", "[cli]") {
   const std::string batch = clitest::source("docs/examples/compare_port.batch");
   const auto hex = run({"tessellate", "--format", "hex", batch});
   REQUIRE(hex.status == 0);

@@ -1,6 +1,7 @@
 // Silent defaults and wrong counts (issue 13, item 6): every bad argument is an error (exit 2, one line naming it),
 // directories are called directories, and bad bytes or huge tokens never reach the terminal raw.
 #include "run.h"
+#include "usage_error.h"
 
 #include <catch2/catch.hpp>
 
@@ -43,14 +44,7 @@ TEST_CASE("input: counts, seeds and --show are checked, not silently replaced", 
       {{"sweep", kScene, "--random", "2", "--seed", "12x"}, "--seed"},
       {{"check", kScene, "--show", "-1"}, "--show"},
   };
-  for (const Case& c : cases) {
-    INFO(c.args[2] + " " + c.args[3] + " " + c.args.back());
-    const auto r = run(c.args);
-    CHECK(r.status == 2);
-    CHECK(r.out.empty());
-    CHECK(r.err.find(c.mention) != std::string::npos);
-    CHECK(lines(r.err) == 1);
-  }
+  for (const Case& c : cases) clitest::checkUsageError(c.args, c.mention);
   // The largest seed is a seed.
   const auto r = run({"sweep", kScene, "--random", "1", "--seed", "18446744073709551615", "-q"});
   CHECK(r.status == 0);

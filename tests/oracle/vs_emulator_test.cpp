@@ -4,13 +4,13 @@
 // bit for bit: point arrays, primitives as coordinates, index arrays (docs/oracle.md). fftess runs with
 // flushDenormals = true, which is what llvmpipe does to denormal factors.
 //
-//   fftess_oracle_vs_emulator_test [PATCHES [SEED]]
+//   test_oracle_vs_emulator [PATCHES [SEED]]
 //   environment: FFTESS_ORACLE_PATCHES, FFTESS_ORACLE_SEED override the defaults (30000 patches, seed 20261122).
 //
 // A failure lists each differing patch as a batch line, to reproduce with
 //   echo 'LINE' | fftess_gl_oracle      and      echo 'LINE' | fftess tessellate --batch - --format hex
 #include "random_patches.h"
-#include "test_support.h"
+#include "oracle_test_util.h"
 
 #include "tessellator/tessellator.h"
 

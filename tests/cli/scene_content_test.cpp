@@ -70,7 +70,7 @@ TEST_CASE("scene limits and cameras from the command line: exit 2 naming the inp
   CHECK(r.err.find("--set layout.cells_per_patch: more than 4 million patches") != std::string::npos);
 }
 
-TEST_CASE("denormal rule option: --flush-denormals bare = on, =off, =auto; anything else exit 2", "[cli][input]") {
+TEST_CASE("denormal rule option: --flush-denormals bare = on, =off, =auto, anything else exit 2", "[cli][input]") {
   for (const char* v : {"--flush-denormals", "--flush-denormals=on", "--flush-denormals=off", "--flush-denormals=auto"})
     CHECK(run({"check", kGrid, "-q", v}).status == 0);
   const clitest::Result r = run({"check", kGrid, "-q", "--flush-denormals=maybe"});

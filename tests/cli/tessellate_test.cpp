@@ -52,7 +52,7 @@ TEST_CASE("tessellate reads stdin, a file and -e lines alike", "[cli][tessellate
   CHECK(countLinesStartingWith(fromStdin.out, "patch ") == 2);
 }
 
-TEST_CASE("tessellate: a malformed line is an error naming line and token; nothing is printed", "[cli][tessellate]") {
+TEST_CASE("tessellate: a malformed line is an error naming line and token, nothing is printed", "[cli][tessellate]") {
   struct Case {
     const char* line;
     const char* mustMention;

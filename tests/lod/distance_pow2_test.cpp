@@ -4,7 +4,7 @@
 #include "lod_test_util.h"
 
 using namespace fftess::lod;
-using lodtest::bits;
+using fftess::bitsOf;
 using lodtest::hex;
 
 namespace {
@@ -28,27 +28,27 @@ TEST_CASE("distancePow2: hand-computed factors (Luna's defaults 20..500, exponen
   // d = 260: s = 240/480 = 0.5, exponent 6 + 0.5 * (0 - 6) = 3 -> 8. d = 20: 64. d = 500 and beyond: 1.
   const Camera cam = lookingDownZ();
   PatchLod r = distancePow2(strip(100.0f, 260.0f, 20.0f), cam);
-  CHECK(bits(r.factors[1]) == bits(8.0f));
-  CHECK(bits(r.why.factor[1].metric) == bits(260.0f));
-  CHECK(bits(r.why.factor[1].exponent) == bits(3.0f));
-  CHECK(bits(r.factors[3]) == bits(64.0f));
+  CHECK(bitsOf(r.factors[1]) == bitsOf(8.0f));
+  CHECK(bitsOf(r.why.factor[1].metric) == bitsOf(260.0f));
+  CHECK(bitsOf(r.why.factor[1].exponent) == bitsOf(3.0f));
+  CHECK(bitsOf(r.factors[3]) == bitsOf(64.0f));
   r = distancePow2(strip(100.0f, 1000.0f, 500.0f), cam);
-  CHECK(bits(r.factors[1]) == bits(1.0f));
-  CHECK(bits(r.factors[3]) == bits(1.0f));
+  CHECK(bitsOf(r.factors[1]) == bitsOf(1.0f));
+  CHECK(bitsOf(r.factors[3]) == bitsOf(1.0f));
   r = distancePow2(strip(1.0f, 10.0f, 5.0f), cam); // nearer than minDistance: saturates at 64
   for (int i = 0; i < 6; ++i) {
-    CHECK(bits(r.factors[i]) == bits(64.0f));
+    CHECK(bitsOf(r.factors[i]) == bitsOf(64.0f));
   }
   // d = 140: s = 0.25, exponent 4.5, factor 2^4.5 = 22.627417 (exp2 within 1 ulp).
   r = distancePow2(strip(100.0f, 140.0f, 20.0f), cam);
-  CHECK(bits(r.why.factor[1].exponent) == bits(4.5f));
+  CHECK(bitsOf(r.why.factor[1].exponent) == bitsOf(4.5f));
   INFO("2^4.5 = " << hex(r.factors[1]));
   CHECK(lodtest::ulpFrom(r.factors[1], std::exp2(4.5)) <= 1.0);
   // Inside: the patch centre. Strip 260..20: centre at z = -140 -> the same 2^4.5.
   r = distancePow2(strip(100.0f, 260.0f, 20.0f), cam);
-  CHECK(bits(r.factors[4]) == bits(r.factors[5]));
-  CHECK(bits(r.why.factor[4].metric) == bits(140.0f));
-  CHECK(bits(r.factors[4]) == bits(std::exp2(4.5f)));
+  CHECK(bitsOf(r.factors[4]) == bitsOf(r.factors[5]));
+  CHECK(bitsOf(r.why.factor[4].metric) == bitsOf(140.0f));
+  CHECK(bitsOf(r.factors[4]) == bitsOf(std::exp2(4.5f)));
 }
 
 TEST_CASE("distancePow2: factors stay in [2^minExp, 2^maxExp] and fall with distance", "[lod][distance_pow2]") {
@@ -71,7 +71,7 @@ TEST_CASE("distancePow2: AABB culling with height bounds writes 0", "[lod][dista
   PatchLod r = distancePow2(strip(10.0f, -100.0f, -120.0f), cam);
   CHECK(r.why.culled);
   for (float f : r.factors) {
-    CHECK(bits(f) == bits(0.0f));
+    CHECK(bitsOf(f) == bitsOf(0.0f));
   }
   // Flat patch far below the view at y = -1000, 100 in front: outside the bottom plane (fovy 1.2 rad).
   Patch low = strip(10.0f, 110.0f, 100.0f);

@@ -4,7 +4,7 @@
 #include "lod_test_util.h"
 
 using namespace fftess::lod;
-using lodtest::bits;
+using fftess::bitsOf;
 using lodtest::hex;
 
 TEST_CASE("clipDiameter: hand-computed factors with the exact camera", "[lod][clip_diameter]") {
@@ -12,43 +12,43 @@ TEST_CASE("clipDiameter: hand-computed factors with the exact camera", "[lod][cl
   const Camera cam = lodtest::exactCamera();
   PatchLod r = clipDiameter(lodtest::facingPatch(0.0f, 0.0f, -8.0f), cam);
   for (int i = 0; i < 6; ++i) {
-    CHECK(bits(r.factors[i]) == bits(4.0f));
+    CHECK(bitsOf(r.factors[i]) == bitsOf(4.0f));
   }
-  CHECK(bits(r.why.factor[0].metric) == bits(0.25f));
+  CHECK(bitsOf(r.why.factor[0].metric) == bitsOf(0.25f));
   CHECK(r.why.scheme == Scheme::ClipDiameter);
   // 1024 edges per screen height: 256 -> clamped to 64; 2: 0.5 -> clamped to 1.
   ClipDiameterParams p;
   p.edgesPerScreenHeight = 1024.0f;
   r = clipDiameter(lodtest::facingPatch(0.0f, 0.0f, -8.0f), cam, p);
-  CHECK(bits(r.factors[0]) == bits(64.0f));
-  CHECK(bits(r.why.factor[0].unclamped) == bits(256.0f));
+  CHECK(bitsOf(r.factors[0]) == bitsOf(64.0f));
+  CHECK(bitsOf(r.why.factor[0].unclamped) == bitsOf(256.0f));
   CHECK(r.why.factor[0].fixes == FixClampedMax);
   p.edgesPerScreenHeight = 2.0f;
   r = clipDiameter(lodtest::facingPatch(0.0f, 0.0f, -8.0f), cam, p);
-  CHECK(bits(r.factors[0]) == bits(1.0f));
+  CHECK(bitsOf(r.factors[0]) == bitsOf(1.0f));
   CHECK(r.why.factor[0].fixes == FixClampedMin);
 }
 
-TEST_CASE("clipDiameter: behind the eye gets minFactor; no culling unless asked", "[lod][clip_diameter][culling]") {
+TEST_CASE("clipDiameter: behind the eye gets minFactor, no culling unless asked", "[lod][clip_diameter][culling]") {
   const Camera cam = lodtest::exactCamera();
   PatchLod r = clipDiameter(lodtest::facingPatch(0.0f, 0.0f, 8.0f), cam); // clip.w = -8
   CHECK_FALSE(r.why.culled);
   for (int i = 0; i < 4; ++i) {
-    CHECK(bits(r.factors[i]) == bits(1.0f));
-    CHECK(bits(r.why.factor[i].unclamped) == bits(-4.0f));
+    CHECK(bitsOf(r.factors[i]) == bitsOf(1.0f));
+    CHECK(bitsOf(r.why.factor[i].unclamped) == bitsOf(-4.0f));
   }
   // On the eye plane (w = 0): minFactor, not NaN or Inf.
   Patch onPlane = lodtest::facingPatch(0.0f, 0.0f, 0.0f);
   r = clipDiameter(onPlane, cam);
   for (float f : r.factors) {
-    CHECK(bits(f) == bits(1.0f));
+    CHECK(bitsOf(f) == bitsOf(1.0f));
   }
   ClipDiameterParams p;
   p.frustumCull = true;
   r = clipDiameter(lodtest::facingPatch(0.0f, 0.0f, 8.0f), cam, p);
   CHECK(r.why.culled);
   for (float f : r.factors) {
-    CHECK(bits(f) == bits(0.0f));
+    CHECK(bitsOf(f) == bitsOf(0.0f));
   }
 }
 

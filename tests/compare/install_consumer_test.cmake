@@ -1,4 +1,4 @@
-# ctest compare_install_consumer: installs the build tree into BUILD/install-test, then configures, builds and runs
+# ctest "compare:install consumer": installs the build tree into BUILD/install-test, then configures, builds and runs
 # docs/examples/consumer (find_package(fftess COMPONENTS compare) -> fftess::compare) from a temporary directory.
 set(prefix ${BUILD}/install-test)
 set(work ${BUILD}/consumer-test)

@@ -118,7 +118,7 @@ TEST_CASE("hostile: a stdout that cannot be written exits 3 (check, sweep, expla
   CHECK(isCharDevice(full));
 }
 
-TEST_CASE("hostile: unusable output paths exit 2 before the work and name the path; reports are all or nothing",
+TEST_CASE("hostile: unusable output paths exit 2 before the work and name the path, reports are all or nothing",
           "[cli][hostile]") {
   const std::string d = scratch("paths");
   const std::string file = d + "/plain";
