@@ -4,7 +4,7 @@
 // against its group's reference row on the same cameras. docs/accuracy.md holds the table for the default scene.
 #include "accuracy.h"
 #include "common.h"
-#include "findings.h"
+#include "scene_options.h"
 
 #include "lod/lod_double.h"
 #include "verify/internal.h" // the LOD's inputs per patch, for the float-vs-double row (bench only)

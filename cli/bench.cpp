@@ -1,6 +1,8 @@
 // fftess bench: runs the Google Benchmark program built from bench/ (fftess_bench, installed next to fftess).
 #include "commands.h"
 #include "common.h"
+
+#include <CLI/CLI.hpp>
 #include "accuracy.h"
 
 #include <memory>

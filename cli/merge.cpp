@@ -2,10 +2,13 @@
 // report one unsharded run writes, byte for byte: cameras in global index order, stats summed (worst gaps the
 // maxima), causes merged (the first camera by lowest global index, its example with it), the verdict recomputed with
 // verify::verdictOf, the work summed with the terrain build counted once.
-#include "check.h"
+#include "causes.h"
+#include "commands.h"
 #include "common.h"
-#include "findings.h"
 #include "report_json.h"
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <fstream>

@@ -2,6 +2,8 @@
 #include "commands.h"
 #include "common.h"
 
+#include <CLI/CLI.hpp>
+
 #include "tessellator/batch.h"
 #include "tessellator/names.h"
 #include "tessellator/parallel.h"
