@@ -4,10 +4,13 @@
 // against its group's reference row on the same cameras. docs/accuracy.md holds the table for the default scene.
 #include "accuracy.h"
 #include "common.h"
-#include "findings.h"
+#include "report_json.h"
+#include "scene_options.h"
 
 #include "lod/lod_double.h"
 #include "verify/internal.h" // the LOD's inputs per patch, for the float-vs-double row (bench only)
+
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -315,7 +318,7 @@ std::string benchText(const BenchTable& t) {
   return o;
 }
 
-json benchJson(const BenchTable& t) {
+std::string benchJson(const BenchTable& t) {
   json j;
   j["kind"] = "bench";
   j["version"] = 1;
@@ -345,7 +348,7 @@ json benchJson(const BenchTable& t) {
     rows.push_back(x);
   }
   j["rows"] = rows;
-  return j;
+  return j.dump(2) + "\n";
 }
 
 std::string benchSvg(const BenchTable& t) {

@@ -1,12 +1,14 @@
 // fftess bench's table: what accuracy costs in time (cli/accuracy.cpp; docs/accuracy.md).
 #pragma once
 
-#include "report_json.h"
+#include "verify/verify.h"
 
 #include <string>
 #include <vector>
 
 namespace fftess::cli {
+
+namespace vf = fftess::verify;
 
 struct BenchReportArgs {
   std::string scene;                  // --scene (default docs/examples/terrain.toml of the source tree)
@@ -41,7 +43,7 @@ struct BenchTable {
 BenchTable runBenchTable(const BenchReportArgs& a);
 std::string benchText(const BenchTable& t);
 std::string benchMarkdown(const BenchTable& t);
-json benchJson(const BenchTable& t);
+std::string benchJson(const BenchTable& t); // the JSON report (docs/accuracy.md), dump(2) and a newline
 std::string benchSvg(const BenchTable& t);
 
 } // namespace fftess::cli

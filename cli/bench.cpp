@@ -1,6 +1,8 @@
 // fftess bench: runs the Google Benchmark program built from bench/ (fftess_bench, installed next to fftess).
 #include "commands.h"
 #include "common.h"
+
+#include <CLI/CLI.hpp>
 #include "accuracy.h"
 
 #include <memory>
@@ -74,7 +76,7 @@ static int runBenchReport(const BenchArgs& a) {
   AtomicFile* files[3];
   size_t n = 0;
   if (md) md->buffer() = benchMarkdown(t), files[n++] = md.get();
-  if (js) js->buffer() = benchJson(t).dump(2) + "\n", files[n++] = js.get();
+  if (js) js->buffer() = benchJson(t), files[n++] = js.get();
   if (svg) svg->buffer() = benchSvg(t), files[n++] = svg.get();
   commitAll(files, n);
   if (!a.quiet) writeStdout(benchText(t));

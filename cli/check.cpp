@@ -1,11 +1,15 @@
 // fftess check SCENE: run verify/ on one camera, print a summary and one line per finding, write the JSON / SVG
 // reports atomically, and turn the verdict into an exit status.
-#include "check.h"
+#include "causes.h"
+#include "commands.h"
 #include "common.h"
-#include "findings.h"
 #include "gpu_lod.h"
 #include "report_json.h"
 #include "report_svg.h"
+#include "scene_options.h"
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cstdio>
@@ -86,122 +90,172 @@ CLI::App* addCheck(CLI::App& app, CheckArgs& a) {
   return sub;
 }
 
-int runCheck(const CheckArgs& a) {
+namespace {
+
+// --show and --path-camera, checked before any work.
+void checkCheckArgs(const CheckArgs& a) {
   if (a.show < 0) throw UsageError("--show " + std::to_string(a.show) + ": must be >= 0");
   if (a.pathCameraGiven && a.pathCamera < 0)
     throw UsageError("--path-camera " + std::to_string(a.pathCamera) + ": must be >= 0 (0 is the path's first camera)");
-  ReportFiles reports(a); // output paths are checked before the work
-  const vf::Terrain terrain = load(a); // the one terrain build of this command
-  const vf::Scene& scene = terrain.scene();
-  vf::Camera cam = scene.camera;
-  if (a.pathCameraGiven) {
-    if (static_cast<size_t>(a.pathCamera) >= scene.cameraPath.size())
-      throw UsageError("--path-camera " + std::to_string(a.pathCamera) + ": the scene's camera path has " +
-                       std::to_string(scene.cameraPath.size()) + " cameras");
-    cam = scene.cameraPath[static_cast<size_t>(a.pathCamera)];
-  }
-  vf::CheckOptions opt = checkOptions(a, terrain);
-  const size_t keep = opt.maxFindings;
-  if (a.mesh) opt.maxFindings = static_cast<size_t>(-1); // the mesh comparison needs every finding
-  vf::Report full = vf::checkScene(terrain, cam, opt); // the one edge check of this camera
-  if (!full.error.empty()) throw UsageError(full.error);
-  // What the report keeps (CheckOptions::maxFindings), the same as a check without --mesh.
+}
+
+// The scene's [camera], or with --path-camera N its camera path's camera N.
+vf::Camera checkCamera(const CheckArgs& a, const vf::Scene& scene) {
+  if (!a.pathCameraGiven) return scene.camera;
+  if (static_cast<size_t>(a.pathCamera) >= scene.cameraPath.size())
+    throw UsageError("--path-camera " + std::to_string(a.pathCamera) + ": the scene's camera path has " +
+                     std::to_string(scene.cameraPath.size()) + " cameras");
+  return scene.cameraPath[static_cast<size_t>(a.pathCamera)];
+}
+
+// What the report keeps (CheckOptions::maxFindings), the same as a check without --mesh.
+vf::Report keptReport(const vf::Report& full, size_t keep) {
   vf::Report r = full;
   if (r.findings.size() > keep) {
     r.findings.resize(keep);
     r.truncated = true;
   }
-  const bool jsonToStdout = a.json == "-";
+  return r;
+}
+
+// The holes, undecided patches and findings, at most --show lines: the findings on screen first, then those off
+// screen (apart: not counted unless --offscreen); then how many more there are.
+std::string findingLines(const CheckArgs& a, const vf::Report& r) {
   std::string text;
-  if (!a.quiet && !jsonToStdout) {
-    text += "fftess check " + a.scene + (scene.name.empty() ? "" : " (" + scene.name + ")") + "\n";
-    for (const std::string& s : overridesOf(a)) text += "  --set " + s + "\n";
-    char buf[200];
-    std::snprintf(buf, sizeof buf, "  camera eye (%g, %g, %g) target (%g, %g, %g), %dx%d\n", static_cast<double>(cam.eye.x),
-                  static_cast<double>(cam.eye.y), static_cast<double>(cam.eye.z), static_cast<double>(cam.target.x),
-                  static_cast<double>(cam.target.y), static_cast<double>(cam.target.z), cam.width, cam.height);
-    text += buf;
-    text += statsText(r.stats, a.offscreen);
-    {
-      FactorDiffTally gpuDiffs; // lod.evaluate = "gpu" / lod.shader (cli/gpu_lod.h)
-      gpuDiffs.add(0, full);
-      text += gpuDiffs.text(scene, opt, r.stats);
-    }
-    int shown = 0;
-    for (const vf::Hole& h : r.holes) {
-      if (shown++ >= a.show) break;
-      text += holeLine(h) + "\n";
-    }
-    for (const vf::Hole& h : r.undecided) {
-      if (shown++ >= a.show) break;
-      text += holeLine(h) + "\n";
-    }
-    // The findings on screen first, then those off screen (apart: not counted unless --offscreen).
-    for (const bool onScreen : {true, false}) {
-      bool header = onScreen;
-      for (const vf::Finding& f : r.findings) {
-        if (f.classification == vf::Classification::Match || f.onScreen != onScreen) continue;
-        if (shown++ >= a.show) break;
-        if (!header)
-          text += std::string("  off screen") + (a.offscreen ? " (counted, --offscreen):" : ", not counted:") + "\n";
-        header = true;
-        text += findingLine(f) + "\n";
-      }
-    }
-    const int64_t nonMatch = r.stats.cracks + r.stats.tJunctions + r.stats.holes + r.stats.undecided;
-    if (shown > a.show || nonMatch > a.show)
-      text += "  ... " + std::to_string(nonMatch - a.show) + " more findings (--show N, or --json FILE)\n";
+  int shown = 0;
+  for (const vf::Hole& h : r.holes) {
+    if (shown++ >= a.show) break;
+    text += holeLine(h) + "\n";
   }
+  for (const vf::Hole& h : r.undecided) {
+    if (shown++ >= a.show) break;
+    text += holeLine(h) + "\n";
+  }
+  for (const bool onScreen : {true, false}) {
+    bool header = onScreen;
+    for (const vf::Finding& f : r.findings) {
+      if (f.classification == vf::Classification::Match || f.onScreen != onScreen) continue;
+      if (shown++ >= a.show) break;
+      if (!header)
+        text += std::string("  off screen") + (a.offscreen ? " (counted, --offscreen):" : ", not counted:") + "\n";
+      header = true;
+      text += findingLine(f) + "\n";
+    }
+  }
+  const int64_t nonMatch = r.stats.cracks + r.stats.tJunctions + r.stats.holes + r.stats.undecided;
+  if (shown > a.show || nonMatch > a.show)
+    text += "  ... " + std::to_string(nonMatch - a.show) + " more findings (--show N, or --json FILE)\n";
+  return text;
+}
+
+// The text report before the verdict: the scene, overrides and camera, the stats, the GPU factor section, the
+// finding lines.
+std::string checkText(const CheckArgs& a, const vf::Scene& scene, const vf::Camera& cam, const vf::CheckOptions& opt,
+                      const vf::Report& full, const vf::Report& r) {
+  std::string text = "fftess check " + a.scene + (scene.name.empty() ? "" : " (" + scene.name + ")") + "\n";
+  for (const std::string& s : overridesOf(a)) text += "  --set " + s + "\n";
+  char buf[200];
+  std::snprintf(buf, sizeof buf, "  camera eye (%g, %g, %g) target (%g, %g, %g), %dx%d\n", static_cast<double>(cam.eye.x),
+                static_cast<double>(cam.eye.y), static_cast<double>(cam.eye.z), static_cast<double>(cam.target.x),
+                static_cast<double>(cam.target.y), static_cast<double>(cam.target.z), cam.width, cam.height);
+  text += buf;
+  text += statsText(r.stats, a.offscreen);
+  FactorDiffTally gpuDiffs; // lod.evaluate = "gpu" / lod.shader (cli/gpu_lod.h)
+  gpuDiffs.add(0, full);
+  text += gpuDiffs.text(scene, opt, r.stats);
+  return text + findingLines(a, r);
+}
+
+// --mesh: the whole-mesh check of the same camera and where it disagrees with the edge check.
+struct MeshRun {
   vf::MeshReport mesh;
   MeshDiff diff;
-  if (a.mesh) {
-    mesh = vf::checkSceneMesh(terrain, cam, opt);
-    if (!mesh.error.empty()) throw UsageError(mesh.error);
-    diff = meshDiff(full, mesh);
-    if (!a.quiet && !jsonToStdout) {
-      text += "whole-mesh check: " + std::to_string(mesh.triangles) + " triangles, " +
-              std::to_string(mesh.innerBorderEdges) + " inner border edges on " + std::to_string(mesh.flagged.size()) +
-              " patch edges: " + (diff.agree() ? "agrees with the edge check" : "DISAGREES with the edge check") + "\n";
-      if (!diff.agree()) text += meshDiffText(terrain, full, diff, a.show);
-    }
+};
+
+MeshRun runMesh(const vf::Terrain& terrain, const vf::Camera& cam, const vf::CheckOptions& opt, const vf::Report& full) {
+  MeshRun m;
+  m.mesh = vf::checkSceneMesh(terrain, cam, opt);
+  if (!m.mesh.error.empty()) throw UsageError(m.mesh.error);
+  m.diff = meshDiff(full, m.mesh);
+  return m;
+}
+
+std::string meshText(const vf::Terrain& terrain, const vf::Report& full, const MeshRun& m, int show) {
+  std::string text = "whole-mesh check: " + std::to_string(m.mesh.triangles) + " triangles, " +
+                     std::to_string(m.mesh.innerBorderEdges) + " inner border edges on " +
+                     std::to_string(m.mesh.flagged.size()) + " patch edges: " +
+                     (m.diff.agree() ? "agrees with the edge check" : "DISAGREES with the edge check") + "\n";
+  if (!m.diff.agree()) text += meshDiffText(terrain, full, m.diff, show);
+  return text;
+}
+
+// The verdict line of a check.
+std::string checkVerdictLine(vf::Verdict verdict, const vf::Stats& stats, bool countOffScreen, bool meshAgrees) {
+  std::string words;
+  switch (verdict) {
+  case vf::Verdict::Cracks: words = stats.holes > 0 ? "CRACKS and HOLES" : "CRACKS"; break;
+  case vf::Verdict::Holes: words = "HOLES (patches not drawn while in view)"; break;
+  case vf::Verdict::NothingChecked:
+    words = "NOTHING CHECKED: no shared edge was classified (every patch culled or out of view, or the layout has "
+            "no shared edge); not a clean verdict";
+    break;
+  case vf::Verdict::Undecided:
+    words = "UNDECIDED: " + std::to_string(stats.undecided) +
+            " patches not drawn could be neither proven visible nor invisible (listed above); not a clean verdict";
+    break;
+  case vf::Verdict::TJunctionsOnly: words = "watertight now (T-junctions)"; break;
+  default: words = "watertight"; break;
   }
-  const vf::Verdict verdict = vf::verdictOf(r.stats, a.offscreen);
-  // A disagreement of the two checks is a finding (exit 1), reported with both sides, never a clean verdict.
-  const int status = diff.agree() ? verdictStatus(a, verdict) : kExitFindings;
-  if (!a.quiet && !jsonToStdout) {
-    std::string words;
-    switch (verdict) {
-    case vf::Verdict::Cracks: words = r.stats.holes > 0 ? "CRACKS and HOLES" : "CRACKS"; break;
-    case vf::Verdict::Holes: words = "HOLES (patches not drawn while in view)"; break;
-    case vf::Verdict::NothingChecked:
-      words = "NOTHING CHECKED: no shared edge was classified (every patch culled or out of view, or the layout has "
-              "no shared edge); not a clean verdict";
-      break;
-    case vf::Verdict::Undecided:
-      words = "UNDECIDED: " + std::to_string(r.stats.undecided) +
-              " patches not drawn could be neither proven visible nor invisible (listed above); not a clean verdict";
-      break;
-    case vf::Verdict::TJunctionsOnly: words = "watertight now (T-junctions)"; break;
-    default: words = "watertight"; break;
-    }
-    if (r.stats.undecided > 0 && verdict != vf::Verdict::Undecided)
-      words += " (and " + std::to_string(r.stats.undecided) + " patches of undecided visibility)";
-    const std::string off = offScreenWords(r.stats, a.offscreen);
-    if (!off.empty()) words += " (" + off + ")";
-    if (!diff.agree()) words += "; the whole-mesh check DISAGREES with the edge check (exit 1)";
-    text += "verdict: " + words + "\n";
-  }
-  // Reports first (atomically), then the text: a failure writing a report leaves no partial file.
+  if (stats.undecided > 0 && verdict != vf::Verdict::Undecided)
+    words += " (and " + std::to_string(stats.undecided) + " patches of undecided visibility)";
+  const std::string off = offScreenWords(stats, countOffScreen);
+  if (!off.empty()) words += " (" + off + ")";
+  if (!meshAgrees) words += "; the whole-mesh check DISAGREES with the edge check (exit 1)";
+  return "verdict: " + words + "\n";
+}
+
+// The --json and --svg reports, written all or nothing.
+void writeCheckReports(const CheckArgs& a, ReportFiles& reports, const vf::Terrain& terrain, const vf::Camera& cam,
+                       const vf::Report& r, const MeshRun* mesh) {
   if (!a.json.empty()) {
-    json j = checkJson(a, terrain, cam, r, a.mesh ? &mesh : nullptr);
-    if (a.mesh) {
-      const json d = meshDiffJson(terrain, diff);
+    json j = checkJson(a, terrain, cam, r, mesh ? &mesh->mesh : nullptr);
+    if (mesh) {
+      const json d = meshDiffJson(terrain, mesh->diff);
       for (auto it = d.begin(); it != d.end(); ++it) j["mesh"][it.key()] = it.value();
     }
     reports.setJson(j.dump(2) + "\n");
   }
   if (!a.svg.empty()) reports.setSvg(checkSvg(terrain, r, "fftess check " + a.scene, a.offscreen));
   reports.commit(); // all or nothing
+}
+
+} // namespace
+
+int runCheck(const CheckArgs& a) {
+  checkCheckArgs(a);
+  ReportFiles reports(a); // output paths are checked before the work
+  const vf::Terrain terrain = load(a); // the one terrain build of this command
+  const vf::Scene& scene = terrain.scene();
+  const vf::Camera cam = checkCamera(a, scene);
+  vf::CheckOptions opt = checkOptions(a, terrain);
+  const size_t keep = opt.maxFindings;
+  if (a.mesh) opt.maxFindings = static_cast<size_t>(-1); // the mesh comparison needs every finding
+  const vf::Report full = vf::checkScene(terrain, cam, opt); // the one edge check of this camera
+  if (!full.error.empty()) throw UsageError(full.error);
+  const vf::Report r = keptReport(full, keep);
+  const bool talk = !a.quiet && a.json != "-";
+  std::string text = talk ? checkText(a, scene, cam, opt, full, r) : "";
+  MeshRun mesh;
+  if (a.mesh) {
+    mesh = runMesh(terrain, cam, opt, full);
+    if (talk) text += meshText(terrain, full, mesh, a.show);
+  }
+  const vf::Verdict verdict = vf::verdictOf(r.stats, a.offscreen);
+  // A disagreement of the two checks is a finding (exit 1), reported with both sides, never a clean verdict.
+  const int status = mesh.diff.agree() ? verdictStatus(verdict, a.failOnTJunctions) : kExitFindings;
+  if (talk) text += checkVerdictLine(verdict, r.stats, a.offscreen, mesh.diff.agree());
+  // Reports first (atomically), then the text: a failure writing a report leaves no partial file.
+  writeCheckReports(a, reports, terrain, cam, r, a.mesh ? &mesh : nullptr);
   writeStdout(text);
   flushStdout();
   return status;

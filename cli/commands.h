@@ -1,11 +1,16 @@
-// Subcommand registration. Each add* function adds its subcommand to the app and returns it; run* executes it after
-// a successful parse and returns the exit status (errors: throws UsageError -> 2, anything else -> 3).
+// Subcommand registration: each subcommand's arguments, and its add* function, which adds the subcommand to the app
+// and returns it (defined with the subcommand, the only files that include CLI11); run* executes it after a successful
+// parse and returns the exit status (errors: throws UsageError -> 2, anything else -> 3). No heavy header: main.cpp
+// and every command include this.
 #pragma once
 
-#include <CLI/CLI.hpp>
-
+#include <cstdint>
 #include <string>
 #include <vector>
+
+namespace CLI {
+class App;
+}
 
 namespace fftess::cli {
 
@@ -46,5 +51,81 @@ struct BenchArgs {
 };
 CLI::App* addBench(CLI::App& app, BenchArgs& a);
 int runBench(const BenchArgs& a, const char* argv0);
+
+// ---- check, sweep, merge (cli/check.cpp, cli/sweep.cpp, cli/merge.cpp): the crack checker people run (verify/ does the
+// checking; these turn its reports into text, JSON, SVG and an exit status). The scene options both share:
+// cli/scene_options.h.
+struct SceneArgs {
+  std::string scene;
+  std::vector<std::string> overrides; // --set KEY=VALUE
+  std::string eye, target;            // --eye X,Y,Z / --target X,Y,Z: shorthands for --set camera.eye=[X,Y,Z]
+  std::string kernel = "epick";
+  std::string flushDenormals = "auto"; // --flush-denormals[=on|off|auto]: bare = on
+  std::string json, svg;
+  bool quiet = false;
+  bool failOnTJunctions = false;
+  bool gpuHardware = false; // --gpu-hardware: the GPU LOD path on a GPU's EGL device instead of llvmpipe
+  bool offscreen = false;   // --offscreen: findings outside the view frustum count too (vf::CheckOptions::countOffScreen)
+};
+
+struct CheckArgs : SceneArgs {
+  int pathCamera = -1; // --path-camera N: the scene path's camera N instead of [camera]
+  bool pathCameraGiven = false; // --path-camera was given (any value, negative ones refused)
+  int show = 20;       // finding lines printed
+  bool mesh = false;   // also run the whole-mesh check and compare
+};
+
+struct SweepArgs : SceneArgs {
+  int orbit = -1, flyover = -1, random = -1; // -1: not given; given counts must be >= 1
+  bool orbitGiven = false, flyoverGiven = false, randomGiven = false; // the option was given (-1 included: refused)
+  std::string seed = "1";                     // --seed: a decimal 0 .. 2^64-1, checked by runSweep
+  int threads = 0;
+  std::string label;   // --label TEXT: name printed in the summary (default: the scene name)
+  std::string shard;   // --shard K/N: only the cameras i with i % N == K - 1 (global indices kept)
+};
+
+struct MergeArgs {
+  std::vector<std::string> inputs; // shards' JSON reports
+  std::string json;                // --json FILE: the merged report ("-": stdout)
+  bool quiet = false;
+  bool failOnTJunctions = false;
+};
+
+CLI::App* addCheck(CLI::App& app, CheckArgs& a);
+CLI::App* addSweep(CLI::App& app, SweepArgs& a);
+int runCheck(const CheckArgs& a);
+int runSweep(const SweepArgs& a);
+CLI::App* addMerge(CLI::App& app, MergeArgs& a);
+int runMerge(const MergeArgs& a);
+
+// ---- compare, driver-check (cli/compare.cpp, cli/driver_check.cpp; their report: cli/compare_report.h). Exit 0
+// same, 1 differs, 2 bad input, 3 internal.
+struct CompareArgs {
+  std::string patches;
+  std::string capture;
+  std::string format = "auto";
+  bool strictOrder = false;
+  bool json = false;
+  bool flushDenormals = false;
+  int show = 20;
+  int details = 4;
+};
+CLI::App* addCompare(CLI::App& app, CompareArgs& a);
+int runCompare(const CompareArgs& a);
+
+struct DriverCheckArgs {
+  std::string patches; // empty: random
+  long random = 1000;
+  uint64_t seed = 1;
+  bool hardware = false;
+  bool strictOrder = false;
+  bool flushDenormals = false;
+  bool json = false;
+  int show = 20;
+};
+// fftess driver-check (cli/driver_check.cpp): the local GL driver's tessellator through the comparison of compare.
+CLI::App* addDriverCheck(CLI::App& app, DriverCheckArgs& a);
+int runDriverCheck(const DriverCheckArgs& a);
+
 
 } // namespace fftess::cli

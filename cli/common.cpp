@@ -316,11 +316,7 @@ std::string formatNumber(double v) {
   return buf;
 }
 
-std::string fixed16(uint32_t v) {
-  char buf[16];
-  std::snprintf(buf, sizeof buf, "0x%08x", v);
-  return buf;
-}
+std::string fixed16(uint32_t v) { return "0x" + hex8(v); }
 
 std::string fractionOf65536(int64_t units2) {
   bool neg = units2 < 0;

@@ -1,7 +1,9 @@
 // fftess compare PATCHES CAPTURE: another tessellator's output against the emulator, patch by patch, streamed
 // (compare/compare.h does the comparing; this file reads the files, prints and picks the exit status).
 #include "common.h"
-#include "compare_cmd.h"
+#include "compare_report.h"
+
+#include <CLI/CLI.hpp>
 
 #include "tessellator/batch.h"
 #include "compare/capture.h"

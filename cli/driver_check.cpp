@@ -2,7 +2,9 @@
 // ones) go through the driver (gl/: headless EGL, transform-feedback capture; llvmpipe by default) and the
 // captures through the same comparison as `fftess compare` (compare/compare.h).
 #include "common.h"
-#include "compare_cmd.h"
+#include "compare_report.h"
+
+#include <CLI/CLI.hpp>
 
 #include "tessellator/batch.h"
 #include "compare/compare.h"

@@ -5,6 +5,8 @@
 #include "commands.h"
 #include "common.h"
 
+#include <CLI/CLI.hpp>
+
 #include "tessellator/batch.h"
 #include "tessellator/edge_analysis.h"
 #include "tessellator/names.h"

@@ -1,7 +1,7 @@
 // The GPU path of the LOD in the cli. See gpu_lod.h.
 #include "gpu_lod.h"
 #include "common.h"
-#include "findings.h"
+#include "causes.h"
 
 #ifdef FFTESS_HAVE_GL
 #include "gpu_lod/gpu_lod.h"

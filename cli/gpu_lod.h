@@ -2,7 +2,7 @@
 // (gpu_lod/gpu_lod.h, when fftess_gl is built) and the report section "factor differs from the GPU build".
 #pragma once
 
-#include "check.h"
+#include "commands.h"
 
 #include "verify/verify.h"
 

@@ -14,8 +14,6 @@
 #include <exception>
 #include <new>
 
-#include "check.h"
-#include "compare_cmd.h"
 
 // A standard stream the caller closed (`<&-`, `>&-`) is opened on /dev/null the wrong way round: reading a closed stdin
 // or writing a closed stdout then fails with EBADF and is reported (never read as empty input or written to

@@ -2,10 +2,14 @@
 // report one unsharded run writes, byte for byte: cameras in global index order, stats summed (worst gaps the
 // maxima), causes merged (the first camera by lowest global index, its example with it), the verdict recomputed with
 // verify::verdictOf, the work summed with the terrain build counted once.
-#include "check.h"
+#include "causes.h"
+#include "commands.h"
 #include "common.h"
-#include "findings.h"
 #include "report_json.h"
+#include "scene_options.h"
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <fstream>
@@ -75,28 +79,19 @@ vf::Stats statsOf(const json& j) {
   return s;
 }
 
-} // namespace
-
-int runMerge(const MergeArgs& a) {
-  if (a.inputs.empty()) throw UsageError("merge: no reports");
-  std::unique_ptr<AtomicFile> out;
-  std::vector<FileArg> inputs;
-  for (const std::string& p : a.inputs) inputs.push_back({"REPORT", p});
-  refuseSameFiles({{"--json", a.json}}, inputs);
-  if (!a.json.empty()) out = std::make_unique<AtomicFile>(a.json); // the path is checked before the work
-  std::vector<json> shards;
-  for (const std::string& p : a.inputs) shards.push_back(readReport(p));
-
-  // One sweep: same header (scene, overrides, cameras), shards 1..N each once (or one unsharded report).
-  json header = shards[0];
+// The shards' common header: a shard's report without what differs between the shards of one sweep.
+json mergeHeader(const json& shard) {
+  json header = shard;
   for (const char* k : {"cameras", "shard", "cameras_total", "cameras_done", "cancelled", "cameras_not_done",
                         "cameras_invalid", "cameras_nothing_checked", "cameras_undecided", "stats", "verdict",
                         "causes", "work", "terrain_work"})
     header.erase(k);
-  size_t count = 0;
-  std::vector<char> seen;
-  // The scene's content first (Scene::contentHash: the file's bytes, the overrides, the files it names): the same
-  // path and overrides may have held another scene when a shard ran.
+  return header;
+}
+
+// The scene's content first (Scene::contentHash: the file's bytes, the overrides, the files it names): the same
+// path and overrides may have held another scene when a shard ran.
+void checkSameScene(const MergeArgs& a, const std::vector<json>& shards) {
   const json hash0 = shards[0].value("scene_hash", json());
   for (size_t i = 1; i < shards.size(); ++i) {
     const json hash = shards[i].value("scene_hash", json());
@@ -106,8 +101,15 @@ int runMerge(const MergeArgs& a) {
                        ": the shards ran on different contents of the scene (its file, --set overrides or the files it "
                        "names changed between the runs)");
   }
+}
+
+// One sweep: the same header (scene, overrides, cameras) in every report, shards 1..N each once (or one unsharded
+// report).
+void checkShardSet(const MergeArgs& a, const std::vector<json>& shards, const json& header) {
+  size_t count = 0;
+  std::vector<char> seen;
   for (size_t i = 0; i < shards.size(); ++i) {
-    json h = shards[i];
+    const json& h = shards[i];
     for (auto it = header.begin(); it != header.end(); ++it)
       if (h.value(it.key(), json()) != it.value())
         throw UsageError("merge: " + quotePath(a.inputs[i]) + ": \"" + it.key() + "\" differs from " +
@@ -130,17 +132,22 @@ int runMerge(const MergeArgs& a) {
   for (size_t k = 0; k < count; ++k)
     if (!seen[k])
       throw UsageError("merge: shard " + std::to_string(k + 1) + "/" + std::to_string(count) + " missing");
+}
 
-  // Cameras in global index order (each shard's list is already in order).
+// Cameras in global index order (each shard's list is already in order).
+std::vector<const json*> mergedCameras(const std::vector<json>& shards) {
   std::vector<const json*> cams;
   for (const json& s : shards)
     for (const json& c : s.at("cameras")) cams.push_back(&c);
   std::stable_sort(cams.begin(), cams.end(),
                    [](const json* x, const json* y) { return x->at("index").get<size_t>() < y->at("index").get<size_t>(); });
+  return cams;
+}
 
-  // Summary.
+// The summed result (total: the cameras asked for).
+vf::SweepResult mergedResult(const std::vector<json>& shards, size_t& total) {
   vf::SweepResult res;
-  size_t total = 0;
+  total = 0;
   for (const json& s : shards) {
     total += s.at("cameras_total").get<size_t>();
     res.camerasDone += s.at("cameras_done").get<size_t>();
@@ -150,8 +157,12 @@ int runMerge(const MergeArgs& a) {
     res.cancelled = res.cancelled || s.at("cancelled").get<bool>();
     vf::accumulate(res.total, statsOf(s.at("stats")));
   }
-  // Causes: per key the sums, the lowest first camera and its example; ordered by first camera, then by the order
-  // within the shard that holds it (the order of its first findings).
+  return res;
+}
+
+// Causes: per key the sums, the lowest first camera and its example; ordered by first camera, then by the order
+// within the shard that holds it (the order of its first findings).
+std::vector<CauseRow> mergedCauses(const std::vector<json>& shards) {
   struct MergedCause {
     CauseRow row;
     size_t position = 0;
@@ -182,21 +193,62 @@ int runMerge(const MergeArgs& a) {
   });
   std::vector<CauseRow> rows;
   for (const MergedCause& c : ordered) rows.push_back(c.row);
-  // Work: each shard's camera work (work - terrain_work), plus one terrain build's work.
-  const json& terrain0 = shards[0].at("terrain_work");
-  json work = terrain0;
+  return rows;
+}
+
+// Work: each shard's camera work (work - terrain_work), plus one terrain build's work.
+json mergedWork(const std::vector<json>& shards) {
+  json work = shards[0].at("terrain_work");
   for (const json& s : shards)
     for (auto it = work.begin(); it != work.end(); ++it)
       if (it.key() != "terrain_builds")
         it.value() = it.value().get<int64_t>() + s.at("work").at(it.key()).get<int64_t>() -
                      s.at("terrain_work").at(it.key()).get<int64_t>();
-  vf::WorkStats none;
+  return work;
+}
+
+// The text summary: what was merged, the stats block, the verdict line.
+std::string mergeText(const std::vector<json>& shards, const json& header, const std::vector<const json*>& cams,
+                      const vf::SweepResult& res, size_t total, vf::Verdict verdict, bool countOffScreen) {
+  size_t crackCameras = 0, holeCameras = 0;
+  for (const json* c : cams) {
+    if (!c->at("done").get<bool>()) continue;
+    const json& st = c->at("stats");
+    crackCameras += st.at("cracks").get<int64_t>() - (countOffScreen ? 0 : st.at("cracks_off_screen").get<int64_t>()) > 0;
+    holeCameras += st.at("holes").get<int64_t>() > 0;
+  }
+  std::string text = "merged " + std::to_string(shards.size()) + " report(s) of " +
+                     header.at("scene").at("file").get<std::string>() + " (" +
+                     header.at("cameras_source").get<std::string>() + "): cameras " +
+                     std::to_string(res.camerasDone) + " of " + std::to_string(total) +
+                     (res.cancelled ? " (interrupted)" : "") + "\n";
+  text += statsText(res.total, countOffScreen);
+  text += "verdict: " + verdictWords(verdict, res, crackCameras, holeCameras, total, countOffScreen) + "\n";
+  return text;
+}
+
+} // namespace
+
+int runMerge(const MergeArgs& a) {
+  if (a.inputs.empty()) throw UsageError("merge: no reports");
+  std::unique_ptr<AtomicFile> out;
+  std::vector<FileArg> inputs;
+  for (const std::string& p : a.inputs) inputs.push_back({"REPORT", p});
+  refuseSameFiles({{"--json", a.json}}, inputs);
+  if (!a.json.empty()) out = std::make_unique<AtomicFile>(a.json); // the path is checked before the work
+  std::vector<json> shards;
+  for (const std::string& p : a.inputs) shards.push_back(readReport(p));
+  const json header = mergeHeader(shards[0]);
+  checkSameScene(a, shards);
+  checkShardSet(a, shards, header);
+  const std::vector<const json*> cams = mergedCameras(shards);
+  size_t total = 0;
+  const vf::SweepResult res = mergedResult(shards, total);
   // --offscreen is part of the header (every shard the same): the merged verdict counts what the shards counted.
   const bool countOffScreen = header.value("offscreen", false);
-  json summary = sweepSummaryJson(total, res, rows, none, countOffScreen);
-  summary["work"] = work;
-  summary["terrain_work"] = terrain0;
-
+  json summary = sweepSummaryJson(total, res, mergedCauses(shards), vf::WorkStats(), countOffScreen);
+  summary["work"] = mergedWork(shards);
+  summary["terrain_work"] = shards[0].at("terrain_work");
   if (out) {
     out->stream(sweepJsonBegin(header));
     for (size_t i = 0; i < cams.size(); ++i) out->stream(sweepJsonCamera(*cams[i], i == 0));
@@ -205,30 +257,10 @@ int runMerge(const MergeArgs& a) {
   }
   const vf::Verdict verdict = vf::verdictOf(res, countOffScreen);
   if (!a.quiet && a.json != "-") {
-    size_t crackCameras = 0, holeCameras = 0;
-    for (const json* c : cams) {
-      if (!c->at("done").get<bool>()) continue;
-      const json& st = c->at("stats");
-      crackCameras += st.at("cracks").get<int64_t>() - (countOffScreen ? 0 : st.at("cracks_off_screen").get<int64_t>()) > 0;
-      holeCameras += st.at("holes").get<int64_t>() > 0;
-    }
-    std::string text = "merged " + std::to_string(shards.size()) + " report(s) of " +
-                       header.at("scene").at("file").get<std::string>() + " (" +
-                       header.at("cameras_source").get<std::string>() + "): cameras " +
-                       std::to_string(res.camerasDone) + " of " + std::to_string(total) +
-                       (res.cancelled ? " (interrupted)" : "") + "\n";
-    text += statsText(res.total, countOffScreen);
-    text += "verdict: " + verdictWords(verdict, res, crackCameras, holeCameras, total, countOffScreen) + "\n";
-    writeStdout(text);
+    writeStdout(mergeText(shards, header, cams, res, total, verdict, countOffScreen));
     flushStdout();
   }
-  const bool gaps = verdict == vf::Verdict::Cracks || verdict == vf::Verdict::Holes;
-  if (res.cancelled && !gaps) return 130;
-  switch (verdict) {
-  case vf::Verdict::Watertight: return kExitClean;
-  case vf::Verdict::TJunctionsOnly: return a.failOnTJunctions ? kExitFindings : kExitClean;
-  default: return kExitFindings;
-  }
+  return sweepStatus(res, verdict, a.failOnTJunctions);
 }
 
 } // namespace fftess::cli

@@ -1,6 +1,10 @@
 // JSON reports of check and sweep (report_json.h).
 #include "report_json.h"
+#include "causes.h"
 #include "common.h"
+#include "scene_options.h"
+
+#include <nlohmann/json.hpp>
 
 #include <cstdio>
 

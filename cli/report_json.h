@@ -1,15 +1,18 @@
 // JSON reports of check and sweep (schema: docs/cli.md, "JSON reports"). Pure functions of the reports: no I/O.
 #pragma once
 
-#include "check.h"
-#include "findings.h"
+#include "commands.h"
 
-#include <nlohmann/json.hpp>
+#include "verify/verify.h"
+
+#include <nlohmann/json_fwd.hpp>
 
 #include <string>
 #include <vector>
 
 namespace fftess::cli {
+
+namespace vf = fftess::verify;
 
 using json = nlohmann::ordered_json;
 

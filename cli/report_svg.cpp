@@ -1,5 +1,6 @@
 // SVG pictures of check and sweep (report_svg.h).
 #include "report_svg.h"
+#include "causes.h"
 #include "common.h"
 
 #include <algorithm>

@@ -2,12 +2,14 @@
 // check an inset of the worst finding's shared edge. Pure functions of the reports: no I/O.
 #pragma once
 
-#include "findings.h"
+#include "verify/verify.h"
 
 #include <string>
 #include <vector>
 
 namespace fftess::cli {
+
+namespace vf = fftess::verify;
 
 // The check picture: layout, T-junctions (orange) and cracks (red, the on-screen gap vertex circled) on screen,
 // findings off screen (Finding::onScreen false) grey and dashed, the worst finding that counts (countOffScreen:

@@ -1,12 +1,16 @@
 // fftess sweep SCENE: check a scene from many cameras (the scene's path, an orbit, a flyover, random), with
 // progress and Ctrl-C, tally the findings by cause, print the summary, write the JSON / SVG reports atomically.
-#include "check.h"
+#include "causes.h"
+#include "commands.h"
 #include "common.h"
-#include "findings.h"
 #include "gpu_lod.h"
 #include "progress.h"
 #include "report_json.h"
 #include "report_svg.h"
+#include "scene_options.h"
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cstdio>
@@ -130,48 +134,6 @@ static uint64_t parseSeed(const std::string& text) {
   return v;
 }
 
-// The verdict line without the off-screen findings.
-static std::string verdictHeadline(vf::Verdict verdict, const vf::SweepResult& res, size_t crackCameras,
-                                   size_t holeCameras, size_t cameras, bool countOffScreen) {
-  const std::string holesText = "HOLES seen from " + std::to_string(holeCameras) + " of " +
-                                std::to_string(res.camerasDone) + " cameras (" + std::to_string(res.total.holes) +
-                                " patches not drawn while in view)";
-  const std::string undecidedText = res.total.undecided > 0 ? "; " + std::to_string(res.total.undecided) +
-                                                                   " patches undecided on " +
-                                                                   std::to_string(res.camerasUndecided) + " cameras"
-                                                             : "";
-  switch (verdict) {
-  case vf::Verdict::Cracks:
-    return "CRACKS seen from " + std::to_string(crackCameras) + " of " + std::to_string(res.camerasDone) +
-           " cameras (worst gap" + (countOffScreen ? " " : " on screen ") + fmtWorld(countedGapWorld(res.total, countOffScreen)) +
-           " world units, " + fmtWorld(countedGapPixels(res.total, countOffScreen)) + " px)" +
-           (res.total.holes > 0 ? "; " + holesText : "") + undecidedText;
-  case vf::Verdict::Holes: return holesText + undecidedText;
-  case vf::Verdict::NothingChecked:
-    return "NOTHING CHECKED: no camera classified a shared edge (" + std::to_string(res.camerasDone) +
-           " cameras checked, " + std::to_string(res.camerasInvalid) + " invalid); not a clean verdict";
-  case vf::Verdict::Unchecked:
-    return "NOT CLEAN: " + std::to_string(res.camerasInvalid) + " of " + std::to_string(cameras) +
-           " cameras could not be checked (the other " + std::to_string(res.camerasDone) + " found no crack or hole)";
-  case vf::Verdict::Undecided:
-    return "NOT WATERTIGHT: UNDECIDED from " + std::to_string(res.camerasUndecided) + " of " +
-           std::to_string(res.camerasDone) + " cameras (" + std::to_string(res.total.undecided) +
-           " patches not drawn, neither proven visible nor invisible)";
-  case vf::Verdict::TJunctionsOnly: return res.cancelled ? "no cracks so far (interrupted)" : "no cracks (T-junctions only)";
-  case vf::Verdict::Watertight:
-    return res.cancelled ? "no cracks so far (interrupted)" : "WATERTIGHT from all " + std::to_string(res.camerasDone) + " cameras";
-  }
-  return "?";
-}
-
-// The verdict line's words (sweep and merge).
-std::string verdictWords(vf::Verdict verdict, const vf::SweepResult& res, size_t crackCameras, size_t holeCameras,
-                         size_t cameras, bool countOffScreen) {
-  const std::string off = offScreenWords(res.total, countOffScreen);
-  return verdictHeadline(verdict, res, crackCameras, holeCameras, cameras, countOffScreen) +
-         (off.empty() ? "" : " (" + off + ")");
-}
-
 // The cameras of a sweep by index (vf::CameraSet): the generator option given, else the scene's camera path, else a
 // flyover of kDefaultFlyover.
 static vf::CameraSet cameraSet(const SweepArgs& a, const vf::Terrain& terrain, uint64_t seed) {
@@ -220,198 +182,256 @@ static void parseShard(const std::string& text, size_t& k, size_t& n) {
   k = kk - 1, n = nn;
 }
 
-int runSweep(const SweepArgs& a) {
+// The options of a sweep, checked before any work (in this order: generators, counts, threads, seed, shard).
+struct SweepPlan {
+  uint64_t seed = 1;
+  size_t shardK = 0, shardN = 1; // this run's share: global index g = shardK + local * shardN
+  bool sharded = false;
+  size_t global(size_t local) const { return shardK + local * shardN; }
+  size_t shareOf(size_t total) const { return total > shardK ? (total - shardK + shardN - 1) / shardN : 0; }
+};
+
+static SweepPlan sweepPlan(const SweepArgs& a) {
   const int generators = a.orbitGiven + a.flyoverGiven + a.randomGiven;
   if (generators > 1) throw UsageError("sweep: give only one of --orbit, --flyover, --random");
   if (a.orbitGiven && a.orbit < 1) throw UsageError("--orbit " + std::to_string(a.orbit) + ": must be >= 1");
   if (a.flyoverGiven && a.flyover < 1) throw UsageError("--flyover " + std::to_string(a.flyover) + ": must be >= 1");
   if (a.randomGiven && a.random < 1) throw UsageError("--random " + std::to_string(a.random) + ": must be >= 1");
   if (a.threads < 0) throw UsageError("--threads " + std::to_string(a.threads) + ": must be >= 0");
-  const uint64_t seed = parseSeed(a.seed);
-  size_t shardK = 0, shardN = 1;
-  parseShard(a.shard, shardK, shardN);
-  const bool sharded = !a.shard.empty();
-  // Output paths are checked before the work (as ReportFiles does; the JSON streams, so it is handled here).
-  refuseSameFiles(reportArgs(a), sceneInputs(a, nullptr));
-  std::unique_ptr<AtomicFile> jsonFile, svgFile;
-  if (!a.json.empty()) jsonFile = std::make_unique<AtomicFile>(a.json);
-  if (!a.svg.empty()) svgFile = std::make_unique<AtomicFile>(a.svg);
+  SweepPlan p;
+  p.seed = parseSeed(a.seed);
+  parseShard(a.shard, p.shardK, p.shardN);
+  p.sharded = !a.shard.empty();
+  return p;
+}
+
+namespace {
+
+// One sweep from the loaded scene to its reports: the cameras, the JSON report streamed as the cameras finish, and
+// what the summary, the picture and the cause table keep of each camera. onReport and onCamera are called by
+// verify's sweep, serialised, in whatever order the cameras finish.
+class SweepRun {
+public:
+  SweepRun(const SweepArgs& a, const SweepPlan& plan, const vf::Terrain& terrain, const vf::CheckOptions& opt,
+           AtomicFile* jsonFile, AtomicFile* svgFile)
+      : a_(a), plan_(plan), terrain_(terrain), opt_(opt), cams_(cameraSet(a, terrain, plan.seed)),
+        how_(cameraWords(a, terrain, plan.seed)), requested_(plan.shareOf(cams_.size())), jsonFile_(jsonFile),
+        svgFile_(svgFile) {
+    tally_.countOffScreen = a.offscreen;
+  }
+  void beginJson();
+  vf::SweepResult run(const std::atomic<bool>* cancel, bool talk, const std::string& label);
+  std::string summaryText(const vf::SweepResult& res, const std::string& label, vf::Verdict verdict) const;
+  void finishReports(const vf::SweepResult& res);
+
+private:
+  void emitJson(const std::string& text);
+  void flushPending(bool all);
+  void onCamera(const vf::CameraResult& c);
+  std::string causesText() const;
+
+  const SweepArgs& a_;
+  const SweepPlan& plan_;
+  const vf::Terrain& terrain_;
+  const vf::CheckOptions& opt_;
+  // Every camera of the run (global indices, also when sharded), computed from its index when needed: memory does not
+  // depend on the camera count, and there is no setup to wait for.
+  const vf::CameraSet cams_;
+  const std::string how_;
+  const size_t requested_; // this run's share of the cameras
+  AtomicFile* jsonFile_;   // null without --json
+  AtomicFile* svgFile_;    // null without --svg
+  double elapsed_ = 0;
+  // The JSON report streams: header now, each camera as it finishes (in camera order, through a small reorder
+  // buffer), the summary at the end. The SVG keeps only what it draws.
+  std::string jsonError_; // an I/O error while streaming (raised again when the report is finished)
+  std::map<size_t, json> pending_; // local index -> camera text, waiting for the cameras before it
+  size_t nextLocal_ = 0;
+  bool anyCamera_ = false;
+  std::vector<SvgCamera> dots_;
+  std::vector<SvgHole> holes_;
+  size_t crackCameras_ = 0, tjCameras_ = 0, holeCameras_ = 0;
+  size_t firstInvalid_ = SIZE_MAX;
+  size_t endChecked_ = 0; // 1 + the highest global index checked
+  std::string firstInvalidError_;
+  CauseTally tally_;
+  FactorDiffTally gpuDiffs_; // lod.evaluate = "gpu" / lod.shader: GPU vs C++ factors (cli/gpu_lod.h)
+};
+
+// Into the temporary file (or stdout) now; a FIFO or device is opened only when the report is complete (it would
+// block on its reader), so for those the text waits in the buffer.
+void SweepRun::emitJson(const std::string& text) {
+  if (jsonFile_->streamsNow()) jsonFile_->stream(text);
+  else jsonFile_->buffer() += text;
+}
+
+void SweepRun::beginJson() {
+  if (!jsonFile_) return;
+  json header = sweepHeaderJson(a_, terrain_.scene(), how_);
+  if (plan_.sharded) header["shard"] = {{"index", plan_.shardK + 1}, {"count", plan_.shardN}};
+  header["denormals_flushed"] = vf::denormalRule(terrain_.scene(), opt_).flush; // the rule every camera ran with
+  emitJson(sweepJsonBegin(header));
+}
+
+// Writes the pending cameras that are next in order (all of them at the end: cameras skipped by Ctrl-C leave gaps).
+// Never throws (called on worker threads): an I/O error is kept in jsonError_.
+void SweepRun::flushPending(bool all) {
+  try {
+    for (auto it = pending_.begin(); it != pending_.end() && (all || it->first == nextLocal_); it = pending_.erase(it)) {
+      nextLocal_ = it->first + 1;
+      if (jsonError_.empty()) emitJson(sweepJsonCamera(it->second, !anyCamera_));
+      anyCamera_ = true;
+    }
+  } catch (const std::exception& e) {
+    jsonError_ = e.what();
+  }
+}
+
+void SweepRun::onCamera(const vf::CameraResult& c) {
+  const size_t g = plan_.global(c.cameraIndex);
+  endChecked_ = std::max(endChecked_, g + 1);
+  if (!c.error.empty() && g < firstInvalid_) firstInvalid_ = g, firstInvalidError_ = c.error;
+  if (c.done) {
+    if (c.stats.holes > 0) ++holeCameras_;
+    const bool all = a_.offscreen; // the findings that count: on screen, or all with --offscreen
+    if ((all ? c.stats.cracks : c.stats.cracksOnScreen()) > 0) ++crackCameras_;
+    else if ((all ? c.stats.tJunctions : c.stats.tJunctionsOnScreen()) > 0) ++tjCameras_;
+    if (!a_.svg.empty()) {
+      dots_.push_back(svgCamera(g, cams_.at(g), c, all));
+      if (c.hasHole) holes_.push_back({c.firstHole.patch.index, "camera " + std::to_string(g) + ": " + holeCause(c.firstHole).detail});
+    }
+  }
+  if (!jsonFile_) return;
+  pending_.emplace(c.cameraIndex, sweepCameraJson(g, cams_.at(g), c));
+  flushPending(false);
+}
+
+// Runs the cameras with progress on stderr: a bar on a terminal, a plain line every few seconds otherwise, nothing
+// with --quiet (talk false).
+vf::SweepResult SweepRun::run(const std::atomic<bool>* cancel, bool talk, const std::string& label) {
+  Progress progress("cameras");
+  vf::SweepOptions so;
+  so.threads = a_.threads;
+  so.cancel = cancel;
+  so.keepCameras = false; // per camera: the tallies and the streamed JSON entry, nothing else
+  if (talk) so.progress = [&progress](size_t done, size_t total) { progress.report(done, total); };
+  so.onReport = [this](size_t local, const vf::Report& r) {
+    tally_.add(plan_.global(local), r);
+    gpuDiffs_.add(plan_.global(local), r);
+  };
+  so.onCamera = [this](const vf::CameraResult& c) { onCamera(c); };
+  if (talk)
+    std::fprintf(stderr, "fftess sweep %s: %s, %zu cameras (%s)%s\n", a_.scene.c_str(), label.c_str(), requested_,
+                 how_.c_str(), plan_.sharded ? (", shard " + a_.shard).c_str() : "");
+  vf::SweepResult res;
+  if (!cancel->load())
+    res = vf::sweep(terrain_, requested_, [&](size_t local) { return cams_.at(plan_.global(local)); }, opt_, so);
+  res.cancelled = res.cancelled || (cancel->load() && res.camerasDone + res.camerasInvalid < requested_);
+  progress.finish();
+  elapsed_ = progress.elapsed();
+  return res;
+}
+
+// The cause table: per cause the findings, the cameras where it appeared and the first one, with an example.
+std::string SweepRun::causesText() const {
+  std::string text = "  causes (findings of each cause, cameras where it appeared, the first camera where it appeared):\n";
+  char buf[256];
+  for (const std::string& k : tally_.order()) {
+    const CauseInfo& c = tally_.causes.at(k);
+    const vf::Camera cam = cams_.at(c.first);
+    std::snprintf(buf, sizeof buf, "    %-75s %7lld findings on %5zu cameras, first #%zu eye (%.1f, %.1f, %.1f)\n",
+                  k.c_str(), static_cast<long long>(c.findings), c.cameras, c.first, static_cast<double>(cam.eye.x),
+                  static_cast<double>(cam.eye.y), static_cast<double>(cam.eye.z));
+    text += buf;
+    text += "      e.g. " + c.detail + "\n";
+  }
+  return text;
+}
+
+std::string SweepRun::summaryText(const vf::SweepResult& res, const std::string& label, vf::Verdict verdict) const {
+  const vf::Scene& scene = terrain_.scene();
+  std::string text;
+  char buf[256];
+  text += "\n== " + label + ": lod.adjacency_clamp = " + vf::toString(scene.lod.screenSphere.clamp) +
+          (scene.lod.screenSphere.clamp == vf::AdjacencyClamp::Pow2 ? " (the power-of-two workaround on)" : "") + " ==\n";
+  for (const std::string& s : overridesOf(a_)) text += "  --set " + s + "\n";
+  std::snprintf(buf, sizeof buf, "  cameras        %zu of %zu%s (%s%s, %.1f s, %s threads)\n", res.camerasDone,
+                requested_, res.cancelled ? " (interrupted)" : "", how_.c_str(),
+                plan_.sharded ? (", shard " + a_.shard).c_str() : "", elapsed_,
+                a_.threads > 0 ? std::to_string(a_.threads).c_str() : "all");
+  text += buf;
+  text += "  adjacency      " + std::string(vf::toString(scene.lod.screenSphere.clamp)) + " clamp, " +
+          toString(scene.partitioning) + " partitioning\n";
+  text += statsText(res.total, a_.offscreen);
+  text += gpuDiffs_.text(scene, opt_, res.total);
+  std::snprintf(buf, sizeof buf, "  cameras with cracks %zu, with T-junctions only %zu, with holes %zu\n", crackCameras_,
+                tjCameras_, holeCameras_);
+  text += buf;
+  if (res.camerasUndecided > 0) {
+    std::snprintf(buf, sizeof buf, "  cameras with undecided patches (not clean): %zu\n", res.camerasUndecided);
+    text += buf;
+  }
+  if (res.camerasNothingChecked > 0) {
+    std::snprintf(buf, sizeof buf, "  cameras that classified no shared edge (all culled or out of view): %zu\n",
+                  res.camerasNothingChecked);
+    text += buf;
+  }
+  if (res.camerasInvalid > 0) {
+    std::snprintf(buf, sizeof buf, "  cameras NOT CHECKED (invalid): %zu, first #%zu: ", res.camerasInvalid, firstInvalid_);
+    text += buf + printable(firstInvalidError_) + "\n";
+  }
+  if (!tally_.causes.empty()) text += causesText();
+  return text + "verdict: " + verdictWords(verdict, res, crackCameras_, holeCameras_, requested_, a_.offscreen) + "\n";
+}
+
+// The end of the JSON report (the last cameras, the summary) and the picture, into their files' buffers.
+void SweepRun::finishReports(const vf::SweepResult& res) {
+  const std::vector<std::string> order = tally_.order();
+  if (jsonFile_) {
+    flushPending(true);
+    if (!jsonError_.empty()) throw std::runtime_error(jsonError_);
+    std::vector<CauseRow> rows;
+    for (const std::string& k : order) {
+      const CauseInfo& c = tally_.causes.at(k);
+      rows.push_back({k, c.findings, c.cameras, c.first, c.detail});
+    }
+    vf::WorkStats terrainWork = terrain_.stats();
+    terrainWork.terrainBuilds = vf::terrainBuildCount(); // every build in this process
+    jsonFile_->buffer() += sweepJsonEnd(sweepSummaryJson(requested_, res, rows, terrainWork, a_.offscreen), anyCamera_);
+  }
+  if (svgFile_) {
+    std::vector<size_t> firsts;
+    for (const std::string& k : order) firsts.push_back(tally_.causes.at(k).first);
+    std::sort(dots_.begin(), dots_.end(), [](const SvgCamera& x, const SvgCamera& y) { return x.index < y.index; });
+    svgFile_->buffer() = sweepSvg(terrain_, svgCameras(cams_, res.cancelled ? endChecked_ : cams_.size()), dots_, holes_,
+                                  firsts, a_.random > 0, "fftess sweep " + a_.scene, a_.offscreen);
+  }
+}
+
+} // namespace
+
+int runSweep(const SweepArgs& a) {
+  const SweepPlan plan = sweepPlan(a);
+  // Output paths are checked before the work; the JSON streams into reports.json() as the cameras finish.
+  ReportFiles reports(a);
   const vf::Terrain terrain = load(a); // the one terrain build of this command
-  const vf::Scene& scene = terrain.scene();
   vf::CheckOptions opt = checkOptions(a, terrain);
   opt.maxFindings = static_cast<size_t>(-1); // every finding reaches onReport, so the cause counts are complete
   // Ctrl-C from here on (the sweep, the reports) stops the work; the summary and reports of what was done are still
   // written. A second Ctrl-C kills the process (temporary files removed). Once the work is done, a first Ctrl-C while a
   // report waits for a FIFO's reader ends that wait (AtomicFile: Interrupted, exit 130).
   InterruptGuard interrupts;
-  const std::atomic<bool>* cancel = InterruptGuard::flag();
-  // Every camera of the run (global indices, also when sharded), computed from its index when needed: memory does not
-  // depend on the camera count, and there is no setup to wait for.
-  const vf::CameraSet cams = cameraSet(a, terrain, seed);
-  const std::string how = cameraWords(a, terrain, seed);
-  const size_t requestedAll = cams.size();
-  // This run's share: global index g = shardK + local * shardN.
-  auto shareOf = [&](size_t total) { return total > shardK ? (total - shardK + shardN - 1) / shardN : 0; };
-  const size_t requested = shareOf(requestedAll);
-  auto global = [&](size_t local) { return shardK + local * shardN; };
-  const bool jsonToStdout = a.json == "-";
-  const bool talk = !a.quiet && !jsonToStdout;
-  const std::string label = a.label.empty() ? (scene.name.empty() ? a.scene : scene.name) : a.label;
-
-  // The JSON report streams: header now, each camera as it finishes (in camera order, through a small reorder
-  // buffer), the summary at the end. The SVG keeps only what it draws.
-  std::string jsonError; // an I/O error while streaming (raised again when the report is finished)
-  // Into the temporary file (or stdout) now; a FIFO or device is opened only when the report is complete (it would
-  // block on its reader), so for those the text waits in the buffer.
-  auto emitJson = [&](const std::string& text) {
-    if (jsonFile->streamsNow()) jsonFile->stream(text);
-    else jsonFile->buffer() += text;
-  };
-  if (jsonFile) {
-    json header = sweepHeaderJson(a, scene, how);
-    if (sharded) header["shard"] = {{"index", shardK + 1}, {"count", shardN}};
-    header["denormals_flushed"] = vf::denormalRule(scene, opt).flush; // the rule every camera ran with
-    emitJson(sweepJsonBegin(header));
-  }
-  std::map<size_t, json> pending; // local index -> camera text, waiting for the cameras before it
-  size_t nextLocal = 0;
-  bool anyCamera = false;
-  std::vector<SvgCamera> dots;
-  std::vector<SvgHole> holes;
-  size_t crackCameras = 0, tjCameras = 0, holeCameras = 0;
-  size_t firstInvalid = SIZE_MAX;
-  size_t endChecked = 0; // 1 + the highest global index checked
-  std::string firstInvalidError;
-
-  // Progress on stderr: a bar on a terminal, a plain line every few seconds otherwise, nothing with --quiet.
-  Progress progress("cameras");
-  vf::SweepOptions so;
-  so.threads = a.threads;
-  so.cancel = cancel;
-  so.keepCameras = false; // per camera: the tallies below and the streamed JSON entry, nothing else
-  if (talk) so.progress = [&progress](size_t done, size_t total) { progress.report(done, total); };
-  // Writes the pending cameras that are next in order (all of them at the end: cameras skipped by Ctrl-C leave gaps).
-  // Never throws (called on worker threads): an I/O error is kept in jsonError.
-  auto flushPending = [&](bool all) {
-    try {
-      for (auto it = pending.begin(); it != pending.end() && (all || it->first == nextLocal); it = pending.erase(it)) {
-        nextLocal = it->first + 1;
-        if (jsonError.empty()) emitJson(sweepJsonCamera(it->second, !anyCamera));
-        anyCamera = true;
-      }
-    } catch (const std::exception& e) {
-      jsonError = e.what();
-    }
-  };
-  CauseTally tally;
-  tally.countOffScreen = a.offscreen;
-  FactorDiffTally gpuDiffs; // lod.evaluate = "gpu" / lod.shader: GPU vs C++ factors (cli/gpu_lod.h)
-  so.onReport = [&](size_t local, const vf::Report& r) {
-    tally.add(global(local), r);
-    gpuDiffs.add(global(local), r);
-  };
-  so.onCamera = [&](const vf::CameraResult& c) {
-    const size_t g = global(c.cameraIndex);
-    endChecked = std::max(endChecked, g + 1);
-    if (!c.error.empty() && g < firstInvalid) firstInvalid = g, firstInvalidError = c.error;
-    if (c.done) {
-      if (c.stats.holes > 0) ++holeCameras;
-      const bool all = a.offscreen; // the findings that count: on screen, or all with --offscreen
-      if ((all ? c.stats.cracks : c.stats.cracksOnScreen()) > 0) ++crackCameras;
-      else if ((all ? c.stats.tJunctions : c.stats.tJunctionsOnScreen()) > 0) ++tjCameras;
-      if (!a.svg.empty()) {
-        dots.push_back(svgCamera(g, cams.at(g), c, all));
-        if (c.hasHole) holes.push_back({c.firstHole.patch.index, "camera " + std::to_string(g) + ": " + holeCause(c.firstHole).detail});
-      }
-    }
-    if (!jsonFile) return;
-    pending.emplace(c.cameraIndex, sweepCameraJson(g, cams.at(g), c));
-    flushPending(false);
-  };
-  if (talk)
-    std::fprintf(stderr, "fftess sweep %s: %s, %zu cameras (%s)%s\n", a.scene.c_str(), label.c_str(), requested,
-                 how.c_str(), sharded ? (", shard " + a.shard).c_str() : "");
-  vf::SweepResult res;
-  if (!cancel->load())
-    res = vf::sweep(terrain, requested, [&](size_t local) { return cams.at(global(local)); }, opt, so);
-  res.cancelled = res.cancelled || (cancel->load() && res.camerasDone + res.camerasInvalid < requested);
-  progress.finish();
-  const double elapsed = progress.elapsed();
-  const std::vector<std::string> order = tally.order();
-  const std::map<std::string, CauseInfo>& causes = tally.causes;
+  SweepRun sweep(a, plan, terrain, opt, reports.json(), reports.svg());
+  const bool talk = !a.quiet && a.json != "-";
+  const std::string& sceneName = terrain.scene().name;
+  const std::string label = a.label.empty() ? (sceneName.empty() ? a.scene : sceneName) : a.label;
+  sweep.beginJson();
+  const vf::SweepResult res = sweep.run(InterruptGuard::flag(), talk, label);
   const vf::Verdict verdict = vf::verdictOf(res, a.offscreen);
-  const bool gaps = verdict == vf::Verdict::Cracks || verdict == vf::Verdict::Holes;
-  const int status = res.cancelled && !gaps ? 130 : verdictStatus(a, verdict);
-
-  std::string text;
-  if (talk) {
-    char buf[256];
-    text += "\n== " + label + ": lod.adjacency_clamp = " + vf::toString(scene.lod.screenSphere.clamp) +
-            (scene.lod.screenSphere.clamp == vf::AdjacencyClamp::Pow2 ? " (the power-of-two workaround on)" : "") + " ==\n";
-    for (const std::string& s : overridesOf(a)) text += "  --set " + s + "\n";
-    std::snprintf(buf, sizeof buf, "  cameras        %zu of %zu%s (%s%s, %.1f s, %s threads)\n", res.camerasDone,
-                  requested, res.cancelled ? " (interrupted)" : "", how.c_str(),
-                  sharded ? (", shard " + a.shard).c_str() : "", elapsed,
-                  a.threads > 0 ? std::to_string(a.threads).c_str() : "all");
-    text += buf;
-    text += "  adjacency      " + std::string(vf::toString(scene.lod.screenSphere.clamp)) + " clamp, " +
-            toString(scene.partitioning) + " partitioning\n";
-    text += statsText(res.total, a.offscreen);
-    text += gpuDiffs.text(scene, opt, res.total);
-    std::snprintf(buf, sizeof buf, "  cameras with cracks %zu, with T-junctions only %zu, with holes %zu\n", crackCameras,
-                  tjCameras, holeCameras);
-    text += buf;
-    if (res.camerasUndecided > 0) {
-      std::snprintf(buf, sizeof buf, "  cameras with undecided patches (not clean): %zu\n", res.camerasUndecided);
-      text += buf;
-    }
-    if (res.camerasNothingChecked > 0) {
-      std::snprintf(buf, sizeof buf, "  cameras that classified no shared edge (all culled or out of view): %zu\n",
-                    res.camerasNothingChecked);
-      text += buf;
-    }
-    if (res.camerasInvalid > 0) {
-      std::snprintf(buf, sizeof buf, "  cameras NOT CHECKED (invalid): %zu, first #%zu: ", res.camerasInvalid, firstInvalid);
-      text += buf + printable(firstInvalidError) + "\n";
-    }
-    if (!order.empty()) {
-      text += "  causes (findings of each cause, cameras where it appeared, the first camera where it appeared):\n";
-      for (const std::string& k : order) {
-        const CauseInfo& c = causes.at(k);
-        const vf::Camera cam = cams.at(c.first);
-        std::snprintf(buf, sizeof buf, "    %-75s %7lld findings on %5zu cameras, first #%zu eye (%.1f, %.1f, %.1f)\n",
-                      k.c_str(), static_cast<long long>(c.findings), c.cameras, c.first, static_cast<double>(cam.eye.x),
-                      static_cast<double>(cam.eye.y), static_cast<double>(cam.eye.z));
-        text += buf;
-        text += "      e.g. " + c.detail + "\n";
-      }
-    }
-    text += "verdict: " + verdictWords(verdict, res, crackCameras, holeCameras, requested, a.offscreen) + "\n";
-  }
-  if (jsonFile) {
-    flushPending(true);
-    if (!jsonError.empty()) throw std::runtime_error(jsonError);
-    std::vector<CauseRow> rows;
-    for (const std::string& k : order) {
-      const CauseInfo& c = causes.at(k);
-      rows.push_back({k, c.findings, c.cameras, c.first, c.detail});
-    }
-    vf::WorkStats terrainWork = terrain.stats();
-    terrainWork.terrainBuilds = vf::terrainBuildCount(); // every build in this process
-    jsonFile->buffer() += sweepJsonEnd(sweepSummaryJson(requested, res, rows, terrainWork, a.offscreen), anyCamera);
-  }
-  if (svgFile) {
-    std::vector<size_t> firsts;
-    for (const std::string& k : order) firsts.push_back(causes.at(k).first);
-    std::sort(dots.begin(), dots.end(), [](const SvgCamera& x, const SvgCamera& y) { return x.index < y.index; });
-    svgFile->buffer() = sweepSvg(terrain, svgCameras(cams, res.cancelled ? endChecked : cams.size()), dots, holes,
-                                 firsts, a.random > 0, "fftess sweep " + a.scene, a.offscreen);
-  }
-  AtomicFile* files[2];
-  size_t nFiles = 0;
-  if (jsonFile) files[nFiles++] = jsonFile.get();
-  if (svgFile) files[nFiles++] = svgFile.get();
-  commitAll(files, nFiles); // all or nothing
+  const int status = sweepStatus(res, verdict, a.failOnTJunctions);
+  const std::string text = talk ? sweep.summaryText(res, label, verdict) : "";
+  sweep.finishReports(res);
+  reports.commit(); // all or nothing
   writeStdout(text);
   flushStdout();
   return status;

@@ -2,6 +2,8 @@
 #include "commands.h"
 #include "common.h"
 
+#include <CLI/CLI.hpp>
+
 #include "tessellator/batch.h"
 #include "tessellator/names.h"
 #include "tessellator/parallel.h"
@@ -376,109 +378,145 @@ void appendHashLine(std::string& out, const BatchPatch& bp, const std::string& b
   out += h;
 }
 
-} // namespace
-
-int runTessellate(const TessellateArgs& a) {
-  if (a.threads < 0) throw UsageError("tessellate: --threads must be >= 0 (0: one per hardware thread)");
-  if (a.patches.empty() && a.input != "-") refuseSameFiles({{"-o", a.output}}, {{"INPUT", a.input}});
-  LineSource source(a);
-
-  // Pass 1: check every line.
+// Pass 1: every line checked; the first 20 malformed lines kept for the messages.
+struct LineCheck {
   std::vector<std::string> errors; // the first 20
   size_t errorCount = 0;
   int patchCount = 0;
-  {
-    std::string line;
-    for (int lineNo = 1; source.next(line); ++lineNo) {
-      BatchPatch bp;
-      std::string err;
-      bool isPatch = false;
-      if (!parseLine(line, lineNo, source.name(), bp, err, isPatch)) {
-        if (errors.size() < 20) errors.push_back(err);
-        ++errorCount;
-        continue;
-      }
-      if (isPatch) ++patchCount;
+};
+
+LineCheck checkLines(LineSource& source) {
+  LineCheck c;
+  std::string line;
+  for (int lineNo = 1; source.next(line); ++lineNo) {
+    BatchPatch bp;
+    std::string err;
+    bool isPatch = false;
+    if (!parseLine(line, lineNo, source.name(), bp, err, isPatch)) {
+      if (c.errors.size() < 20) c.errors.push_back(err);
+      ++c.errorCount;
+      continue;
     }
+    if (isPatch) ++c.patchCount;
   }
-  for (const std::string& e : errors) std::fprintf(stderr, "fftess: error: %s\n", printable(e, kMaxMessageBytes).c_str());
-  if (errorCount > 20) std::fprintf(stderr, "fftess: error: ... and %zu more malformed lines\n", errorCount - 20);
-  if (errorCount > 0 && !a.keepGoing) return kExitUsage;
+  return c;
+}
 
-  Options opt;
-  opt.flushDenormals = a.flushDenormals;
-  Tessellator tess;
-  StreamOutput output(a.output);
-  std::string block;
-  if (a.format == "svg") {
-    block = svgHeader(patchCount);
-    output.write(block);
+void printLineErrors(const LineCheck& c) {
+  for (const std::string& e : c.errors) std::fprintf(stderr, "fftess: error: %s\n", printable(e, kMaxMessageBytes).c_str());
+  if (c.errorCount > 20) std::fprintf(stderr, "fftess: error: ... and %zu more malformed lines\n", c.errorCount - 20);
+}
+
+// Pass 2's output: the patches tessellated and formatted chunk by chunk, written as they are produced. --threads
+// applies to the bulk formats (hex, hashes: tessellateBatch, then each thread formats its range); table, obj and svg
+// are for a few patches and run on this thread.
+class PatchWriter {
+public:
+  PatchWriter(const TessellateArgs& a, StreamOutput& output)
+      : a_(a), output_(output), parallel_(a.threads != 1 && (a.format == "hex" || a.format == "hashes")) {
+    opt_.flushDenormals = a.flushDenormals;
   }
-  // --threads applies to the bulk formats; table, obj and svg are for a few patches and run on this thread.
-  const bool parallel = a.threads != 1 && (a.format == "hex" || a.format == "hashes");
-  size_t vertexBase = 0;
-  int cell = 0;
-  std::vector<BatchPatch> chunk;
-  std::vector<Patch> chunkPatches;
-  std::vector<BatchSlot> slots;
-  std::vector<DomainPoint> points;
-  std::vector<int32_t> indices;
-  std::vector<std::string> parts;
-  int64_t chunkElements = 0;
+  void begin(int patchCount) {
+    if (a_.format != "svg") return;
+    block_ = svgHeader(patchCount);
+    output_.write(block_);
+  }
+  void add(BatchPatch&& bp) {
+    if (parallel_) {
+      const OutputCounts c = outputCounts(bp.patch, opt_);
+      if (!chunk_.empty() && chunkElements_ + c.points + c.indices > kChunkElements) flush();
+      chunkElements_ += c.points + c.indices;
+      chunkPatches_.push_back(bp.patch);
+    }
+    chunk_.push_back(std::move(bp));
+    if (chunk_.size() >= kChunkPatches) flush();
+  }
+  void end() {
+    flush();
+    if (a_.format != "svg") return;
+    block_ = "</svg>\n";
+    output_.write(block_);
+  }
 
-  auto flush = [&] {
-    if (chunk.empty()) return;
-    if (parallel) {
-      slots.resize(chunk.size());
-      const BatchTotals totals = planBatch(chunkPatches.data(), chunkPatches.size(), slots.data(), opt);
-      if (points.size() < size_t(totals.points)) points.resize(size_t(totals.points));
-      if (indices.size() < size_t(totals.indices)) indices.resize(size_t(totals.indices));
-      tessellateBatch(chunkPatches.data(), chunkPatches.size(), slots.data(), points.data(), indices.data(),
-                      a.threads, opt);
-      const int threads = a.threads > 0 ? a.threads : int(std::thread::hardware_concurrency());
-      parts.resize(size_t(threads > 0 ? threads : 1));
-      forEachBatchRange(chunk.size(), slots.data(), a.threads, [&](int t, size_t begin, size_t end) {
-        std::string& out = parts[size_t(t)];
-        std::string b;
-        for (size_t i = begin; i < end; ++i) {
-          const BatchSlot& s = slots[i];
-          if (a.format == "hex") {
-            appendHexBlock(out, chunk[i].index, chunk[i].patch, points.data() + s.firstPoint, s.points,
-                           indices.data() + s.firstIndex, s.indices);
-          } else {
-            b.clear();
-            appendHexBlock(b, chunk[i].index, chunk[i].patch, points.data() + s.firstPoint, s.points,
-                           indices.data() + s.firstIndex, s.indices);
-            appendHashLine(out, chunk[i], b);
-          }
-        }
-      });
-      for (std::string& part : parts) output.write(part);
+private:
+  void flush() {
+    if (chunk_.empty()) return;
+    if (parallel_) flushParallel();
+    else flushSerial();
+    chunk_.clear();
+    chunkPatches_.clear();
+    chunkElements_ = 0;
+  }
+  void flushParallel();
+  void flushSerial();
+
+  const TessellateArgs& a_;
+  StreamOutput& output_;
+  const bool parallel_;
+  Options opt_;
+  Tessellator tess_;
+  std::string block_;
+  size_t vertexBase_ = 0;
+  int cell_ = 0;
+  std::vector<BatchPatch> chunk_;
+  std::vector<Patch> chunkPatches_;
+  std::vector<BatchSlot> slots_;
+  std::vector<DomainPoint> points_;
+  std::vector<int32_t> indices_;
+  std::vector<std::string> parts_;
+  int64_t chunkElements_ = 0;
+};
+
+void PatchWriter::flushParallel() {
+  slots_.resize(chunk_.size());
+  const BatchTotals totals = planBatch(chunkPatches_.data(), chunkPatches_.size(), slots_.data(), opt_);
+  if (points_.size() < size_t(totals.points)) points_.resize(size_t(totals.points));
+  if (indices_.size() < size_t(totals.indices)) indices_.resize(size_t(totals.indices));
+  tessellateBatch(chunkPatches_.data(), chunkPatches_.size(), slots_.data(), points_.data(), indices_.data(),
+                  a_.threads, opt_);
+  const int threads = a_.threads > 0 ? a_.threads : int(std::thread::hardware_concurrency());
+  parts_.resize(size_t(threads > 0 ? threads : 1));
+  forEachBatchRange(chunk_.size(), slots_.data(), a_.threads, [&](int t, size_t begin, size_t end) {
+    std::string& out = parts_[size_t(t)];
+    std::string b;
+    for (size_t i = begin; i < end; ++i) {
+      const BatchSlot& s = slots_[i];
+      if (a_.format == "hex") {
+        appendHexBlock(out, chunk_[i].index, chunk_[i].patch, points_.data() + s.firstPoint, s.points,
+                       indices_.data() + s.firstIndex, s.indices);
+      } else {
+        b.clear();
+        appendHexBlock(b, chunk_[i].index, chunk_[i].patch, points_.data() + s.firstPoint, s.points,
+                       indices_.data() + s.firstIndex, s.indices);
+        appendHashLine(out, chunk_[i], b);
+      }
+    }
+  });
+  for (std::string& part : parts_) output_.write(part);
+}
+
+void PatchWriter::flushSerial() {
+  for (const BatchPatch& bp : chunk_) {
+    tess_.tessellate(bp.patch, opt_);
+    if (a_.format == "hex") {
+      appendHexBlock(block_, bp.index, bp.patch, tess_);
+    } else if (a_.format == "hashes") {
+      std::string b;
+      appendHexBlock(b, bp.index, bp.patch, tess_);
+      appendHashLine(block_, bp, b);
+    } else if (a_.format == "table") {
+      formatTable(block_, bp, tess_);
+    } else if (a_.format == "obj") {
+      formatObj(block_, bp, tess_, vertexBase_);
     } else {
-      for (const BatchPatch& bp : chunk) {
-        tess.tessellate(bp.patch, opt);
-        if (a.format == "hex") {
-          appendHexBlock(block, bp.index, bp.patch, tess);
-        } else if (a.format == "hashes") {
-          std::string b;
-          appendHexBlock(b, bp.index, bp.patch, tess);
-          appendHashLine(block, bp, b);
-        } else if (a.format == "table") {
-          formatTable(block, bp, tess);
-        } else if (a.format == "obj") {
-          formatObj(block, bp, tess, vertexBase);
-        } else {
-          formatSvgPatch(block, bp, tess, cell++);
-        }
-        output.write(block);
-      }
+      formatSvgPatch(block_, bp, tess_, cell_++);
     }
-    chunk.clear();
-    chunkPatches.clear();
-    chunkElements = 0;
-  };
+    output_.write(block_);
+  }
+}
 
-  // Pass 2: tessellate and print, chunk by chunk (malformed lines were reported; they still count as patches).
+// Pass 2: tessellate and print, chunk by chunk (malformed lines were reported; they still count as patches).
+void tessellateLines(LineSource& source, PatchWriter& writer) {
   source.rewind();
   std::string line;
   int patchIndex = 0;
@@ -492,22 +530,26 @@ int runTessellate(const TessellateArgs& a) {
     }
     if (!isPatch) continue;
     bp.index = patchIndex++;
-    if (parallel) {
-      const OutputCounts c = outputCounts(bp.patch, opt);
-      if (!chunk.empty() && chunkElements + c.points + c.indices > kChunkElements) flush();
-      chunkElements += c.points + c.indices;
-      chunkPatches.push_back(bp.patch);
-    }
-    chunk.push_back(std::move(bp));
-    if (chunk.size() >= kChunkPatches) flush();
+    writer.add(std::move(bp));
   }
-  flush();
-  if (a.format == "svg") {
-    block = "</svg>\n";
-    output.write(block);
-  }
+}
+
+} // namespace
+
+int runTessellate(const TessellateArgs& a) {
+  if (a.threads < 0) throw UsageError("tessellate: --threads must be >= 0 (0: one per hardware thread)");
+  if (a.patches.empty() && a.input != "-") refuseSameFiles({{"-o", a.output}}, {{"INPUT", a.input}});
+  LineSource source(a);
+  const LineCheck check = checkLines(source);
+  printLineErrors(check);
+  if (check.errorCount > 0 && !a.keepGoing) return kExitUsage;
+  StreamOutput output(a.output);
+  PatchWriter writer(a, output);
+  writer.begin(check.patchCount);
+  tessellateLines(source, writer);
+  writer.end();
   output.commit();
-  return errorCount == 0 ? kExitClean : kExitUsage;
+  return check.errorCount == 0 ? kExitClean : kExitUsage;
 }
 
 } // namespace fftess::cli

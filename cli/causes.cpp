@@ -1,9 +1,8 @@
-// Findings in words and the scene options shared by check and sweep (findings.h).
-#include "findings.h"
+// Findings in words (causes.h): edge and patch names, the cause of a finding or hole from its records, finding lines,
+// the stats block and the verdict words of check, sweep and merge.
+#include "causes.h"
 #include "common.h"
-#include "gpu_lod.h"
 
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -11,73 +10,6 @@ namespace fftess::cli {
 
 const char* const kEdgeNames[4] = {"Ueq0", "Veq0", "Ueq1", "Veq1"};
 const char* edgeName(int e) { return e >= 0 && e < 4 ? kEdgeNames[e] : "?"; }
-
-// ---- scene loading -----------------------------------------------------------------------------------------------
-std::vector<std::string> overridesOf(const SceneArgs& a) {
-  std::vector<std::string> o;
-  auto vec = [](const std::string& opt, const std::string& v) {
-    std::string t = v;
-    std::replace(t.begin(), t.end(), ';', ',');
-    if (t.empty() || t.front() != '[') t = "[" + t + "]";
-    (void)opt;
-    return t;
-  };
-  if (!a.eye.empty()) o.push_back("camera.eye=" + vec("--eye", a.eye));
-  if (!a.target.empty()) o.push_back("camera.target=" + vec("--target", a.target));
-  o.insert(o.end(), a.overrides.begin(), a.overrides.end());
-  for (const std::string& s : a.overrides)
-    if (s.find('=') == std::string::npos || s.front() == '=')
-      throw UsageError("--set " + quoteToken(s) + ": expected KEY=VALUE (e.g. --set lod.adjacency_clamp=none)");
-  return o;
-}
-
-// The loader names --eye / --target as the overrides they become ("--set camera.eye: ..."): name the option given.
-static std::string shorthandNamed(const SceneArgs& a, std::string error) {
-  const std::pair<const char*, const std::string*> opts[] = {{"eye", &a.eye}, {"target", &a.target}};
-  for (const auto& [key, value] : opts) {
-    const std::string prefix = std::string("--set camera.") + key + ": ";
-    bool viaSet = false;
-    for (const std::string& o : a.overrides) viaSet = viaSet || o.rfind(std::string("camera.") + key + "=", 0) == 0;
-    if (!value->empty() && !viaSet && error.rfind(prefix, 0) == 0)
-      error = "--" + std::string(key) + " " + *value + ": " + error.substr(prefix.size());
-  }
-  return error;
-}
-
-std::string loaderMessage(const std::string& scene, const std::string& error) {
-  if (error.compare(0, scene.size(), scene) == 0) return printable(scene, std::string::npos) + printable(error.substr(scene.size()));
-  return printable(error);
-}
-
-vf::Terrain load(const SceneArgs& a) {
-  vf::SceneResult r = vf::loadScene(a.scene, overridesOf(a));
-  if (!r)
-    throw UsageError(r.error.empty() ? "cannot load scene " + quotePath(a.scene)
-                                     : loaderMessage(a.scene, shorthandNamed(a, r.error)));
-  refuseSameFiles(reportArgs(a), sceneInputs(a, &r.scene)); // the files the scene reads are inputs too
-  vf::TerrainResult t = vf::prepareTerrain(r.scene);
-  if (!t) throw UsageError(loaderMessage(a.scene, a.scene + ": " + t.error));
-  return t.terrain;
-}
-
-vf::CheckOptions checkOptions(const SceneArgs& a) {
-  vf::CheckOptions o;
-  if (!vf::parseKernel(a.kernel.c_str(), o.kernel))
-    throw UsageError("--kernel " + quoteToken(a.kernel) + ": expected epick|epeck|float");
-  const std::string& fd = a.flushDenormals;
-  if (fd == "on" || fd == "true") o.flushDenormals = vf::DenormalFlush::On;
-  else if (fd == "off" || fd == "false") o.flushDenormals = vf::DenormalFlush::Off;
-  else if (fd == "auto") o.flushDenormals = vf::DenormalFlush::Auto;
-  else throw UsageError("--flush-denormals=" + quoteToken(fd) + ": expected on|off|auto");
-  o.countOffScreen = a.offscreen;
-  return o;
-}
-
-vf::CheckOptions checkOptions(const SceneArgs& a, const vf::Terrain& terrain) {
-  vf::CheckOptions o = checkOptions(a);
-  attachGpuLod(terrain, a, o);
-  return o;
-}
 
 // ---- causes ------------------------------------------------------------------------------------------------------
 // From the finding's own records: the LOD's (EdgeSide::lod: scheme, fix bits, neighbour rule) and the tessellator's
@@ -313,64 +245,48 @@ std::string statsText(const vf::Stats& s, bool countOffScreen) {
     o += "  off screen     " + offScreenWords(s, countOffScreen, true) + "\n";
   return o;
 }
-// ---- shared plumbing ---------------------------------------------------------------------------------------------
-std::vector<FileArg> reportArgs(const SceneArgs& a) { return {{"--json", a.json}, {"--svg", a.svg}}; }
 
-std::vector<FileArg> sceneInputs(const SceneArgs& a, const vf::Scene* scene) {
-  std::vector<FileArg> in{{"SCENE", a.scene}};
-  if (!scene) return in;
-  in.push_back({"(the scene's lod.shader)", scene->lod.shader});
-  const std::string& raw = scene->displacement.file; // relative to the scene file's folder
-  if (!raw.empty()) {
-    const size_t slash = a.scene.find_last_of('/');
-    const std::string dir = slash == std::string::npos ? "." : a.scene.substr(0, slash + 1);
-    in.push_back({"(the scene's displacement.file)", raw.front() == '/' ? raw : dir + "/" + raw});
+// ---- verdicts ----------------------------------------------------------------------------------------------------
+// The verdict line without the off-screen findings.
+static std::string verdictHeadline(vf::Verdict verdict, const vf::SweepResult& res, size_t crackCameras,
+                                   size_t holeCameras, size_t cameras, bool countOffScreen) {
+  const std::string holesText = "HOLES seen from " + std::to_string(holeCameras) + " of " +
+                                std::to_string(res.camerasDone) + " cameras (" + std::to_string(res.total.holes) +
+                                " patches not drawn while in view)";
+  const std::string undecidedText = res.total.undecided > 0 ? "; " + std::to_string(res.total.undecided) +
+                                                                   " patches undecided on " +
+                                                                   std::to_string(res.camerasUndecided) + " cameras"
+                                                             : "";
+  switch (verdict) {
+  case vf::Verdict::Cracks:
+    return "CRACKS seen from " + std::to_string(crackCameras) + " of " + std::to_string(res.camerasDone) +
+           " cameras (worst gap" + (countOffScreen ? " " : " on screen ") + fmtWorld(countedGapWorld(res.total, countOffScreen)) +
+           " world units, " + fmtWorld(countedGapPixels(res.total, countOffScreen)) + " px)" +
+           (res.total.holes > 0 ? "; " + holesText : "") + undecidedText;
+  case vf::Verdict::Holes: return holesText + undecidedText;
+  case vf::Verdict::NothingChecked:
+    return "NOTHING CHECKED: no camera classified a shared edge (" + std::to_string(res.camerasDone) +
+           " cameras checked, " + std::to_string(res.camerasInvalid) + " invalid); not a clean verdict";
+  case vf::Verdict::Unchecked:
+    return "NOT CLEAN: " + std::to_string(res.camerasInvalid) + " of " + std::to_string(cameras) +
+           " cameras could not be checked (the other " + std::to_string(res.camerasDone) + " found no crack or hole)";
+  case vf::Verdict::Undecided:
+    return "NOT WATERTIGHT: UNDECIDED from " + std::to_string(res.camerasUndecided) + " of " +
+           std::to_string(res.camerasDone) + " cameras (" + std::to_string(res.total.undecided) +
+           " patches not drawn, neither proven visible nor invisible)";
+  case vf::Verdict::TJunctionsOnly: return res.cancelled ? "no cracks so far (interrupted)" : "no cracks (T-junctions only)";
+  case vf::Verdict::Watertight:
+    return res.cancelled ? "no cracks so far (interrupted)" : "WATERTIGHT from all " + std::to_string(res.camerasDone) + " cameras";
   }
-  return in;
+  return "?";
 }
 
-ReportFiles::ReportFiles(const SceneArgs& a) {
-  refuseSameFiles(reportArgs(a), sceneInputs(a, nullptr));
-  if (!a.json.empty()) json_ = std::make_unique<AtomicFile>(a.json);
-  if (!a.svg.empty()) svg_ = std::make_unique<AtomicFile>(a.svg);
-}
-
-void ReportFiles::commit() {
-  AtomicFile* files[2];
-  size_t n = 0;
-  if (json_) files[n++] = json_.get();
-  if (svg_) files[n++] = svg_.get();
-  commitAll(files, n);
-}
-
-int verdictStatus(const SceneArgs& a, vf::Verdict v) {
-  switch (v) {
-  case vf::Verdict::Watertight: return kExitClean;
-  case vf::Verdict::TJunctionsOnly: return a.failOnTJunctions ? kExitFindings : kExitClean;
-  default: return kExitFindings;
-  }
-}
-
-void addSceneOptions(CLI::App* sub, SceneArgs& a) {
-  sub->add_option("scene", a.scene, "Scene file (TOML, docs/verify.md)")->required();
-  sub->add_option("--set", a.overrides, "Override a scene key: KEY=VALUE (repeatable), validated like the file")
-      ->type_name("KEY=VALUE");
-  sub->add_option("--eye", a.eye, "Camera eye X,Y,Z (shorthand for --set camera.eye=[X,Y,Z])");
-  sub->add_option("--target", a.target, "Camera target X,Y,Z (shorthand for --set camera.target=[X,Y,Z])");
-  sub->add_option("--kernel", a.kernel, "CGAL kernel: epick (exact predicates), epeck (exact gaps too), float (naive, wrong on purpose)")
-      ->capture_default_str();
-  sub->add_flag("--flush-denormals{on}", a.flushDenormals,
-                "Denormal hull factors: =on flushed to zero (as llvmpipe; bare flag), =off kept (the D3D11 reference, "
-                "NVIDIA), =auto (default) the scene's lod.flush_denormals, else the GPU driver's rule");
-  sub->add_option("--json", a.json, "Write the full report as JSON to FILE ('-': stdout, no text then)");
-  sub->add_option("--svg", a.svg, "Write an SVG picture to FILE");
-  sub->add_flag("-q,--quiet", a.quiet, "Print nothing but errors; the exit status tells the verdict");
-  sub->add_flag("--fail-on-tjunctions", a.failOnTJunctions, "Exit 1 on T-junctions too (default: cracks only)");
-  sub->add_flag("--offscreen", a.offscreen,
-                "Count cracks and T-junctions outside the view frustum too (whole-mesh comparisons, strict CI); "
-                "default: only what the camera sees counts");
-  sub->add_flag("--gpu-hardware", a.gpuHardware,
-                "lod.shader / lod.evaluate = \"gpu\": use a GPU's EGL device (default: Mesa's llvmpipe first)");
+// The verdict line's words (sweep and merge).
+std::string verdictWords(vf::Verdict verdict, const vf::SweepResult& res, size_t crackCameras, size_t holeCameras,
+                         size_t cameras, bool countOffScreen) {
+  const std::string off = offScreenWords(res.total, countOffScreen);
+  return verdictHeadline(verdict, res, crackCameras, holeCameras, cameras, countOffScreen) +
+         (off.empty() ? "" : " (" + off + ")");
 }
 
 } // namespace fftess::cli

@@ -1,15 +1,11 @@
-// Findings in words, for check and sweep: edge and patch names, the cause of a finding, one-line finding text, the
-// stats block, and the scene options shared by both commands (loading with --set overrides, kernel, exit status).
+// Findings in words, for check, sweep and merge: edge and patch names, the cause of a finding or hole (from its own
+// records: the LOD's per side, the tessellator's), one-line finding and hole text, the stats block and the verdict
+// words. Pure functions of verify's reports.
 #pragma once
-
-#include "check.h"
-#include "common.h"
 
 #include "verify/verify.h"
 
-#include <memory>
 #include <string>
-#include <vector>
 
 namespace fftess::cli {
 
@@ -50,38 +46,5 @@ double countedGapPixels(const vf::Stats& s, bool countOffScreen);
 // The verdict line's words of a sweep (and of merged shards): cameras = the cameras asked for.
 std::string verdictWords(vf::Verdict verdict, const vf::SweepResult& res, size_t crackCameras, size_t holeCameras,
                          size_t cameras, bool countOffScreen);
-
-// Scene options shared by check and sweep.
-std::vector<std::string> overridesOf(const SceneArgs& a); // --eye/--target as overrides, then every --set
-// The scene with its --set overrides, prepared once for the whole command (vf::prepareTerrain); throws UsageError
-// with the loader's message.
-vf::Terrain load(const SceneArgs& a);
-// A scene loader's message: the scene path it starts with stays whole, the rest (keys and values from the file or
-// from --set, of any length) is cut like any token (printable()).
-std::string loaderMessage(const std::string& scene, const std::string& error);
-vf::CheckOptions checkOptions(const SceneArgs& a);        // --kernel, --flush-denormals, --offscreen
-// The same, plus the GPU LOD provider the scene asks for (lod.shader, lod.evaluate = "gpu"; cli/gpu_lod.h).
-vf::CheckOptions checkOptions(const SceneArgs& a, const vf::Terrain& terrain);
-void addSceneOptions(CLI::App* sub, SceneArgs& a);
-// kExitFindings on cracks, holes, nothing checked, unchecked cameras (and T-junctions if asked); else kExitClean.
-int verdictStatus(const SceneArgs& a, vf::Verdict v);
-
-// --json and --svg as refuseSameFiles outputs; the inputs of a scene: SCENE, and with the loaded scene the files it
-// reads (lod.shader, displacement.file). load() refuses reports that are one of those.
-std::vector<FileArg> reportArgs(const SceneArgs& a);
-std::vector<FileArg> sceneInputs(const SceneArgs& a, const vf::Scene* scene);
-
-// The --json and --svg reports of one command: both paths are checked when this is built (before the work:
-// UsageError naming the path), and commit() writes both all or nothing (AtomicFile, commitAll).
-class ReportFiles {
-public:
-  explicit ReportFiles(const SceneArgs& a);
-  void setJson(std::string text) { if (json_) json_->buffer() = std::move(text); }
-  void setSvg(std::string text) { if (svg_) svg_->buffer() = std::move(text); }
-  void commit();
-
-private:
-  std::unique_ptr<AtomicFile> json_, svg_;
-};
 
 } // namespace fftess::cli
