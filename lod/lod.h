@@ -1,6 +1,8 @@
 // fftess lod: the patch-constant ("hull constant") functions terrain engines use to choose tessellation factors.
 //
-// This header is the whole public contract of the module. The arithmetic itself lives once, in
+// This header is the public contract of the module, with lod/lod_fields.h (the one field list per scheme: the
+// *Params members below, their defaults and documentation) and lod/glsl_settings.h (those settings as GLSL text, for a
+// GPU port). The arithmetic itself lives once, in
 // lod/shaders/*.glsl, written in the subset GLSL and GLM share; the .cpp files compile those files as C++ through
 // GLM (single precision, in the order written, no contraction into FMA) and tests/lod compiles the same files as a
 // GLSL tessellation control shader with glslangValidator. The CPU path and the GPU path are the same source.
