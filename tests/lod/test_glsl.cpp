@@ -3,6 +3,7 @@
 // (lod::glslSource) equal the files, and the files keep to the shared subset (f-suffixed float literals).
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cctype>
 #include <cstdlib>
 #include <filesystem>
@@ -290,20 +291,57 @@ TEST_CASE("glsl: the generated settings set every field by name, floats as exact
   p.clamp = AdjacencyClamp::Integer;
   p.reconstruction = Reconstruction::FarCorner;
   p.insideFromFixedEdges = true;
-  CHECK(glslSettings("ts", p) == "  TileSettings ts;\n"
-                                 "  ts.sphere.triWidth = uintBitsToFloat(0x3dcccccdu);\n"
-                                 "  ts.sphere.minFactor = uintBitsToFloat(0x3f800000u);\n"
-                                 "  ts.sphere.maxFactor = uintBitsToFloat(0x42800000u);\n"
-                                 "  ts.sphere.insideRule = kInsideMin;\n"
-                                 "  ts.sphere.frustumCull = false;\n"
-                                 "  ts.sphere.culledFactor = uintBitsToFloat(0xbf800000u);\n"
-                                 "  ts.clampMode = kClampInteger;\n"
-                                 "  ts.rebuild = kRebuildFarCorner;\n"
-                                 "  ts.insideFromFixedEdges = true;\n");
+  const std::string ts = glslSettings("ts", p);
+  INFO(ts);
+  CHECK(ts.rfind("  TileSettings ts;\n", 0) == 0);
+  for (const char* line : {"  ts.sphere.triWidth = uintBitsToFloat(0x3dcccccdu);\n",
+                           "  ts.sphere.maxFactor = uintBitsToFloat(0x42800000u);\n",
+                           "  ts.sphere.insideRule = kInsideMin;\n", "  ts.sphere.frustumCull = false;\n",
+                           "  ts.sphere.culledFactor = uintBitsToFloat(0xbf800000u);\n",
+                           "  ts.clampMode = kClampInteger;\n", "  ts.rebuild = kRebuildFarCorner;\n",
+                           "  ts.insideFromFixedEdges = true;\n"}) {
+    CHECK(ts.find(line) != std::string::npos);
+  }
   BonaventuraParams b;
   b.up = glm::vec3(0.0f, -1.0f, 0.5f);
   CHECK(glslSettings("bs", b).find("  bs.up = vec3(uintBitsToFloat(0x00000000u), uintBitsToFloat(0xbf800000u), "
                                    "uintBitsToFloat(0x3f000000u));\n") != std::string::npos);
+  // Every field of every list is set, once, by name (a nested struct field by field): one statement per line.
+#define FFTESS_TEST_NAME(cppType, cppName, cppDefault, shaderType, shaderName) #shaderName,
+#define FFTESS_TEST_SCHEME(Params, Settings, file, FIELDS)                                                       \
+  {#Settings, glslSettings("v", Params{}), {FIELDS(FFTESS_TEST_NAME)}},
+  struct Generated {
+    const char* settings;
+    std::string text;
+    std::vector<std::string> fields;
+  };
+  const Generated generated[] = {FFTESS_LOD_SCHEMES(FFTESS_TEST_SCHEME)};
+#undef FFTESS_TEST_SCHEME
+#undef FFTESS_TEST_NAME
+  for (const Generated& g : generated) {
+    INFO(g.text);
+    std::istringstream lines(g.text);
+    std::string line;
+    std::getline(lines, line);
+    CHECK(line == std::string("  ") + g.settings + " v;");
+    std::vector<std::string> set; // the left-hand sides
+    while (std::getline(lines, line)) {
+      CHECK(line.rfind("  v.", 0) == 0);
+      CHECK(line.find(" = ") != std::string::npos);
+      set.push_back(line.substr(4, line.find(" = ") - 4));
+    }
+    for (const std::string& field : g.fields) {
+      size_t n = 0;
+      for (const std::string& lhs : set) {
+        n += lhs == field || lhs.rfind(field + ".", 0) == 0 ? 1 : 0;
+      }
+      INFO(g.settings << "." << field);
+      CHECK(n >= 1);
+    }
+    std::vector<std::string> sorted = set;
+    std::sort(sorted.begin(), sorted.end());
+    CHECK(std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end());
+  }
   CHECK(shaderCode(InsideRule::Max) == 2);
   CHECK(shaderCode(AdjacencyClamp::Pow2) == 2);
   CHECK(shaderCode(Reconstruction::Resampled) == 2);
