@@ -11,6 +11,7 @@
 #include <glm/glm.hpp>
 
 #include "lod/lod.h"
+#include "lod/shader_convert.h"
 
 namespace fftess::lod {
 namespace {
@@ -37,13 +38,19 @@ static_assert(glsl::kFixClampedMin == FixClampedMin && glsl::kFixClampedMax == F
                   glsl::kFixCoarserNeighbour == FixCoarserNeighbour && glsl::kFixLiteralSource == FixLiteralSource,
               "lod/shaders/common.glsl fix bits must equal fftess::lod::Fix");
 
+// The shaders' enum constants are lod/lod_fields.h's codes.
+#define FFTESS_LOD_CHECK_CODE(Enum, enumerator, constant, code)                                                    \
+  static_assert(glsl::constant == (code), "lod/shaders/*.glsl: " #constant " must equal lod/lod_fields.h's code");
+FFTESS_LOD_ENUM_CODES(FFTESS_LOD_CHECK_CODE)
+#undef FFTESS_LOD_CHECK_CODE
+
 namespace detail {
 
-// Public structs -> shader structs, and the shader result -> PatchLod: the one place where lod.h's parameter structs
-// become the shaders' settings structs. They cannot be one type: a GLSL struct has no default member initialisers
-// and no constructors (lod.h documents each default in the struct), GLSL has no enums (the shaders take int codes;
-// lod.h takes InsideRule, AdjacencyClamp, Reconstruction), and the shader structs are compiled per translation unit
-// inside an unnamed namespace, so they cannot appear in a public header.
+// Public structs -> shader structs, and the shader result -> PatchLod. lod.h's parameter structs and the shaders'
+// settings structs cannot be one type: a GLSL struct has no default member initialisers and no constructors, GLSL
+// has no enums (the shaders take int codes; lod.h takes InsideRule, AdjacencyClamp, Reconstruction), and the shader
+// structs are compiled per translation unit inside an unnamed namespace, so they cannot appear in a public header.
+// Both are spelled by one field list per scheme, lod/lod_fields.h.
 glsl::LodCamera toGlsl(const Camera& camera) {
   glsl::LodCamera c;
   c.view = camera.view;
@@ -54,56 +61,11 @@ glsl::LodCamera toGlsl(const Camera& camera) {
   return c;
 }
 
-int clampCode(AdjacencyClamp clamp) {
-  return clamp == AdjacencyClamp::Integer ? glsl::kClampInteger
-         : clamp == AdjacencyClamp::Pow2  ? glsl::kClampPow2
-                                          : glsl::kClampNone;
-}
-
-int rebuildCode(Reconstruction reconstruction) {
-  return reconstruction == Reconstruction::FarCorner   ? glsl::kRebuildFarCorner
-         : reconstruction == Reconstruction::Resampled ? glsl::kRebuildResampled
-                                                       : glsl::kRebuildEdgeVector;
-}
-
-int insideRuleCode(InsideRule rule) {
-  switch (rule) {
-  case InsideRule::Min:
-    return glsl::kInsideMin;
-  case InsideRule::Max:
-    return glsl::kInsideMax;
-  case InsideRule::Average:
-    break;
-  }
-  return glsl::kInsideAverage;
-}
-
-glsl::ScreenSphereSettings toGlsl(const ScreenSphereParams& p) {
-  glsl::ScreenSphereSettings s;
-  s.triWidth = p.tessellatedTriWidth;
-  s.minFactor = p.minFactor;
-  s.maxFactor = p.maxFactor;
-  s.insideRule = insideRuleCode(p.inside);
-  s.frustumCull = p.frustumCull;
-  s.culledFactor = p.culledFactor;
-  return s;
-}
-
-glsl::TileSettings toGlsl(const NvidiaTileParams& p) {
-  glsl::TileSettings s;
-  s.sphere = toGlsl(p.sphere);
-  s.clampMode = clampCode(p.clamp);
-  s.rebuild = rebuildCode(p.reconstruction);
-  s.insideFromFixedEdges = p.insideFromFixedEdges;
-  return s;
-}
-
-glsl::AdjacencySettings toGlsl(const TileAdjacency& p) {
-  glsl::AdjacencySettings s;
-  s.clampMode = clampCode(p.clamp);
-  s.rebuild = rebuildCode(p.reconstruction);
-  return s;
-}
+// lod.h's *Params -> the shaders' *Settings, field by field from lod/lod_fields.h (lod/shader_convert.h).
+#define FFTESS_LOD_TO_GLSL(Params, Settings, file, FIELDS)                                                         \
+  glsl::Settings toGlsl(const Params& p) { return convert::ShaderValue<glsl::Settings>::from(p); }
+FFTESS_LOD_SCHEMES(FFTESS_LOD_TO_GLSL)
+#undef FFTESS_LOD_TO_GLSL
 
 glsl::TileNeighbourInfo toGlsl(const TileNeighbours& t) {
   glsl::TileNeighbourInfo n;
@@ -115,54 +77,6 @@ glsl::TileNeighbourInfo toGlsl(const TileNeighbours& t) {
   n.oddU = t.oddU;
   n.oddV = t.oddV;
   return n;
-}
-
-glsl::DistancePow2Settings toGlsl(const DistancePow2Params& p) {
-  glsl::DistancePow2Settings s;
-  s.minDistance = p.minDistance;
-  s.maxDistance = p.maxDistance;
-  s.minExponent = p.minTessExponent;
-  s.maxExponent = p.maxTessExponent;
-  s.frustumCull = p.frustumCull;
-  return s;
-}
-
-glsl::BonaventuraSettings toGlsl(const BonaventuraParams& p) {
-  glsl::BonaventuraSettings s;
-  s.minDistance = p.minDistance;
-  s.maxDistance = p.maxDistance;
-  s.minExponent = p.minExponent;
-  s.maxExponent = p.maxExponent;
-  s.angleCorrection = p.angleCorrection;
-  s.rank = p.rank;
-  s.up = p.up;
-  s.minFactor = p.minFactor;
-  s.maxFactor = p.maxFactor;
-  s.frustumCull = p.frustumCull;
-  s.culledFactor = p.culledFactor;
-  s.literalFourthCornerAngle = p.literalFourthCornerAngle;
-  return s;
-}
-
-glsl::ClipDiameterSettings toGlsl(const ClipDiameterParams& p) {
-  glsl::ClipDiameterSettings s;
-  s.edgesPerScreenHeight = p.edgesPerScreenHeight;
-  s.minFactor = p.minFactor;
-  s.maxFactor = p.maxFactor;
-  s.insideRule = insideRuleCode(p.inside);
-  s.frustumCull = p.frustumCull;
-  s.culledFactor = p.culledFactor;
-  return s;
-}
-
-glsl::GeomorphSettings toGlsl(const GeomorphParams& p) {
-  glsl::GeomorphSettings s;
-  s.minDistance = p.minDistance;
-  s.maxDistance = p.maxDistance;
-  s.finestLevel = p.finestLevel;
-  s.coarsestLevel = p.coarsestLevel;
-  s.literalArticleWeight = p.literalArticleWeight;
-  return s;
 }
 
 PatchLod fromGlsl(const glsl::LodResult& result, Scheme scheme) {

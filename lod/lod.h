@@ -1,6 +1,8 @@
 // fftess lod: the patch-constant ("hull constant") functions terrain engines use to choose tessellation factors.
 //
-// This header is the whole public contract of the module. The arithmetic itself lives once, in
+// This header is the public contract of the module, with lod/lod_fields.h (the one field list per scheme: the
+// *Params members below, their defaults and documentation) and lod/glsl_settings.h (those settings as GLSL text, for a
+// GPU port). The arithmetic itself lives once, in
 // lod/shaders/*.glsl, written in the subset GLSL and GLM share; the .cpp files compile those files as C++ through
 // GLM (single precision, in the order written, no contraction into FMA) and tests/lod compiles the same files as a
 // GLSL tessellation control shader with glslangValidator. The CPU path and the GPU path are the same source.
@@ -36,6 +38,8 @@
 #include <cstdint>
 
 #include <glm/glm.hpp>
+
+#include "lod/lod_fields.h"
 
 namespace fftess::lod {
 
@@ -116,12 +120,7 @@ struct PatchLod {
 // tessellatedTriWidth, clamped to [minFactor, maxFactor]. Inside factors from the edges by `inside`.
 // Frustum culling: if the patch box is wholly outside one frustum plane, every factor is culledFactor.
 struct ScreenSphereParams {
-  float tessellatedTriWidth = 3.0f; // target triangle width in pixels (> 0); sample: 3 at 1920x1200, a game: 6
-  float minFactor = 1.0f;           // <= maxFactor
-  float maxFactor = 64.0f;
-  InsideRule inside = InsideRule::Average;
-  bool frustumCull = true;
-  float culledFactor = -1.0f;       // the sample writes -1
+  FFTESS_LOD_SCREEN_SPHERE_FIELDS(FFTESS_LOD_DECLARE_PARAM) // lod/lod_fields.h: members, defaults, documentation
 };
 
 PatchLod screenSphere(const Patch& patch, const Camera& camera, const ScreenSphereParams& params = {});
@@ -182,13 +181,7 @@ struct TileNeighbours {
 };
 
 struct NvidiaTileParams {
-  ScreenSphereParams sphere{};                  // the per-edge factor (the sample's own settings by default)
-  AdjacencyClamp clamp = AdjacencyClamp::Pow2;  // the sample ships the power-of-two workaround
-  Reconstruction reconstruction = Reconstruction::EdgeVector;
-  // Inside factors from the edge factors after the neighbour rule (the sample: Inside[1] = 0.5 * (Edges[0] +
-  // Edges[2]), Inside[0] = 0.5 * (Edges[1] + Edges[3]) with sphere.inside = Average) instead of the patch's own
-  // edges before it. Changes interiors only, never an edge.
-  bool insideFromFixedEdges = false;
+  FFTESS_LOD_NVIDIA_TILE_FIELDS(FFTESS_LOD_DECLARE_PARAM) // lod/lod_fields.h: members, defaults, documentation
 };
 
 PatchLod nvidiaTile(const Patch& patch, const TileNeighbours& neighbours, const Camera& camera,
@@ -224,11 +217,7 @@ TileNeighbours patchNeighbours(const TileSides& tile, int patchX, int patchZ, in
 // or the patch centre (both inside factors) to the eye. Culling: patch box (use the height bounds) against the
 // six frustum planes; culled factors are 0.
 struct DistancePow2Params {
-  float minDistance = 20.0f;   // < maxDistance
-  float maxDistance = 500.0f;
-  float minTessExponent = 0.0f; // at maxDistance and beyond
-  float maxTessExponent = 6.0f; // at minDistance and nearer
-  bool frustumCull = true;
+  FFTESS_LOD_DISTANCE_POW2_FIELDS(FFTESS_LOD_DECLARE_PARAM) // lod/lod_fields.h: members, defaults, documentation
 };
 
 PatchLod distancePow2(const Patch& patch, const Camera& camera, const DistancePow2Params& params = {});
@@ -242,18 +231,7 @@ PatchLod distancePow2(const Patch& patch, const Camera& camera, const DistancePo
 // cornerLevel[i] (in Why) = the corrected, unrounded exponent at corner i: four patches sharing a corner agree.
 // The thesis writes the fourth corner's angle without acos; literalFourthCornerAngle reproduces that.
 struct BonaventuraParams {
-  float minDistance = 20.0f;
-  float maxDistance = 500.0f;
-  float minExponent = 0.0f;
-  float maxExponent = 6.0f;
-  bool angleCorrection = true;
-  float rank = 0.5f;             // in [0, 2]: how far the correction moves the exponent (factor 1 +- rank/2)
-  glm::vec3 up{0.0f, 1.0f, 0.0f}; // terrain normal; unit length
-  float minFactor = 1.0f;
-  float maxFactor = 64.0f;
-  bool frustumCull = true;
-  float culledFactor = 0.0f;
-  bool literalFourthCornerAngle = false; // corner 3: (pi/2 - |c.e|)/(pi/2), as printed
+  FFTESS_LOD_BONAVENTURA_FIELDS(FFTESS_LOD_DECLARE_PARAM) // lod/lod_fields.h: members, defaults, documentation
 };
 
 PatchLod bonaventura(const Patch& patch, const Camera& camera, const BonaventuraParams& params = {});
@@ -263,12 +241,7 @@ PatchLod bonaventura(const Patch& patch, const Camera& camera, const Bonaventura
 // clip = projection * view * (midpoint, 1); factor = max(minFactor, distance(p0, p1) * projection[1][1] / clip.w
 // * edgesPerScreenHeight), then min(maxFactor, ...). A midpoint behind the camera (clip.w <= 0) gets minFactor.
 struct ClipDiameterParams {
-  float edgesPerScreenHeight = 16.0f; // target edge count over the screen height (> 0)
-  float minFactor = 1.0f;
-  float maxFactor = 64.0f;
-  InsideRule inside = InsideRule::Average;
-  bool frustumCull = false;           // the article does not cull
-  float culledFactor = 0.0f;
+  FFTESS_LOD_CLIP_DIAMETER_FIELDS(FFTESS_LOD_DECLARE_PARAM) // lod/lod_fields.h: members, defaults, documentation
 };
 
 PatchLod clipDiameter(const Patch& patch, const Camera& camera, const ClipDiameterParams& params = {});
@@ -281,13 +254,7 @@ PatchLod clipDiameter(const Patch& patch, const Camera& camera, const ClipDiamet
 // (tween 0) to their true height (tween 1). A border follows the coarser side: its level is min(L_self,
 // L_neighbour), which both sides compute alike.
 struct GeomorphParams {
-  float minDistance = 20.0f;
-  float maxDistance = 500.0f;
-  float finestLevel = 5.0f;   // <= 5 (2^6 = 64 segments)
-  float coarsestLevel = 0.0f; // >= 0
-  // The article's inserted-vertex weight (1 - tweenNeighbour) * tweenSelf instead of the shared border tween.
-  // Not symmetric: the two sides of a border disagree unless a tween is 0. Kept so the verifier can show it.
-  bool literalArticleWeight = false;
+  FFTESS_LOD_GEOMORPH_FIELDS(FFTESS_LOD_DECLARE_PARAM) // lod/lod_fields.h: members, defaults, documentation
 };
 
 // The float level of a patch (from its centre).
@@ -326,8 +293,7 @@ float geomorphHeight(float height, float previousHeight, float nextHeight, float
 //   * larger(F) is adjacency.clamp's rule (section 2): F, the integer clamp or the power-of-two clamp.
 // A culled patch is returned as the scheme culls it (no adjacency fix).
 struct TileAdjacency {
-  AdjacencyClamp clamp = AdjacencyClamp::Pow2;                // the sample's workaround by default
-  Reconstruction reconstruction = Reconstruction::EdgeVector; // Resampled needs TileNeighbours::rebuiltHeight
+  FFTESS_LOD_TILE_ADJACENCY_FIELDS(FFTESS_LOD_DECLARE_PARAM) // lod/lod_fields.h: members, defaults, documentation
 };
 
 // distancePow2 with the neighbour rule: the rebuilt edge's factor is 2^exponent of its midpoint's distance.

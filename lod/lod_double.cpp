@@ -4,6 +4,8 @@
 
 #include <glm/glm.hpp>
 
+#include "lod/shader_convert.h"
+
 namespace fftess::lod {
 namespace {
 
@@ -30,10 +32,6 @@ inline vec2 operator*(const vec2& v, float s) { return v * static_cast<double>(s
 } // namespace glsld
 #pragma GCC diagnostic pop
 
-int insideCode(InsideRule rule) {
-  return rule == InsideRule::Min ? glsld::kInsideMin : rule == InsideRule::Max ? glsld::kInsideMax : glsld::kInsideAverage;
-}
-
 glsld::LodCamera toD(const Camera& c) {
   glsld::LodCamera d;
   d.view = glm::dmat4(c.view);
@@ -44,16 +42,12 @@ glsld::LodCamera toD(const Camera& c) {
   return d;
 }
 
+// lod.h's *Params -> the double *Settings, field by field from lod/lod_fields.h (lod/shader_convert.h; floats
+// widen exactly).
 glsld::ScreenSphereSettings toD(const ScreenSphereParams& p) {
-  glsld::ScreenSphereSettings s;
-  s.triWidth = p.tessellatedTriWidth;
-  s.minFactor = p.minFactor;
-  s.maxFactor = p.maxFactor;
-  s.insideRule = insideCode(p.inside);
-  s.frustumCull = p.frustumCull;
-  s.culledFactor = p.culledFactor;
-  return s;
+  return convert::ShaderValue<glsld::ScreenSphereSettings>::from(p);
 }
+glsld::TileSettings toD(const NvidiaTileParams& p) { return convert::ShaderValue<glsld::TileSettings>::from(p); }
 
 PatchLod fromD(const glsld::LodResult& r, Scheme scheme) {
   PatchLod out;
@@ -81,15 +75,6 @@ PatchLod screenSphereDouble(const Patch& patch, const Camera& camera, const Scre
 
 PatchLod nvidiaTileDouble(const Patch& patch, const TileNeighbours& neighbours, const Camera& camera,
                           const NvidiaTileParams& params) {
-  glsld::TileSettings s;
-  s.sphere = toD(params.sphere);
-  s.clampMode = params.clamp == AdjacencyClamp::Integer ? glsld::kClampInteger
-                : params.clamp == AdjacencyClamp::Pow2  ? glsld::kClampPow2
-                                                        : glsld::kClampNone;
-  s.rebuild = params.reconstruction == Reconstruction::FarCorner   ? glsld::kRebuildFarCorner
-              : params.reconstruction == Reconstruction::Resampled ? glsld::kRebuildResampled
-                                                                   : glsld::kRebuildEdgeVector;
-  s.insideFromFixedEdges = params.insideFromFixedEdges;
   glsld::TileNeighbourInfo n;
   for (int i = 0; i < 4; ++i) {
     n.size[i] = neighbours.size[i];
@@ -100,7 +85,8 @@ PatchLod nvidiaTileDouble(const Patch& patch, const TileNeighbours& neighbours, 
   n.oddV = neighbours.oddV;
   const glm::vec3* c = patch.corners;
   return fromD(glsld::nvidiaTileLod(glm::dvec3(c[0]), glm::dvec3(c[1]), glm::dvec3(c[2]), glm::dvec3(c[3]),
-                                    patch.useHeightBounds, patch.minHeight, patch.maxHeight, n, toD(camera), s),
+                                    patch.useHeightBounds, patch.minHeight, patch.maxHeight, n, toD(camera),
+                                    toD(params)),
                Scheme::NvidiaTile);
 }
 

@@ -3,14 +3,18 @@
 // (lod::glslSource) equal the files, and the files keep to the shared subset (f-suffixed float literals).
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cctype>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
+#include "lod/glsl_settings.h"
 #include "lod/lod.h"
+#include "lod/lod_fields.h"
 
 namespace fs = std::filesystem;
 
@@ -74,6 +78,42 @@ std::string stripComments(const std::string& s) {
   return o;
 }
 
+// One member of a GLSL struct: "TYPE NAME" (NAME with its [N] for an array).
+struct Member {
+  std::string type;
+  std::string name;
+  bool operator==(const Member& o) const { return type == o.type && name == o.name; }
+};
+
+// The members of `struct NAME { ... };` in GLSL text (comments already removed), in order; empty if absent.
+std::vector<Member> structMembers(const std::string& code, const std::string& name) {
+  std::vector<Member> out;
+  const size_t at = code.find("struct " + name + " {");
+  if (at == std::string::npos) {
+    return out;
+  }
+  const size_t open = code.find('{', at);
+  const size_t close = code.find("};", open);
+  std::istringstream body(code.substr(open + 1, close - open - 1));
+  std::string statement;
+  while (std::getline(body, statement, ';')) {
+    std::istringstream words(statement);
+    Member m;
+    if (words >> m.type >> m.name) {
+      out.push_back(m);
+    }
+  }
+  return out;
+}
+
+std::string describe(const std::vector<Member>& members) {
+  std::string s;
+  for (const Member& m : members) {
+    s += m.type + " " + m.name + "; ";
+  }
+  return s;
+}
+
 } // namespace
 
 TEST_CASE("glsl: the harness rejects a broken shader", "[lod][glsl]") {
@@ -97,6 +137,13 @@ TEST_CASE("glsl: every shader file compiles as a tessellation control shader", "
 }
 
 TEST_CASE("glsl: a TCS that calls every scheme compiles", "[lod][glsl]") {
+  using namespace fftess::lod;
+  // The settings as the GPU LOD provider writes them (lod::glslSettings: every field by name, exact bits).
+  ClipDiameterParams clip;
+  clip.inside = InsideRule::Max;
+  TileAdjacency adjacency;
+  adjacency.clamp = AdjacencyClamp::Integer;
+  adjacency.reconstruction = Reconstruction::Resampled;
   const std::string main = R"glsl(
 layout(std140, binding = 0) uniform Lod {
   mat4 uView;
@@ -117,20 +164,10 @@ void main() {
   cam.viewport = uViewportEye.xy;
   cam.eye = uEye.xyz;
   cam.depthZeroToOne = false;
-  ScreenSphereSettings ss;
-  ss.triWidth = 3.0f;
-  ss.minFactor = 1.0f;
-  ss.maxFactor = 64.0f;
-  ss.insideRule = kInsideAverage;
-  ss.frustumCull = true;
-  ss.culledFactor = -1.0f;
+)glsl" + glslSettings("ss", ScreenSphereParams{}) + R"glsl(
   LodResult r = screenSphereLod(inPos[0], inPos[1], inPos[2], inPos[3], false, 0.0f, 0.0f, cam, ss);
   LodResult pc = patchCenterLod(inPos[0], inPos[1], inPos[2], inPos[3], false, 0.0f, 0.0f, cam, ss);
-  TileSettings ts;
-  ts.sphere = ss;
-  ts.clampMode = kClampPow2;
-  ts.rebuild = kRebuildEdgeVector;
-  ts.insideFromFixedEdges = false;
+)glsl" + glslSettings("ts", NvidiaTileParams{}) + R"glsl(
   TileNeighbourInfo tn;
   tn.size[0] = uNeighbours.x; tn.size[1] = uNeighbours.y; tn.size[2] = uNeighbours.z; tn.size[3] = uNeighbours.w;
   tn.oddU = false;
@@ -140,32 +177,20 @@ void main() {
     tn.rebuiltHeight[i] = 0.0f;
   }
   LodResult t = nvidiaTileLod(inPos[0], inPos[1], inPos[2], inPos[3], false, 0.0f, 0.0f, tn, cam, ts);
-  DistancePow2Settings ds;
-  ds.minDistance = 20.0f; ds.maxDistance = 500.0f; ds.minExponent = 0.0f; ds.maxExponent = 6.0f;
-  ds.frustumCull = true;
+)glsl" + glslSettings("ds", DistancePow2Params{}) + R"glsl(
   LodResult d = distancePow2Lod(inPos[0], inPos[1], inPos[2], inPos[3], true, -10.0f, 10.0f, cam, ds);
-  BonaventuraSettings bs;
-  bs.minDistance = 20.0f; bs.maxDistance = 500.0f; bs.minExponent = 0.0f; bs.maxExponent = 6.0f;
-  bs.angleCorrection = true; bs.rank = 0.5f; bs.up = vec3(0.0f, 1.0f, 0.0f);
-  bs.minFactor = 1.0f; bs.maxFactor = 64.0f; bs.frustumCull = true; bs.culledFactor = 0.0f;
-  bs.literalFourthCornerAngle = false;
+)glsl" + glslSettings("bs", BonaventuraParams{}) + R"glsl(
   LodResult b = bonaventuraLod(inPos[0], inPos[1], inPos[2], inPos[3], false, 0.0f, 0.0f, cam, bs);
-  ClipDiameterSettings cs;
-  cs.edgesPerScreenHeight = 16.0f; cs.minFactor = 1.0f; cs.maxFactor = 64.0f; cs.insideRule = kInsideMax;
-  cs.frustumCull = false; cs.culledFactor = 0.0f;
+)glsl" + glslSettings("cs", clip) + R"glsl(
   LodResult c = clipDiameterLod(inPos[0], inPos[1], inPos[2], inPos[3], false, 0.0f, 0.0f, cam, cs);
   // The neighbour rule for the other schemes (and the constant factor).
-  AdjacencySettings adj;
-  adj.clampMode = kClampInteger;
-  adj.rebuild = kRebuildResampled;
+)glsl" + glslSettings("adj", adjacency) + R"glsl(
   LodResult dt = distancePow2TileLod(inPos[0], inPos[1], inPos[2], inPos[3], true, -10.0f, 10.0f, tn, cam, ds, adj);
   LodResult bt = bonaventuraTileLod(inPos[0], inPos[1], inPos[2], inPos[3], false, 0.0f, 0.0f, tn, cam, bs, adj);
   LodResult ct = clipDiameterTileLod(inPos[0], inPos[1], inPos[2], inPos[3], false, 0.0f, 0.0f, tn, cam, cs, adj);
   LodResult kt = constantTileLod(8.0f, tn, adj);
   vec3 rebuilt = rebuiltCorner(inPos[0], inPos[2], tn.oddV);
-  GeomorphSettings gs;
-  gs.minDistance = 20.0f; gs.maxDistance = 500.0f; gs.finestLevel = 5.0f; gs.coarsestLevel = 0.0f;
-  gs.literalArticleWeight = false;
+)glsl" + glslSettings("gs", GeomorphParams{}) + R"glsl(
   float level = geomorphLevelAt(patchCentre(inPos[0], inPos[1], inPos[2], inPos[3]), cam, gs);
   LodResult g = geomorphLod(level, uLevels.x, uLevels.y, uLevels.z, uLevels.w);
   float fine[65];
@@ -225,4 +250,100 @@ TEST_CASE("glsl: embedded sources equal the files, files keep to the shared subs
     CHECK(code.find(", out ") == std::string::npos);
     CHECK(code.find("uniform") == std::string::npos);
   }
+}
+
+// The *Settings structs stay hand-written in lod/shaders/*.glsl (the .glsl files are the one source and valid GLSL on
+// their own); everything else is produced from lod/lod_fields.h. So the two must agree, field by field, in order:
+// a field only in the .glsl would be left unset by the generated GLSL and zero in the C++ builds.
+TEST_CASE("glsl: every settings struct in lod/shaders has the fields of lod/lod_fields.h, in order", "[lod][glsl]") {
+#define FFTESS_TEST_MEMBER(cppType, cppName, cppDefault, shaderType, shaderName) Member{#shaderType, #shaderName},
+#define FFTESS_TEST_SCHEME(Params, Settings, file, FIELDS) {#Settings, file, {FIELDS(FFTESS_TEST_MEMBER)}},
+  struct List {
+    const char* settings;
+    const char* file;
+    std::vector<Member> members;
+  };
+  const List lists[] = {FFTESS_LOD_SCHEMES(FFTESS_TEST_SCHEME)};
+#undef FFTESS_TEST_SCHEME
+#undef FFTESS_TEST_MEMBER
+  REQUIRE(sizeof lists / sizeof lists[0] == 7);
+  for (const List& list : lists) {
+    std::string code;
+    for (int i = 0; i < fftess::lod::glslSourceCount(); ++i) {
+      if (std::string(fftess::lod::glslSourceName(i)) == list.file) {
+        code = stripComments(fftess::lod::glslSource(i));
+      }
+    }
+    const std::vector<Member> glsl = structMembers(code, list.settings);
+    INFO(list.file << " struct " << list.settings << ": " << describe(glsl) << "\nlod_fields.h: "
+                   << describe(list.members));
+    CHECK(!glsl.empty());
+    CHECK(glsl == list.members);
+  }
+}
+
+TEST_CASE("glsl: the generated settings set every field by name, floats as exact bits", "[lod][glsl]") {
+  using namespace fftess::lod;
+  NvidiaTileParams p;
+  p.sphere.tessellatedTriWidth = 0.1f; // not exact in decimal
+  p.sphere.inside = InsideRule::Min;
+  p.sphere.frustumCull = false;
+  p.clamp = AdjacencyClamp::Integer;
+  p.reconstruction = Reconstruction::FarCorner;
+  p.insideFromFixedEdges = true;
+  const std::string ts = glslSettings("ts", p);
+  INFO(ts);
+  CHECK(ts.rfind("  TileSettings ts;\n", 0) == 0);
+  for (const char* line : {"  ts.sphere.triWidth = uintBitsToFloat(0x3dcccccdu);\n",
+                           "  ts.sphere.maxFactor = uintBitsToFloat(0x42800000u);\n",
+                           "  ts.sphere.insideRule = kInsideMin;\n", "  ts.sphere.frustumCull = false;\n",
+                           "  ts.sphere.culledFactor = uintBitsToFloat(0xbf800000u);\n",
+                           "  ts.clampMode = kClampInteger;\n", "  ts.rebuild = kRebuildFarCorner;\n",
+                           "  ts.insideFromFixedEdges = true;\n"}) {
+    CHECK(ts.find(line) != std::string::npos);
+  }
+  BonaventuraParams b;
+  b.up = glm::vec3(0.0f, -1.0f, 0.5f);
+  CHECK(glslSettings("bs", b).find("  bs.up = vec3(uintBitsToFloat(0x00000000u), uintBitsToFloat(0xbf800000u), "
+                                   "uintBitsToFloat(0x3f000000u));\n") != std::string::npos);
+  // Every field of every list is set, once, by name (a nested struct field by field): one statement per line.
+#define FFTESS_TEST_NAME(cppType, cppName, cppDefault, shaderType, shaderName) #shaderName,
+#define FFTESS_TEST_SCHEME(Params, Settings, file, FIELDS)                                                       \
+  {#Settings, glslSettings("v", Params{}), {FIELDS(FFTESS_TEST_NAME)}},
+  struct Generated {
+    const char* settings;
+    std::string text;
+    std::vector<std::string> fields;
+  };
+  const Generated generated[] = {FFTESS_LOD_SCHEMES(FFTESS_TEST_SCHEME)};
+#undef FFTESS_TEST_SCHEME
+#undef FFTESS_TEST_NAME
+  for (const Generated& g : generated) {
+    INFO(g.text);
+    std::istringstream lines(g.text);
+    std::string line;
+    std::getline(lines, line);
+    CHECK(line == std::string("  ") + g.settings + " v;");
+    std::vector<std::string> set; // the left-hand sides
+    while (std::getline(lines, line)) {
+      CHECK(line.rfind("  v.", 0) == 0);
+      CHECK(line.find(" = ") != std::string::npos);
+      set.push_back(line.substr(4, line.find(" = ") - 4));
+    }
+    for (const std::string& field : g.fields) {
+      size_t n = 0;
+      for (const std::string& lhs : set) {
+        n += lhs == field || lhs.rfind(field + ".", 0) == 0 ? 1 : 0;
+      }
+      INFO(g.settings << "." << field);
+      CHECK(n >= 1);
+    }
+    std::vector<std::string> sorted = set;
+    std::sort(sorted.begin(), sorted.end());
+    CHECK(std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end());
+  }
+  CHECK(shaderCode(InsideRule::Max) == 2);
+  CHECK(shaderCode(AdjacencyClamp::Pow2) == 2);
+  CHECK(shaderCode(Reconstruction::Resampled) == 2);
+  CHECK(std::string(glslCodeName(Reconstruction::EdgeVector)) == "kRebuildEdgeVector");
 }

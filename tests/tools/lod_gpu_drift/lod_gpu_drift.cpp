@@ -20,6 +20,7 @@
 // 1 = usage; 3 = no suitable GL 4.5 context; 4 = shader compile/link or GL error.
 #include "base/bits.h"
 #include "base/splitmix64.h"
+#include "lod/glsl_settings.h"
 #include "lod/lod.h"
 #include "tessellator/tessellator.h"
 #include "gl/gl_context.h" // headless EGL context, GL loader, renderer check (the GL module, fftess_gl)
@@ -68,7 +69,7 @@ constexpr int kOutStride = kOutLevels + 5;
 constexpr int kCategories = 5;
 const char* const kCategoryNames[kCategories] = {"general", "near", "far", "edge-on", "random"};
 
-using fftess::bitsOf; // base/bits.h
+using fftess::bitsOf;
 using fftess::floatOf;
 
 // ---------------------------------------------------------------- generator
@@ -213,6 +214,16 @@ Patch neighbourPatch(const Case& c, int e) {
   return n;
 }
 
+// The three nvidia-tile variants both sides run: adjacency clamp none / integer / pow2, EdgeVector rebuild.
+fftess::lod::NvidiaTileParams tileParams(int k) {
+  using namespace fftess::lod;
+  const AdjacencyClamp clamps[3] = {AdjacencyClamp::None, AdjacencyClamp::Integer, AdjacencyClamp::Pow2};
+  NvidiaTileParams tp;
+  tp.clamp = clamps[k];
+  tp.reconstruction = Reconstruction::EdgeVector;
+  return tp;
+}
+
 // ---------------------------------------------------------------- C++ side
 void evaluateCpu(const Case& c, uint32_t* out) {
   using namespace fftess::lod;
@@ -223,13 +234,7 @@ void evaluateCpu(const Case& c, uint32_t* out) {
     o[12] = r.why.culled ? 1u : 0u;
   };
   put(0, screenSphere(c.patch, c.cam));
-  const AdjacencyClamp clamps[3] = {AdjacencyClamp::None, AdjacencyClamp::Integer, AdjacencyClamp::Pow2};
-  for (int k = 0; k < 3; ++k) {
-    NvidiaTileParams tp;
-    tp.clamp = clamps[k];
-    tp.reconstruction = Reconstruction::EdgeVector;
-    put(1 + k, nvidiaTile(c.patch, c.tile, c.cam, tp));
-  }
+  for (int k = 0; k < 3; ++k) put(1 + k, nvidiaTile(c.patch, c.tile, c.cam, tileParams(k)));
   put(4, distancePow2(c.patch, c.cam));
   const PatchLod b = bonaventura(c.patch, c.cam);
   put(5, b);
@@ -244,15 +249,8 @@ void evaluateCpu(const Case& c, uint32_t* out) {
 }
 
 // ---------------------------------------------------------------- GLSL side
-// A float constant as exact GLSL (no decimal round trip).
-std::string glslFloat(float f) {
-  char b[48];
-  std::snprintf(b, sizeof b, "uintBitsToFloat(0x%08xu)", bitsOf(f));
-  return b;
-}
-std::string glslBool(bool v) { return v ? "true" : "false"; }
-
-std::string buildShader(bool precise, bool nvPragmas) {
+// "#version 450", the buffers, lod/shaders/*.glsl and the tool's helpers.
+std::string shaderPrelude(bool precise, bool nvPragmas) {
   using namespace fftess::lod;
   std::string s = "#version 450\n";
   if (nvPragmas) s += "#pragma optionNV(fastmath off)\n#pragma optionNV(fastprecision off)\n";
@@ -266,14 +264,6 @@ std::string buildShader(bool precise, bool nvPragmas) {
     s += glslSource(i);
     s += "\n";
   }
-  const ScreenSphereParams sp{};
-  const DistancePow2Params dp{};
-  const BonaventuraParams bp{};
-  const ClipDiameterParams cp{};
-  const GeomorphParams gp{};
-  auto inside = [](InsideRule r) {
-    return r == InsideRule::Min ? "kInsideMin" : r == InsideRule::Max ? "kInsideMax" : "kInsideAverage";
-  };
   s += "float inF(uint i) { return uintBitsToFloat(inw[i]); }\n"
        "vec3 inV3(uint i) { return vec3(inF(i), inF(i + 1u), inF(i + 2u)); }\n"
        "vec3 gridAt(uint b, int j, int i) { return inV3(b + " + std::to_string(kInGrid) + "u + uint(j * 4 + i) * 3u); }\n"
@@ -288,8 +278,13 @@ std::string buildShader(bool precise, bool nvPragmas) {
        "  LOD_RESULT float l = geomorphLevelAt(patchCentre(gridAt(b, j, i), gridAt(b, j, i + 1), gridAt(b, j + 1, i),"
        " gridAt(b, j + 1, i + 1)), cam, gs);\n"
        "  return l;\n"
-       "}\n"
-       "void main() {\n"
+       "}\n";
+  return s;
+}
+
+// main() up to the inputs: the case's camera, the patch corners c0..c3 and its height bounds.
+std::string shaderInputs() {
+  return "void main() {\n"
        "  uint c = gl_GlobalInvocationID.x;\n"
        "  if (c >= caseCount) { return; }\n"
        "  uint b = c * " + std::to_string(kInStride) + "u;\n"
@@ -309,63 +304,56 @@ std::string buildShader(bool precise, bool nvPragmas) {
        "  bool hb = inw[b + " + std::to_string(kInHeightBounds) + "u] != 0u;\n"
        "  float hmin = inF(b + " + std::to_string(kInHeightBounds + 1) + "u);\n"
        "  float hmax = inF(b + " + std::to_string(kInHeightBounds + 2) + "u);\n";
-  s += "  ScreenSphereSettings ss = ScreenSphereSettings(" + glslFloat(sp.tessellatedTriWidth) + ", " +
-       glslFloat(sp.minFactor) + ", " + glslFloat(sp.maxFactor) + ", " + inside(sp.inside) + ", " +
-       glslBool(sp.frustumCull) + ", " + glslFloat(sp.culledFactor) + ");\n";
-  s += "  LOD_RESULT LodResult r0 = screenSphereLod(c0, c1, c2, c3, hb, hmin, hmax, cam, ss);\n"
+}
+
+// The schemes into the case's output words. The settings are lod::glslSettings of the *Params the C++ side passes
+// (lod/lod_fields.h: every field by name, floats as exact bits): lod.h's defaults, tileParams for nvidia-tile.
+std::string shaderSchemes() {
+  using namespace fftess::lod;
+  const std::string stride = std::to_string(kOutPerScheme);
+  std::string s = glslSettings("ss", ScreenSphereParams{}) +
+       "  LOD_RESULT LodResult r0 = screenSphereLod(c0, c1, c2, c3, hb, hmin, hmax, cam, ss);\n"
        "  putResult(o, r0);\n"
        "  TileNeighbourInfo ni;\n"
        "  for (int e = 0; e < 4; ++e) {\n"
        "    ni.size[e] = inF(b + " + std::to_string(kInTileSize) + "u + uint(e));\n"
        "    ni.farCorner[e] = vec3(0.0f);\n"
+       "    ni.rebuiltHeight[e] = 0.0f;\n"
        "  }\n"
        "  ni.oddU = inw[b + " + std::to_string(kInOddU) + "u] != 0u;\n"
-       "  ni.oddV = inw[b + " + std::to_string(kInOddV) + "u] != 0u;\n"
-       "  for (int k = 0; k < 3; ++k) {\n"
-       "    int mode = kClampNone;\n"
-       "    if (k == 1) { mode = kClampInteger; }\n"
-       "    if (k == 2) { mode = kClampPow2; }\n"
-       "    TileSettings ts = TileSettings(ss, mode, kRebuildEdgeVector, false);\n"
-       "    LOD_RESULT LodResult rt = nvidiaTileLod(c0, c1, c2, c3, hb, hmin, hmax, ni, cam, ts);\n"
-       "    putResult(o + uint(1 + k) * " + std::to_string(kOutPerScheme) + "u, rt);\n"
-       "  }\n";
-  s += "  DistancePow2Settings ds = DistancePow2Settings(" + glslFloat(dp.minDistance) + ", " +
-       glslFloat(dp.maxDistance) + ", " + glslFloat(dp.minTessExponent) + ", " + glslFloat(dp.maxTessExponent) +
-       ", " + glslBool(dp.frustumCull) + ");\n"
+       "  ni.oddV = inw[b + " + std::to_string(kInOddV) + "u] != 0u;\n";
+  for (int k = 0; k < 3; ++k) {
+    const std::string ts = "ts" + std::to_string(k), rt = "rt" + std::to_string(k);
+    s += glslSettings(ts, tileParams(k)) + "  LOD_RESULT LodResult " + rt +
+         " = nvidiaTileLod(c0, c1, c2, c3, hb, hmin, hmax, ni, cam, " + ts + ");\n" + "  putResult(o + " +
+         std::to_string(1 + k) + "u * " + stride + "u, " + rt + ");\n";
+  }
+  s += glslSettings("ds", DistancePow2Params{}) +
        "  LOD_RESULT LodResult r4 = distancePow2Lod(c0, c1, c2, c3, hb, hmin, hmax, cam, ds);\n"
-       "  putResult(o + 4u * " + std::to_string(kOutPerScheme) + "u, r4);\n";
-  s += "  BonaventuraSettings bs = BonaventuraSettings(" + glslFloat(bp.minDistance) + ", " +
-       glslFloat(bp.maxDistance) + ", " + glslFloat(bp.minExponent) + ", " + glslFloat(bp.maxExponent) + ", " +
-       glslBool(bp.angleCorrection) + ", " + glslFloat(bp.rank) + ", vec3(" + glslFloat(bp.up.x) + ", " +
-       glslFloat(bp.up.y) + ", " + glslFloat(bp.up.z) + "), " + glslFloat(bp.minFactor) + ", " +
-       glslFloat(bp.maxFactor) + ", " + glslBool(bp.frustumCull) + ", " + glslFloat(bp.culledFactor) + ", " +
-       glslBool(bp.literalFourthCornerAngle) + ");\n"
+       "  putResult(o + 4u * " + stride + "u, r4);\n";
+  s += glslSettings("bs", BonaventuraParams{}) +
        "  LOD_RESULT LodResult r5 = bonaventuraLod(c0, c1, c2, c3, hb, hmin, hmax, cam, bs);\n"
-       "  putResult(o + 5u * " + std::to_string(kOutPerScheme) + "u, r5);\n"
+       "  putResult(o + 5u * " + stride + "u, r5);\n"
        "  for (int i = 0; i < 4; ++i) { outw[o + " + std::to_string(kOutCorner) +
        "u + uint(i)] = floatBitsToUint(r5.cornerLevel[i]); }\n";
-  s += "  ClipDiameterSettings cs = ClipDiameterSettings(" + glslFloat(cp.edgesPerScreenHeight) + ", " +
-       glslFloat(cp.minFactor) + ", " + glslFloat(cp.maxFactor) + ", " + inside(cp.inside) + ", " +
-       glslBool(cp.frustumCull) + ", " + glslFloat(cp.culledFactor) + ");\n"
+  s += glslSettings("cs", ClipDiameterParams{}) +
        "  LOD_RESULT LodResult r6 = clipDiameterLod(c0, c1, c2, c3, hb, hmin, hmax, cam, cs);\n"
-       "  putResult(o + 6u * " + std::to_string(kOutPerScheme) + "u, r6);\n";
-  s += "  GeomorphSettings gs = GeomorphSettings(" + glslFloat(gp.minDistance) + ", " + glslFloat(gp.maxDistance) +
-       ", " + glslFloat(gp.finestLevel) + ", " + glslFloat(gp.coarsestLevel) + ", " +
-       glslBool(gp.literalArticleWeight) + ");\n"
-       "  LOD_RESULT float level = levelOf(b, 1, 1, cam, gs);\n"
-       "  LOD_RESULT float n0 = levelOf(b, 1, 0, cam, gs);\n"
-       "  LOD_RESULT float n1 = levelOf(b, 0, 1, cam, gs);\n"
-       "  LOD_RESULT float n2 = levelOf(b, 1, 2, cam, gs);\n"
-       "  LOD_RESULT float n3 = levelOf(b, 2, 1, cam, gs);\n"
-       "  LOD_RESULT LodResult r7 = geomorphLod(level, n0, n1, n2, n3);\n"
-       "  putResult(o + 7u * " + std::to_string(kOutPerScheme) + "u, r7);\n"
-       "  outw[o + " + std::to_string(kOutLevels) + "u] = floatBitsToUint(level);\n"
-       "  outw[o + " + std::to_string(kOutLevels + 1) + "u] = floatBitsToUint(n0);\n"
-       "  outw[o + " + std::to_string(kOutLevels + 2) + "u] = floatBitsToUint(n1);\n"
-       "  outw[o + " + std::to_string(kOutLevels + 3) + "u] = floatBitsToUint(n2);\n"
-       "  outw[o + " + std::to_string(kOutLevels + 4) + "u] = floatBitsToUint(n3);\n"
-       "}\n";
-  return s;
+       "  putResult(o + 6u * " + stride + "u, r6);\n";
+  // Geomorph: the patch's level and its neighbours' (grid cells as neighbourPatch), then the factors.
+  const char* const levels[5] = {"level", "n0", "n1", "n2", "n3"};
+  const char* const cells[5] = {"1, 1", "1, 0", "0, 1", "1, 2", "2, 1"};
+  s += glslSettings("gs", GeomorphParams{});
+  for (int k = 0; k < 5; ++k)
+    s += std::string("  LOD_RESULT float ") + levels[k] + " = levelOf(b, " + cells[k] + ", cam, gs);\n";
+  s += "  LOD_RESULT LodResult r7 = geomorphLod(level, n0, n1, n2, n3);\n"
+       "  putResult(o + 7u * " + stride + "u, r7);\n";
+  for (int k = 0; k < 5; ++k)
+    s += "  outw[o + " + std::to_string(kOutLevels + k) + "u] = floatBitsToUint(" + levels[k] + ");\n";
+  return s + "}\n";
+}
+
+std::string buildShader(bool precise, bool nvPragmas) {
+  return shaderPrelude(precise, nvPragmas) + shaderInputs() + shaderSchemes();
 }
 
 using fftess::gltest::GlFunctions;
@@ -384,27 +372,12 @@ bool createContext(bool allowSoftware, fftess::gltest::GlContext& ctx, std::stri
 
 bool runGpu(const GlFunctions& gl, const std::string& source, const std::vector<uint32_t>& in, size_t cases,
             std::vector<uint32_t>& out, std::string& error) {
+  // The gl module's compile and link (their messages: the driver's log; the compile's also the source).
   GLuint sh = gl.glCreateShader(GL_COMPUTE_SHADER);
-  const char* src = source.c_str();
-  gl.glShaderSource(sh, 1, &src, nullptr);
-  gl.glCompileShader(sh);
-  GLint ok = 0;
-  gl.glGetShaderiv(sh, GL_COMPILE_STATUS, &ok);
-  char log[8192] = {};
-  if (!ok) {
-    gl.glGetShaderInfoLog(sh, sizeof log, nullptr, log);
-    error = std::string("compute shader does not compile:\n") + log;
-    return false;
-  }
+  if (!fftess::gltest::compileShader(gl, sh, source, error)) return false;
   GLuint prog = gl.glCreateProgram();
   gl.glAttachShader(prog, sh);
-  gl.glLinkProgram(prog);
-  gl.glGetProgramiv(prog, GL_LINK_STATUS, &ok);
-  if (!ok) {
-    gl.glGetProgramInfoLog(prog, sizeof log, nullptr, log);
-    error = std::string("compute program does not link:\n") + log;
-    return false;
-  }
+  if (!fftess::gltest::linkProgram(gl, prog, error)) return false;
   gl.glUseProgram(prog);
   GLuint bufs[2];
   gl.glGenBuffers(2, bufs);
@@ -422,14 +395,7 @@ bool runGpu(const GlFunctions& gl, const std::string& source, const std::vector<
   gl.glFinish();
   gl.glBindBuffer(GL_SHADER_STORAGE_BUFFER, bufs[1]);
   gl.glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(out.size() * 4), out.data());
-  const GLenum err = gl.glGetError();
-  if (err != GL_NO_ERROR) {
-    char b[64];
-    std::snprintf(b, sizeof b, "GL error 0x%04x", err);
-    error = b;
-    return false;
-  }
-  return true;
+  return fftess::gltest::checkGl(gl, "the drift dispatch", error);
 }
 
 // ---------------------------------------------------------------- comparison
@@ -437,9 +403,10 @@ int64_t orderedKey(uint32_t u) {
   return (u & 0x80000000u) ? -static_cast<int64_t>(u & 0x7fffffffu) : static_cast<int64_t>(u);
 }
 bool isNan(uint32_t u) { return (u & 0x7f800000u) == 0x7f800000u && (u & 0x007fffffu) != 0; }
-uint64_t ulpDistance(uint32_t a, uint32_t b) {
+using Count = unsigned long long; // printf's %llu
+Count ulpDistance(uint32_t a, uint32_t b) {
   const int64_t d = orderedKey(a) - orderedKey(b);
-  return static_cast<uint64_t>(d < 0 ? -d : d);
+  return static_cast<Count>(d < 0 ? -d : d);
 }
 
 bool tessellationDiffers(uint32_t a, uint32_t b, fftess::Partitioning part) {
@@ -450,9 +417,9 @@ bool tessellationDiffers(uint32_t a, uint32_t b, fftess::Partitioning part) {
 }
 
 struct Stat {
-  uint64_t values = 0, identical = 0, nanMismatch = 0, maxUlp = 0, tessEven = 0, tessInteger = 0;
-  uint64_t byCategory[kCategories] = {}, identicalByCategory[kCategories] = {};
-  uint64_t cullOneSide = 0, culledBoth = 0, cases = 0;
+  Count values = 0, identical = 0, nanMismatch = 0, maxUlp = 0, tessEven = 0, tessInteger = 0;
+  Count byCategory[kCategories] = {}, identicalByCategory[kCategories] = {};
+  Count cullOneSide = 0, culledBoth = 0, cases = 0;
   void add(uint32_t cpu, uint32_t gpu, int category, bool tess) {
     ++values;
     ++byCategory[category];
@@ -473,80 +440,58 @@ struct Stat {
   }
 };
 
-double pct(uint64_t a, uint64_t b) { return b ? 100.0 * static_cast<double>(a) / static_cast<double>(b) : 100.0; }
+double pct(Count a, Count b) { return b ? 100.0 * static_cast<double>(a) / static_cast<double>(b) : 100.0; }
 
-} // namespace
-
-int main(int argc, char** argv) {
+struct Options {
   bool precise = false, nvPragmas = false, allowSoftware = false;
   int examples = 3;
+  long cases = 200000;
+  unsigned long long seed = 1;
+};
+
+// The command line; false (after the message) on a usage error.
+bool parseOptions(int argc, char** argv, Options& o) {
   std::vector<std::string> pos;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--precise") {
-      precise = true;
+      o.precise = true;
     } else if (a == "--nv-pragmas") {
-      nvPragmas = true;
+      o.nvPragmas = true;
     } else if (a == "--allow-llvmpipe") {
-      allowSoftware = true;
+      o.allowSoftware = true;
     } else if (a == "--examples" && i + 1 < argc) {
-      examples = std::atoi(argv[++i]);
+      o.examples = std::atoi(argv[++i]);
     } else if (!a.empty() && a[0] != '-') {
       pos.push_back(a);
     } else {
       std::fprintf(stderr, "fftess_lod_gpu_drift: unknown option '%s' (argument %d)\n", a.c_str(), i);
-      return 1;
+      return false;
     }
   }
   char* end = nullptr;
-  const long cases = pos.size() > 0 ? std::strtol(pos[0].c_str(), &end, 10) : 200000;
-  if (pos.size() > 0 && (*end != '\0' || cases < 1 || cases > 2000000)) {
+  if (pos.size() > 0) o.cases = std::strtol(pos[0].c_str(), &end, 10);
+  if (pos.size() > 0 && (*end != '\0' || o.cases < 1 || o.cases > 2000000)) {
     std::fprintf(stderr, "fftess_lod_gpu_drift: CASES '%s' (argument 1) must be an integer in [1, 2000000]\n",
                  pos[0].c_str());
-    return 1;
+    return false;
   }
-  const unsigned long long seed = pos.size() > 1 ? std::strtoull(pos[1].c_str(), &end, 10) : 1;
+  if (pos.size() > 1) o.seed = std::strtoull(pos[1].c_str(), &end, 10);
   if (pos.size() > 1 && *end != '\0') {
     std::fprintf(stderr, "fftess_lod_gpu_drift: SEED '%s' (argument 2) must be an unsigned integer\n", pos[1].c_str());
-    return 1;
+    return false;
   }
   if (pos.size() > 2) {
     std::fprintf(stderr, "fftess_lod_gpu_drift: too many arguments ('%s')\n", pos[2].c_str());
-    return 1;
+    return false;
   }
+  return true;
+}
 
-  fftess::gltest::GlContext context;
-  std::string info, error;
-  if (!createContext(allowSoftware, context, info, error)) {
-    std::fprintf(stderr, "fftess_lod_gpu_drift: %s\n", error.c_str());
-    return 3;
-  }
-  std::printf("%s", info.c_str());
-  std::printf("variant: %s%s; cases %ld, seed %llu\n", precise ? "precise results" : "plain",
-              nvPragmas ? " + optionNV(fastmath off, fastprecision off)" : "", cases, seed);
-
-  Rng rng{seed};
-  std::vector<Case> all(static_cast<size_t>(cases));
-  std::vector<uint32_t> in(static_cast<size_t>(cases) * kInStride);
-  for (long i = 0; i < cases; ++i) {
-    buildCase(rng, all[static_cast<size_t>(i)]);
-    std::memcpy(&in[static_cast<size_t>(i) * kInStride], all[static_cast<size_t>(i)].w, sizeof(Case::w));
-  }
-  std::vector<uint32_t> gpu;
-  if (!runGpu(context.gl, buildShader(precise, nvPragmas), in, static_cast<size_t>(cases), gpu, error)) {
-    std::fprintf(stderr, "fftess_lod_gpu_drift: %s\n", error.c_str());
-    return 4;
-  }
-  std::vector<uint32_t> cpu(static_cast<size_t>(cases) * kOutStride);
-  for (long i = 0; i < cases; ++i) evaluateCpu(all[static_cast<size_t>(i)], &cpu[static_cast<size_t>(i) * kOutStride]);
-
-  // FNV-1a of the C++ results: the C++ side calls the host's libm (acosf, exp2f), so compare this line between
-  // the machine that ran and the one the doc's C++ numbers come from.
-  uint64_t fnv = 0xcbf29ce484222325ull;
-  for (uint32_t w : cpu)
-    for (int k = 0; k < 4; ++k) fnv = (fnv ^ ((w >> (8 * k)) & 0xffu)) * 0x100000001b3ull;
-  std::printf("C++ results FNV-1a: %016llx\n", static_cast<unsigned long long>(fnv));
-
+// Compares the two sides per scheme and prints the tables (and up to `examples` differing factors per scheme).
+void report(const std::vector<Case>& all, const std::vector<uint32_t>& cpu, const std::vector<uint32_t>& gpu,
+            int examples) {
+  const long cases = static_cast<long>(all.size());
   Stat factor[kSchemes], unclamped[kSchemes], corner, levels;
   std::vector<std::string> shown[kSchemes];
   static const char* const kFactorNames[6] = {"Ueq0", "Veq0", "Ueq1", "Veq1", "insideU", "insideV"};
@@ -567,7 +512,7 @@ int main(int argc, char** argv) {
           char b[256];
           std::snprintf(b, sizeof b, "case %ld (%s) %s: C++ %.9g (0x%08x) GPU %.9g (0x%08x), %llu ulp", i,
                         kCategoryNames[cat], kFactorNames[k], floatOf(cs[k]), cs[k], floatOf(gs[k]), gs[k],
-                        static_cast<unsigned long long>(ulpDistance(cs[k], gs[k])));
+                        ulpDistance(cs[k], gs[k]));
           shown[s].push_back(b);
         }
       }
@@ -581,26 +526,20 @@ int main(int argc, char** argv) {
               "max ulp", "NaN", "tess even", "tess int", "cull 1side", "culled");
   for (int s = 0; s < kSchemes; ++s) {
     const Stat& t = factor[s];
-    std::printf("%-20s %8llu %9llu %11.4f%% %8llu %6llu %10llu %10llu %9llu %9llu\n", kSchemeNames[s],
-                static_cast<unsigned long long>(t.cases), static_cast<unsigned long long>(t.values),
-                pct(t.identical, t.values), static_cast<unsigned long long>(t.maxUlp),
-                static_cast<unsigned long long>(t.nanMismatch), static_cast<unsigned long long>(t.tessEven),
-                static_cast<unsigned long long>(t.tessInteger), static_cast<unsigned long long>(t.cullOneSide),
-                static_cast<unsigned long long>(t.culledBoth));
+    std::printf("%-20s %8llu %9llu %11.4f%% %8llu %6llu %10llu %10llu %9llu %9llu\n", kSchemeNames[s], t.cases,
+                t.values, pct(t.identical, t.values), t.maxUlp, t.nanMismatch, t.tessEven, t.tessInteger,
+                t.cullOneSide, t.culledBoth);
   }
   std::printf("\nbefore the clamps (why.unclamped; for exponent schemes 2^exponent before clamping):\n");
   for (int s = 0; s < kSchemes; ++s) {
     const Stat& t = unclamped[s];
     std::printf("%-20s %9llu values %11.4f%% bit-identical, max %llu ulp, %llu NaN mismatches\n", kSchemeNames[s],
-                static_cast<unsigned long long>(t.values), pct(t.identical, t.values),
-                static_cast<unsigned long long>(t.maxUlp), static_cast<unsigned long long>(t.nanMismatch));
+                t.values, pct(t.identical, t.values), t.maxUlp, t.nanMismatch);
   }
-  std::printf("%-20s %9llu values %11.4f%% bit-identical, max %llu ulp\n", "bonaventura corners",
-              static_cast<unsigned long long>(corner.values), pct(corner.identical, corner.values),
-              static_cast<unsigned long long>(corner.maxUlp));
-  std::printf("%-20s %9llu values %11.4f%% bit-identical, max %llu ulp\n", "geomorph levels",
-              static_cast<unsigned long long>(levels.values), pct(levels.identical, levels.values),
-              static_cast<unsigned long long>(levels.maxUlp));
+  for (const Stat* t : {&corner, &levels})
+    std::printf("%-20s %9llu values %11.4f%% bit-identical, max %llu ulp\n",
+                t == &corner ? "bonaventura corners" : "geomorph levels", t->values, pct(t->identical, t->values),
+                t->maxUlp);
   std::printf("\nbit-identical factors by camera category:\n%-20s", "scheme");
   for (const char* n : kCategoryNames) std::printf(" %10s", n);
   std::printf("\n");
@@ -615,5 +554,45 @@ int main(int argc, char** argv) {
     for (int s = 0; s < kSchemes; ++s)
       for (const std::string& e : shown[s]) std::printf("  %-20s %s\n", kSchemeNames[s], e.c_str());
   }
+}
+} // namespace
+
+int main(int argc, char** argv) {
+  Options o;
+  if (!parseOptions(argc, argv, o)) return 1;
+  const long cases = o.cases;
+  fftess::gltest::GlContext context;
+  std::string info, error;
+  if (!createContext(o.allowSoftware, context, info, error)) {
+    std::fprintf(stderr, "fftess_lod_gpu_drift: %s\n", error.c_str());
+    return 3;
+  }
+  std::printf("%s", info.c_str());
+  std::printf("variant: %s%s; cases %ld, seed %llu\n", o.precise ? "precise results" : "plain",
+              o.nvPragmas ? " + optionNV(fastmath off, fastprecision off)" : "", cases, o.seed);
+
+  Rng rng{o.seed};
+  std::vector<Case> all(static_cast<size_t>(cases));
+  std::vector<uint32_t> in(static_cast<size_t>(cases) * kInStride);
+  for (long i = 0; i < cases; ++i) {
+    buildCase(rng, all[static_cast<size_t>(i)]);
+    std::memcpy(&in[static_cast<size_t>(i) * kInStride], all[static_cast<size_t>(i)].w, sizeof(Case::w));
+  }
+  std::vector<uint32_t> gpu;
+  if (!runGpu(context.gl, buildShader(o.precise, o.nvPragmas), in, static_cast<size_t>(cases), gpu, error)) {
+    std::fprintf(stderr, "fftess_lod_gpu_drift: %s\n", error.c_str());
+    return 4;
+  }
+  std::vector<uint32_t> cpu(static_cast<size_t>(cases) * kOutStride);
+  for (long i = 0; i < cases; ++i) evaluateCpu(all[static_cast<size_t>(i)], &cpu[static_cast<size_t>(i) * kOutStride]);
+
+  // FNV-1a of the C++ results: the C++ side calls the host's libm (acosf, exp2f), so compare this line between
+  // the machine that ran and the one the doc's C++ numbers come from.
+  uint64_t fnv = 0xcbf29ce484222325ull;
+  for (uint32_t w : cpu)
+    for (int k = 0; k < 4; ++k) fnv = (fnv ^ ((w >> (8 * k)) & 0xffu)) * 0x100000001b3ull;
+  std::printf("C++ results FNV-1a: %016llx\n", static_cast<unsigned long long>(fnv));
+
+  report(all, cpu, gpu, o.examples);
   return 0;
 }
