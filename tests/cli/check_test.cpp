@@ -184,7 +184,7 @@ TEST_CASE("check: the bundled scene is watertight with the pow2 workaround, crac
 }
 
 // One terrain build per command: the JSON reports count the builds of the whole process.
-TEST_CASE("check, check --mesh and sweep build the terrain once", "[cli][check][sweep]") {
+TEST_CASE("check, check --mesh and sweep build the terrain once", "[cli][check][sweep][slow]") {
   const std::string js = clitest::tmpDir() + "/builds.json";
   const std::string svg = clitest::tmpDir() + "/builds.svg";
   auto r = run({"check", kScene, "--json", js, "--svg", svg});

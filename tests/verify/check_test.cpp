@@ -175,7 +175,7 @@ TEST_CASE("check: the whole-mesh check agrees with the edge check", "[verify][ch
 // with the clamp off) and skips the culled one; the whole-mesh check must do the same per half (it used to ignore
 // the whole big edge, and `fftess check --mesh` exited 3). Random cameras 6 and 7 of seed 1 on rings_small.toml with
 // the clamp off have such cracks.
-TEST_CASE("check: the whole-mesh check agrees beside a half-culled edge", "[verify][check][mesh]") {
+TEST_CASE("check: the whole-mesh check agrees beside a half-culled edge", "[verify][check][mesh][slow]") {
   const Scene s = loadExample("rings_small.toml", {"lod.adjacency_clamp=none"});
   const Terrain t = prepared(s);
   const detail::TerrainData& d = t.data();

@@ -12,7 +12,7 @@ using namespace fftess::verify;
 using namespace fftess::verify::test;
 
 TEST_CASE("prepared terrain: one build serves check, mesh check, sweep, cameras, extent and geometry",
-          "[verify][prepared]") {
+          "[verify][prepared][slow]") {
   const Scene s = loadExample("rings_small.toml");
   const int64_t before = terrainBuildCount();
   const TerrainResult r = prepareTerrain(s);
@@ -38,7 +38,7 @@ TEST_CASE("prepared terrain: one build serves check, mesh check, sweep, cameras,
   CHECK(t.stats().terrainBuilds == 1);
 }
 
-TEST_CASE("prepared terrain: corner heights are sampled once, never per camera", "[verify][prepared]") {
+TEST_CASE("prepared terrain: corner heights are sampled once, never per camera", "[verify][prepared][slow]") {
   const Scene s = loadExample("rings_small.toml", {"lod.displaced_corners=true"}); // fbm displacement
   REQUIRE(s.displacement.kind != DisplacementKind::None);
   REQUIRE(s.lod.displacedCorners);

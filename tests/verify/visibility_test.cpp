@@ -62,7 +62,7 @@ bool boxTouchesView(const Terrain& t, const lod::Camera& cam, int patch, float h
 } // namespace
 
 TEST_CASE("visibility: a distance rule without height bounds is never watertight where it culls what is seen",
-          "[verify][visibility]") {
+          "[verify][visibility][slow]") {
   const Scene s = loadExample("gpu_distance_glsl.toml", {"displacement.height_scale=40"});
   const Terrain t = prepared(s);
   auto provider = std::make_shared<NoHeightBounds>();
