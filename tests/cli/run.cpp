@@ -144,6 +144,11 @@ TimedResult runWith(const std::vector<std::string>& args, const RunOptions& o) {
   ::unlink(in.c_str());
   ::unlink(out.c_str());
   ::unlink(err.c_str());
+  // In the sanitizer build a report ends the binary with exit status 1, which is also fftess's "findings" status:
+  // a test expecting 1 would pass. The report's own words fail the test instead, whatever the status.
+  for (const char* report : {"ERROR: AddressSanitizer", "ERROR: LeakSanitizer", "SUMMARY: UndefinedBehaviorSanitizer"})
+    if (r.err.find(report) != std::string::npos)
+      throw std::runtime_error("the fftess binary under test reported a sanitizer error:\n" + r.err);
   return r;
 }
 
