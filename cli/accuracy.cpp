@@ -131,7 +131,7 @@ void runRow(Row& row, const BenchReportArgs& a, const std::vector<vf::Camera>& c
         if (g.why.culled != f[i].why.culled) ++row.lodCullsDiffer;
         if (g.why.culled) continue;
         for (int e = 0; e < 4; ++e) {
-          if (floatBits(g.factors[e]) == floatBits(f[i].factors[e])) continue;
+          if (bitsOf(g.factors[e]) == bitsOf(f[i].factors[e])) continue;
           ++row.lodFactorsDiffer;
           if (p.tile.size[e] != 1.0f) ++row.lodJumpFactorsDiffer;
         }

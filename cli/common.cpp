@@ -287,12 +287,6 @@ void flushStdout() {
     throw std::runtime_error(std::string("writing to stdout failed: ") + std::strerror(errno ? errno : EIO));
 }
 
-uint32_t floatBits(float f) {
-  uint32_t b;
-  std::memcpy(&b, &f, sizeof b);
-  return b;
-}
-
 std::string hex8(uint32_t v) {
   char buf[9];
   std::snprintf(buf, sizeof buf, "%08x", v);

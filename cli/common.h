@@ -1,6 +1,7 @@
 // Shared pieces of the fftess command-line tool: exit statuses, error types, atomic report files, number formatting.
 #pragma once
 
+#include "base/bits.h" // bitsOf, floatOf: the one float <-> bits helper
 #include <cstdint>
 #include <stdexcept>
 #include <string>
@@ -92,7 +93,6 @@ void writeStdout(const std::string& s);
 // Flushes stdout; std::runtime_error ("writing to stdout failed: ...", exit 3) if any write to it failed.
 void flushStdout();
 
-uint32_t floatBits(float f);
 std::string hex8(uint32_t v);                 // 8 lowercase hex digits
 std::string formatFloat(float f);             // shortest round-trip decimal (%.9g trimmed), nan/inf spelled out
 std::string formatNumber(double v);           // for human text: up to 6 significant digits

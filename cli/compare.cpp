@@ -24,12 +24,6 @@ namespace {
 using json = nlohmann::ordered_json;
 using nlohmann::ordered_json;
 
-float floatOfBits(uint32_t b) {
-  float f;
-  std::memcpy(&f, &b, sizeof f);
-  return f;
-}
-
 // Reads the batch file one patch at a time (blank lines and '#' comments skipped, as `tessellate` does).
 class BatchReader {
 public:
@@ -66,12 +60,12 @@ std::istream& openInput(const std::string& path, std::unique_ptr<std::ifstream>&
 }
 
 std::string vertexText(CapturedVertex v) {
-  return "(" + formatFloat(floatOfBits(v.u)) + ", " + formatFloat(floatOfBits(v.v)) + ")";
+  return "(" + formatFloat(floatOf(v.u)) + ", " + formatFloat(floatOf(v.v)) + ")";
 }
 
 json vertexJson(CapturedVertex v) {
   return json{
-      {"u", floatOfBits(v.u)}, {"v", floatOfBits(v.v)}, {"u_bits", "0x" + hex8(v.u)}, {"v_bits", "0x" + hex8(v.v)}};
+      {"u", floatOf(v.u)}, {"v", floatOf(v.v)}, {"u_bits", "0x" + hex8(v.u)}, {"v_bits", "0x" + hex8(v.v)}};
 }
 
 void describePatch(std::string& o, ordered_json& list, int64_t index, int line, const std::string& batch,

@@ -133,7 +133,7 @@ std::string edgeSummary(const HalfEdgeSide& s) {
 json sideJson(const HalfEdgeSide& s) {
   json j;
   j["factor"] = std::isfinite(s.factor) ? json(s.factor) : json(formatFloat(s.factor));
-  j["factor_bits"] = hex8(floatBits(s.factor));
+  j["factor_bits"] = hex8(bitsOf(s.factor));
   j["culled"] = s.edge.culled;
   j["processed_factor"] = s.edge.processedFactor;
   j["fixed_factor"] = s.edge.fixedFactor;

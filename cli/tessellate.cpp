@@ -70,7 +70,7 @@ void formatTable(std::string& out, const BatchPatch& bp, const Tessellator& t) {
       out += "(scale)";
     out += "=" + formatFloat(p.factors[i]);
     if (!std::isfinite(p.factors[i]) || (p.factors[i] != 0 && std::fabs(p.factors[i]) < 1.17549435e-38f))
-      out += " [" + hex8(floatBits(p.factors[i])) + "]";
+      out += " [" + hex8(bitsOf(p.factors[i])) + "]";
   }
   out += "\n";
   if (p.stage.hlsl) {
@@ -97,7 +97,7 @@ void formatTable(std::string& out, const BatchPatch& bp, const Tessellator& t) {
   for (size_t i = 0; i < pts.size(); ++i) {
     const DomainPoint& q = pts[i];
     std::snprintf(buf, sizeof buf, "  %6zu  %-12s %-12s %08x %08x", i, formatFloat(q.u).c_str(), formatFloat(q.v).c_str(),
-                  floatBits(q.u), floatBits(q.v));
+                  bitsOf(q.u), bitsOf(q.v));
     out += buf;
     if (p.domain == Domain::Tri) out += "  " + formatFloat(1.0f - q.u - q.v);
     out += "\n";

@@ -3,6 +3,8 @@
 #include "gl_capture.h"
 #include "gl_context.h"
 
+#include "base/bits.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -25,16 +27,10 @@ constexpr int kMaxPatchesPerDraw = 2048;
 constexpr int kCaptureVertices = 8 * kDrawPointBudget;
 constexpr int kCaptureStride = 4; // uvec4 per vertex: u bits, v bits, patch in draw, vertex id
 
-float bitsToFloat(uint32_t b) {
-  float f;
-  std::memcpy(&f, &b, sizeof f);
-  return f;
-}
-
 // Segments an edge can have for this factor, never underestimated: clamp to [.., 64] (NaN and +Inf as 64),
 // +1 for the rounding up to even/odd of the fractional partitionings, at least 2.
 int segmentBound(uint32_t bits) {
-  const float f = bitsToFloat(bits);
+  const float f = floatOf(bits);
   if (std::isnan(f) || !(f < 64.0f)) return 64;
   const int s = static_cast<int>(std::ceil(std::max(f, 0.0f))) + 1;
   return std::max(2, std::min(64, s));
@@ -42,7 +38,7 @@ int segmentBound(uint32_t bits) {
 
 // GL 4.5 section 11.2.2: a patch whose relevant outer levels include one <= 0 or NaN is discarded.
 bool outerDiscards(uint32_t bits) {
-  const float f = bitsToFloat(bits);
+  const float f = floatOf(bits);
   return std::isnan(f) || !(f > 0.0f);
 }
 

@@ -31,12 +31,6 @@ bool allFinite(const glm::vec3* p, int n) {
   return true;
 }
 
-uint32_t bitsOf(float f) {
-  uint32_t b;
-  std::memcpy(&b, &f, sizeof b);
-  return b;
-}
-
 // The fault's perturbation of a hull factor (Fault::FactorUlp, FactorStep, NanFactor).
 float perturbFactor(const Fault& f, float x) {
   switch (f.kind) {
@@ -140,9 +134,7 @@ void compareFactors(const TerrainData& t, const std::vector<lod::PatchLod>& fact
     for (int k = 0; k < 6; ++k) {
       const float g = factors[i].factors[k], c = cpuFactors[i].factors[k];
       ++rep.stats.factorsCompared;
-      uint32_t gb, cb;
-      std::memcpy(&gb, &g, 4);
-      std::memcpy(&cb, &c, 4);
+      const uint32_t gb = bitsOf(g), cb = bitsOf(c);
       if (gb == cb) continue;
       FactorDiff d;
       d.patch = t.patches[i].ref;
@@ -308,7 +300,7 @@ void fillSide(const CameraCheck& c, EdgeSide& s, const TerrainPatch& P, int edge
   s.patch = P.ref;
   s.edge = edge;
   s.hullFactor = c.factors[pi].factors[edge];
-  std::memcpy(&s.hullFactorBits, &s.hullFactor, sizeof s.hullFactorBits);
+  s.hullFactorBits = bitsOf(s.hullFactor);
   s.processedFactor = E.processedFactor;
   s.culled = c.cache.culled[pi] != 0;
   s.lod.why = c.factors[pi].why.factor[edge];

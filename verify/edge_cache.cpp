@@ -37,8 +37,7 @@ void EdgeCache::grow() {
 }
 
 const EdgePoints& EdgeCache::get(float factor, WorkStats& work) {
-  uint32_t bits;
-  std::memcpy(&bits, &factor, sizeof bits);
+  const uint32_t bits = bitsOf(factor);
   // Linear probing in a table kept at most half full: it grows (entries keep their addresses) within a camera.
   if (used_ * 2 >= keys_.size()) grow();
   const size_t mask = keys_.size() - 1;

@@ -1,6 +1,7 @@
 // Internal header of fftess_verify (not installed, not part of the contract). No CGAL here.
 #pragma once
 
+#include "base/bits.h"
 #include "verify/check.h" // and through it every stage header up to the check
 
 #include <array>
