@@ -207,6 +207,11 @@ LodInput LodPatches::operator[](size_t i) const {
   return LodInput{p.lod, p.tile};
 }
 bool LodPatches::sizeJumps() const { return t_->adjacency; }
+LodPatches::Corner LodPatches::corner(size_t i, int c) const {
+  const detail::TerrainPatch& p = t_->patches[i];
+  return Corner{p.corners[c], t_->geometry[i].heights[c], glm::vec2(p.tex[c][0], p.tex[c][1])};
+}
+Extent LodPatches::extent() const { return t_->extent; }
 const Scene& LodPatches::scene() const { return t_->scene; }
 
 std::string lodWords(const EdgeSide& side) {

@@ -43,6 +43,16 @@ public:
   bool sizeJumps() const;
   // The terrain's scene (lod.scheme and its parameters, lod.shader).
   const Scene& scene() const;
+  // Corner c (0..3, u + 2v) of patch i as a hull shader's control point may carry it ([lod.inputs]): the flat
+  // world position (y = 0), the height the vertex shader samples there, the corner's texture coordinate.
+  struct Corner {
+    glm::vec3 flat{0.0f};
+    float height = 0;
+    glm::vec2 tex{0.0f};
+  };
+  Corner corner(size_t i, int c) const;
+  // The terrain's extent in x/z (the heightmap spans it).
+  Extent extent() const;
 
 private:
   const detail::TerrainData* t_;

@@ -12,6 +12,7 @@
 
 #include <glm/glm.hpp>
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -163,6 +164,33 @@ using AdjacencyClamp = lod::AdjacencyClamp;
 // The scene's LOD: lod/'s own parameter structs, handed to lod/ as they are (no copies in between). A TOML key that
 // several schemes share sets the field in each struct that has it (the parser does that, once). Defaults are
 // lod.h's, except where a comment says otherwise.
+// [lod.uniforms] of a hull shader as written: one uniform, uniform-block / cbuffer member or sampler of the shader,
+// bound by its name to numbers or to a value fftess computes (kLodUniformValues).
+struct UniformBinding {
+  std::string name;            // the key: the uniform's, the member's (without or with "Block."), the sampler's /
+                               // the HLSL texture's name
+  std::vector<double> numbers; // a number, a boolean (1 / 0) or an array of them, nested arrays flattened in the
+                               // order the shader indexes them (m[i][j]: GLSL mat column i, HLSL matrix row i)
+  std::string value;           // or a named value (one of kLodUniformValues), "" for numbers
+  bool transpose = false;      // "transpose(NAME)": the matrix NAME transposed (for mul(v, M) row-vector code)
+  int line = 0, column = 0;    // the value's position in the scene file (0: from --set)
+};
+// The named values of [lod.uniforms] (docs/gpu_lod.md lists what each is). Matrices map column vectors
+// (clip = M * p in GLSL, mul(M, p) in HLSL); *_d3d: the projection with depth in [0, w] (D3D), others as the camera.
+inline const char* const kLodUniformValues[] = {
+    "view", "projection", "view_projection", "projection_d3d", "view_projection_d3d", "world", "eye", "viewport",
+    "frustum_planes", "frustum_planes_gl", "frustum_planes_d3d", "near", "far", "fov_y", "heightmap",
+    "height_scale", "terrain_min", "terrain_size", "patch_size"};
+// [lod.inputs]: a per-control-point input of the hull shader, bound by its name to what the control point carries.
+struct InputBinding {
+  std::string name;  // the key: the GLSL input variable / block member, the HLSL struct member or semantic
+  std::string value; // one of kLodInputValues
+  int line = 0, column = 0;
+};
+inline const char* const kLodInputValues[] = {"position", "position_flat", "uv", "bounds_y", "patch_size"};
+// The world direction of a hull shader's domain axis (lod.domain_u / lod.domain_v).
+enum class DomainAxis : uint8_t { PlusX, MinusX, PlusZ, MinusZ };
+
 struct Lod {
   LodScheme scheme = LodScheme::ScreenSphere; // lod.scheme
   float factor = 8;                           // lod.factor: constant
@@ -188,9 +216,20 @@ struct Lod {
   // lod.finest_level, lod.coarsest_level (each in [0, 5]); literalArticleWeight = lod.literal_article_weight.
   lod::GeomorphParams geomorph{};
   // lod.shader: the user's LOD shader (docs/gpu_lod.md), the path as written resolved against the scene file's
-  // folder; "" = none. Ends in .glsl (GLSL 4.50) or .hlsl (HLSL, through glslang and spirv-cross). Implies
-  // evaluate = Gpu.
+  // folder; "" = none. A lodMain file (.glsl GLSL 4.50, .hlsl HLSL) or a hull shader as written (.tesc,
+  // .tesc.glsl, .glsl with layout(vertices = N) out; .hlsl / .fx with [patchconstantfunc]). Implies evaluate = Gpu.
   std::string shader;
+  // A hull shader as written (lod.shader a GLSL tessellation control shader or an HLSL hull shader; docs/gpu_lod.md
+  // "Your hull shader as written"): how the scene feeds it. Refused with a lodMain file.
+  std::string entry;            // lod.entry: the HLSL hull shader function ("" = the one with [patchconstantfunc])
+  std::string evaluationShader; // lod.evaluation_shader: the GLSL TES / HLSL domain shader (resolved like lod.shader;
+                                // "" = none): its domain and partitioning are checked against the scene
+  std::vector<UniformBinding> uniforms; // [lod.uniforms], in file order
+  std::vector<InputBinding> inputs;     // [lod.inputs], in file order
+  int controlPoints = 4;                // lod.control_points: 4 (a patch's corners) or 1 (one point per patch)
+  std::array<int, 4> cornerOrder{{0, 1, 2, 3}}; // lod.corner_order: fftess's corner (u + 2v) of each control point
+  DomainAxis domainU = DomainAxis::PlusX;       // lod.domain_u: the world direction of the shader's domain u
+  DomainAxis domainV = DomainAxis::PlusZ;       // lod.domain_v: ... of its v (the other axis)
   LodEvaluate evaluate = LodEvaluate::Cpu; // lod.evaluate
   bool displacedCorners = true;  // lod.displaced_corners: corners raised to their height for the LOD (NVIDIA VS)
   HeightBounds heightBounds = HeightBounds::Global; // lod.height_bounds
