@@ -48,6 +48,31 @@ int readBounded(const std::string& path, size_t limit, std::string& out) {
 // Scene::contentHash: the text, each override, the raw heightmap's texels (after displacement.format) and the
 // lod.shader file, each part after a tag byte and its size (Fnv1a64::tag). False with error: the shader cannot be
 // read (it was there when the key was read) or is larger than kMaxSceneBytes.
+// The files a shader #includes ("..." and <...>, relative to the including file), depth first, each hashed with
+// its name as written; one that cannot be read is left to the shader's compiler to report.
+static void hashIncludes(Fnv1a64& h, const std::string& file, const std::string& text, int depth) {
+  if (depth > 16) return;
+  const size_t slash = file.find_last_of('/');
+  const std::string dir = slash == std::string::npos ? "." : file.substr(0, slash);
+  size_t at = 0;
+  while ((at = text.find("#include", at)) != std::string::npos) {
+    at += 8;
+    const size_t open = text.find_first_of("\"<\n", at);
+    if (open == std::string::npos || text[open] == '\n') continue;
+    const size_t close = text.find_first_of(text[open] == '"' ? "\"\n" : ">\n", open + 1);
+    if (close == std::string::npos || text[close] == '\n') continue;
+    const std::string name = text.substr(open + 1, close - open - 1);
+    const std::string path = !name.empty() && name[0] == '/' ? name : dir + "/" + name;
+    std::string bytes;
+    if (readBounded(path, kMaxSceneBytes, bytes) <= 0) continue;
+    h.tag(5, name.size());
+    h.add(name);
+    h.tag(6, bytes.size());
+    h.add(bytes);
+    hashIncludes(h, path, bytes, depth + 1);
+  }
+}
+
 bool hashSceneContent(const std::string& text, const std::vector<std::string>& overrides, Scene& s, std::string& error) {
   Fnv1a64 h;
   h.tag(0, text.size());
@@ -75,6 +100,19 @@ bool hashSceneContent(const std::string& text, const std::vector<std::string>& o
     }
     h.tag(3, bytes.size());
     h.add(bytes);
+    hashIncludes(h, s.lod.shader, bytes, 0);
+  }
+  if (!s.lod.evaluationShader.empty()) {
+    std::string bytes;
+    const int rc = readBounded(s.lod.evaluationShader, kMaxSceneBytes, bytes);
+    if (rc <= 0) {
+      error = "lod.evaluation_shader: " + s.lod.evaluationShader +
+              (rc < 0 ? ": larger than " + std::to_string(kMaxSceneBytes) + " bytes" : std::string(": cannot read it"));
+      return false;
+    }
+    h.tag(4, bytes.size());
+    h.add(bytes);
+    hashIncludes(h, s.lod.evaluationShader, bytes, 0);
   }
   s.contentHash = h.h;
   return true;

@@ -237,6 +237,9 @@ private:
 void readLayout(Reader& r, const toml::table& root, Scene& s);
 void readDisplacement(Reader& r, const toml::table& root, Scene& s, const std::string& baseDir);
 void readLod(Reader& r, const toml::table& root, Scene& s, const std::string& baseDir);
+// scene_hull.cpp: a hull shader as written (lod.entry, lod.evaluation_shader, [lod.uniforms], [lod.inputs],
+// lod.control_points, lod.corner_order, lod.domain_u, lod.domain_v), after lod.shader; refused without lod.shader.
+void readHullKeys(Reader& r, const toml::table& t, Lod& L, const std::string& baseDir);
 void readTessellation(Reader& r, const toml::table& root, Scene& s);
 // What needs a particular scheme, partitioning or layout (geomorph, displacement.mip with lod.shader / a scheme).
 void checkSchemeEffects(Reader& r, const toml::table& root, const Scene& s);

@@ -167,8 +167,10 @@ void readLodSource(Reader& r, const toml::table& t, Lod& L, const std::string& b
       const size_t n = std::strlen(ext);
       return f.size() > n && f.compare(f.size() - n, n, ext) == 0;
     };
-    if (!endsWith(".glsl") && !endsWith(".hlsl"))
-      r.fail(p + "shader", at, "\"" + f + "\": expected a file name ending in .glsl (GLSL 4.50) or .hlsl (HLSL)");
+    if (!endsWith(".glsl") && !endsWith(".hlsl") && !endsWith(".tesc") && !endsWith(".fx"))
+      r.fail(p + "shader", at,
+             "\"" + f + "\": expected a file name ending in .glsl or .tesc (GLSL: a lodMain file or a tessellation "
+             "control shader) or .hlsl or .fx (HLSL: a lodMain file or a hull shader)");
     if (f[0] != '/') L.shader = baseDir + "/" + f;
     struct stat st;
     if (::stat(L.shader.c_str(), &st) != 0 || !S_ISREG(st.st_mode))
@@ -279,8 +281,10 @@ void readLod(Reader& r, const toml::table& root, Scene& s, const std::string& ba
                  "min_tess", "max_tess", "angle_correction", "rank", "edges_per_screen_height", "frustum_cull",
                  "displaced_corners", "adjacency_clamp", "reconstruction", "finest_level", "coarsest_level",
                  "literal_article_weight", "height_bounds", "inside", "inside_from", "shader", "evaluate",
-                 "flush_denormals"});
+                 "flush_denormals", "entry", "evaluation_shader", "uniforms", "inputs", "control_points",
+                 "corner_order", "domain_u", "domain_v"});
   readLodSource(r, t, s.lod, baseDir);
+  readHullKeys(r, t, s.lod, baseDir);
   readLodParams(r, t, s.lod);
   refuseNeighbourRuleKeys(r, t, s);
 }

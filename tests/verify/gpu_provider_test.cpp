@@ -8,7 +8,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <array>
 #include <cmath>
+#include <map>
 #include <cstring>
 
 using namespace fftess::verify;
@@ -221,4 +223,64 @@ TEST_CASE("lod.flush_denormals: \"auto\", true or false, anything else named wit
                                    "target = [0.0, 0.0, 0.0]\n",
                                    "x.toml");
   CHECK_THAT(r.error, Catch::Contains("x.toml:5:19: lod.flush_denormals: expected \"auto\", true or false, got a float"));
+}
+
+TEST_CASE("hull shader keys: uniforms, inputs, control points and domain axes read as written", "[verify][gpu_lod]") {
+  const std::string scene = std::string(FFTESS_EXAMPLES_DIR) + "/gpu_distance_glsl.toml";
+  SceneResult r = loadScene(scene, {"lod.entry='HS'", "lod.uniforms.gScale=1.5", "lod.uniforms.gOn=true",
+                                    "lod.uniforms.gViewProj='transpose(view_projection)'",
+                                    "lod.uniforms.gPair=[[1, 2], [3, 4.5]]", "lod.uniforms.gHeight='heightmap'",
+                                    "lod.inputs.vPos='position'", "lod.inputs.vTex='uv'", "lod.control_points=1",
+                                    "lod.corner_order=[3]", "lod.domain_u='+z'", "lod.domain_v='-x'"});
+  REQUIRE(r);
+  const Lod& L = r.scene.lod;
+  CHECK(L.entry == "HS");
+  REQUIRE(L.uniforms.size() == 5);
+  std::map<std::string, const UniformBinding*> u;
+  for (const UniformBinding& b : L.uniforms) u[b.name] = &b;
+  CHECK(u.at("gScale")->numbers == std::vector<double>{1.5});
+  CHECK(u.at("gOn")->numbers == std::vector<double>{1.0});
+  CHECK(u.at("gViewProj")->value == "view_projection");
+  CHECK(u.at("gViewProj")->transpose);
+  CHECK(u.at("gPair")->numbers == std::vector<double>{1, 2, 3, 4.5});
+  CHECK(u.at("gHeight")->value == "heightmap");
+  CHECK_FALSE(u.at("gHeight")->transpose);
+  REQUIRE(L.inputs.size() == 2);
+  CHECK(L.controlPoints == 1);
+  CHECK(L.cornerOrder[0] == 3);
+  CHECK(L.domainU == DomainAxis::PlusZ);
+  CHECK(L.domainV == DomainAxis::MinusX);
+  const SceneResult d = loadScene(scene);
+  REQUIRE(d);
+  CHECK(d.scene.lod.cornerOrder == std::array<int, 4>{{0, 1, 2, 3}});
+  CHECK(d.scene.lod.domainU == DomainAxis::PlusX);
+  CHECK(d.scene.lod.domainV == DomainAxis::PlusZ);
+}
+
+TEST_CASE("hull shader keys: each mistake is refused naming the key", "[verify][gpu_lod]") {
+  const std::string scene = std::string(FFTESS_EXAMPLES_DIR) + "/gpu_distance_glsl.toml";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"lod.uniforms.x='nope'", "unknown value \"nope\""},
+      {"lod.uniforms.x='transpose(eye)'", "transpose() takes a named matrix"},
+      {"lod.uniforms.x=[]", "an empty array binds nothing"},
+      {"lod.uniforms.x={a = 1}", "expected a number, a boolean, an array of them or a named value"},
+      {"lod.inputs.x='normal'", "unknown value \"normal\""},
+      {"lod.inputs.x=3", "expected a string"},
+      {"lod.control_points=3", "must be 4 (a patch's corners) or 1"},
+      {"lod.corner_order=[0, 0, 1, 2]", "corner 0 twice"},
+      {"lod.corner_order=[0, 1, 2]", "expected an array of 4 corner indices"},
+      {"lod.corner_order=[0, 1, 2, 4]", "expected a corner index 0..3"},
+      {"lod.domain_v='-x'", "must lie on different axes"},
+      {"lod.domain_u='up'", "unknown value \"up\""},
+      {"lod.evaluation_shader='missing.tese'", "cannot read"},
+      {"lod.entry=''", "must name the hull shader function"},
+  };
+  for (const auto& [set, message] : cases) {
+    INFO(set);
+    const SceneResult r = loadScene(scene, {set});
+    CHECK_FALSE(r);
+    CHECK_THAT(r.error, Catch::Contains(set.substr(0, set.find('='))) && Catch::Contains(message));
+  }
+  const SceneResult plain = loadScene(std::string(FFTESS_EXAMPLES_DIR) + "/grid.toml", {"lod.inputs.p='position'"});
+  CHECK_THAT(plain.error, Catch::Contains("lod.inputs") && Catch::Contains("needs lod.shader"));
 }
