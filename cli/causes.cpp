@@ -12,6 +12,17 @@ const char* const kEdgeNames[4] = {"Ueq0", "Veq0", "Ueq1", "Veq1"};
 const char* edgeName(int e) { return e >= 0 && e < 4 ? kEdgeNames[e] : "?"; }
 
 // ---- causes ------------------------------------------------------------------------------------------------------
+
+// What produced an edge's factors, in causes' words: "lod SCHEME" for a built-in scheme, "the shader FILE" when the
+// factors came from lod.shader (findings blame the code that produced them, not the scheme named for comparison).
+static std::string gShaderName = "the shader";
+void setShaderBlame(const vf::Scene& scene) {
+  const std::string& f = scene.lod.shader;
+  gShaderName = f.empty() ? "the shader" : "the shader " + f.substr(f.find_last_of('/') == std::string::npos ? 0 : f.find_last_of('/') + 1);
+}
+static std::string producer(const vf::EdgeLod& l) {
+  return l.scheme == vf::LodScheme::Shader ? gShaderName : "lod " + std::string(vf::toString(l.scheme));
+}
 // From the finding's own records: the LOD's (EdgeSide::lod: scheme, fix bits, neighbour rule) and the tessellator's
 // (processed factors, partitioning). Nothing is inferred from factor pairs about what the LOD did.
 static bool isPow2(float f) {
@@ -24,6 +35,7 @@ static bool isPow2(float f) {
 // or the scheme's name when no adjacency code ran.
 static std::string jumpRule(const vf::EdgeSide& small) {
   const vf::EdgeLod& l = small.lod;
+  if (l.scheme == vf::LodScheme::Shader) return producer(l) + ": its own neighbour rule";
   if (l.neighbourSize != 2.0f) return std::string("lod ") + vf::toString(l.scheme) + ": no neighbour rule";
   return std::string("lod ") + vf::toString(l.clamp) + " clamp, rebuilt " + vf::toString(l.reconstruction);
 }
@@ -48,7 +60,7 @@ Cause findingCause(const vf::Finding& f) {
     const std::string sides = ", hull " + formatFloat(f.a.hullFactor) + " vs " + formatFloat(f.b.hullFactor) +
                               "; lod fixes: a " + fixWords(f.a) + "; b " + fixWords(f.b);
     if (f.a.processedFactor != f.b.processedFactor)
-      return {std::string("same-size neighbours chose different factors (lod ") + vf::toString(f.a.lod.scheme) + ")",
+      return {"same-size neighbours chose different factors (" + producer(f.a.lod) + ")",
               "same-size neighbours chose different factors (" + formatFloat(f.a.processedFactor) + " vs " +
                   formatFloat(f.b.processedFactor) + sides + ")"};
     return {"same factor, different positions (domain shader / corners)",
@@ -105,10 +117,10 @@ std::string findingLine(const vf::Finding& f) {
 // A patch not drawn whose visibility stayed undecided (Report::undecided): which way it was not drawn, and where
 // the decision stopped.
 static Cause undecidedCause(const vf::Hole& h) {
-  const std::string scheme = vf::toString(h.lod.scheme);
+  const std::string by = producer(h.lod);
   std::string how;
   if (h.kind == vf::HoleKind::CulledWhileVisible)
-    how = "culled by lod " + scheme;
+    how = "culled by " + by;
   else if (h.edge < 0)
     how = "not drawn (patch dropped)";
   else
@@ -125,24 +137,30 @@ static Cause undecidedCause(const vf::Hole& h) {
                   "view frustum, and no point evaluated in it is in view (a view smaller than it, or a surface that "
                   "grazes the view)",
                   double(h.undecidedSide), double(h.domainPoint.u), double(h.domainPoint.v));
-  const std::string key = h.kind == vf::HoleKind::CulledWhileVisible ? "undecided: culled (lod " + scheme + ")"
-                                                                     : "undecided: discarded (lod " + scheme + ")";
+  const std::string key = h.kind == vf::HoleKind::CulledWhileVisible ? "undecided: culled (" + by + ")"
+                                                                     : "undecided: discarded (" + by + ")";
   return {key, how + buf};
 }
 
 Cause holeCause(const vf::Hole& h) {
   if (h.visibility == vf::Visibility::Undecided) return undecidedCause(h);
   char buf[480];
-  const std::string scheme = vf::toString(h.lod.scheme);
+  const std::string by = producer(h.lod);
+  const bool shader = h.lod.scheme == vf::LodScheme::Shader;
   if (h.kind == vf::HoleKind::CulledWhileVisible) {
     const bool bound = h.visiblePoint.y < h.lodBoxMinY || h.visiblePoint.y > h.lodBoxMaxY;
+    if (shader) { // the shader's own test: fftess knows its verdict, not its box
+      std::snprintf(buf, sizeof buf, "culled by %s (it said culled), but the surface is in view at (%.6g, %.6g, %.6g)",
+                    by.c_str(), double(h.visiblePoint.x), double(h.visiblePoint.y), double(h.visiblePoint.z));
+      return {"culled while visible (" + by + ")", buf};
+    }
     std::snprintf(buf, sizeof buf,
-                  "culled by lod %s's frustum test, but the surface is in view at (%.6g, %.6g, %.6g); lod's box y "
+                  "culled by %s's frustum test, but the surface is in view at (%.6g, %.6g, %.6g); lod's box y "
                   "[%.6g, %.6g]%s",
-                  scheme.c_str(), double(h.visiblePoint.x), double(h.visiblePoint.y), double(h.visiblePoint.z),
+                  by.c_str(), double(h.visiblePoint.x), double(h.visiblePoint.y), double(h.visiblePoint.z),
                   double(h.lodBoxMinY), double(h.lodBoxMaxY),
                   bound ? ": the surface leaves it (height bounds too small)" : ": the surface is inside it (a wrong plane)");
-    return {std::string("culled while visible (lod ") + scheme + (bound ? ", height bounds too small)" : ", frustum test)"), buf};
+    return {"culled while visible (" + by + (bound ? ", height bounds too small)" : ", frustum test)"), buf};
   }
   std::string why;
   const float f = h.hullFactor;
@@ -154,8 +172,10 @@ Cause holeCause(const vf::Hole& h) {
     std::snprintf(buf, sizeof buf, "%s factor %s (0x%08X, %s)", edgeName(h.edge), formatFloat(f).c_str(),
                   static_cast<unsigned>(h.hullFactorBits), what.c_str());
     why = buf;
-    if (h.lod.scheme != vf::LodScheme::Constant) {
-      std::snprintf(buf, sizeof buf, "; lod %s: metric %s, unclamped %s", scheme.c_str(),
+    if (shader) {
+      why += "; written by " + by;
+    } else if (h.lod.scheme != vf::LodScheme::Constant) {
+      std::snprintf(buf, sizeof buf, "; %s: metric %s, unclamped %s", by.c_str(),
                     formatFloat(h.lod.why.metric).c_str(), formatFloat(h.lod.why.unclamped).c_str());
       why += buf;
       if (h.midpointW == 0)
@@ -172,7 +192,7 @@ Cause holeCause(const vf::Hole& h) {
                           : std::string("discarded: ") +
                                 (std::fpclassify(f) == FP_SUBNORMAL ? std::string("denormal factor, flushed to zero") : what + " factor") +
                                 (h.lod.scheme != vf::LodScheme::Constant && h.midpointW == 0 ? " (w = 0 at the edge midpoint)" : "") +
-                                " (lod " + scheme + ")";
+                                " (" + by + ")";
   return {key, "discarded by the tessellator: " + why + seen};
 }
 

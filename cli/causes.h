@@ -23,6 +23,9 @@ struct Cause {
   std::string detail;
 };
 Cause findingCause(const vf::Finding& f);
+// The factors' source as causes name it when an edge's record says LodScheme::Shader: "the shader FILE" (the file's
+// name as the scene gives it). Set once per command from its scene (attachGpuLod); "the shader" until then.
+void setShaderBlame(const vf::Scene& scene);
 
 // One line: classification, both sides, gap, cause. Off screen (Finding::onScreen false): "off screen" after the
 // classification. A crack on screen whose farthest vertex is not its worst on-screen one: the on-screen gap, then the

@@ -320,6 +320,16 @@ std::string fractionOf65536(int64_t units2) {
 }
 
 UsageError::UsageError(const std::string& what) : std::runtime_error(printable(what, kMaxMessageBytes)) {}
+UsageError::UsageError(const std::string& what, const std::string& lines)
+    : std::runtime_error(printable(what, kMaxMessageBytes)) {
+  size_t start = 0;
+  while (start < lines.size() && details.size() < 64 * kMaxMessageBytes) {
+    const size_t end = std::min(lines.find('\n', start), lines.size());
+    const std::string line = lines.substr(start, end - start);
+    if (line.find_first_not_of(" \t") != std::string::npos) details += printable(line, kMaxMessageBytes) + "\n";
+    start = end + 1;
+  }
+}
 
 // Length of the valid UTF-8 sequence at s[i] (no overlongs, no surrogates, <= U+10FFFF), 0 if invalid.
 static size_t utf8Length(const std::string& s, size_t i) {

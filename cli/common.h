@@ -23,6 +23,10 @@ enum ExitStatus : int {
 constexpr size_t kMaxMessageBytes = 65536;
 struct UsageError : std::runtime_error {
   explicit UsageError(const std::string& what);
+  // details: lines printed as they are before the "fftess: error: WHAT" line (a compiler's diagnostics, one per
+  // line: "file:line:col: error: ..."), "" for none.
+  UsageError(const std::string& what, const std::string& details);
+  std::string details;
 };
 
 // Ctrl-C answered while the work was already done (waiting for a FIFO's reader): exit 130, the reports not written.

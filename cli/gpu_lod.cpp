@@ -8,6 +8,9 @@
 #endif
 
 #include <cstdio>
+#include <fstream>
+#include <iterator>
+#include <regex>
 
 namespace fftess::cli {
 
@@ -16,6 +19,7 @@ static bool usesGpu(const vf::Scene& s) { return !s.lod.shader.empty() || s.lod.
 void attachGpuLod(const vf::Terrain& terrain, const SceneArgs& a, vf::CheckOptions& opt) {
   const vf::Scene& scene = terrain.scene();
   if (!usesGpu(scene)) return;
+  setShaderBlame(scene);
 #ifdef FFTESS_HAVE_GL
   gpulod::GpuLodOptions o;
   o.hardware = a.gpuHardware;
@@ -23,23 +27,14 @@ void attachGpuLod(const vf::Terrain& terrain, const SceneArgs& a, vf::CheckOptio
   gpulod::GpuLodError kind = gpulod::GpuLodError::None;
   auto p = gpulod::createGpuLod(vf::LodPatches(terrain), o, error, kind);
   if (!p) {
-    // One line (the cli's rule for bad input): the log's lines first, as the driver or glslang names file and line,
-    // then what failed. createGpuLod's message is "WHAT:\nLOG".
+    // The log's lines first, one diagnostic per line as the compiler names file, line and column (an editor reads
+    // them), then "fftess: error: WHAT". createGpuLod's message is "WHAT:\nLOG".
     std::string head = error, log;
     const size_t nl = error.find('\n');
     if (nl != std::string::npos) head = error.substr(0, nl), log = error.substr(nl + 1);
     while (!head.empty() && head.back() == ':') head.pop_back();
-    std::string msg;
-    size_t start = 0;
-    while (start < log.size()) {
-      const size_t end = std::min(log.find('\n', start), log.size());
-      std::string line = log.substr(start, end - start);
-      if (line.find_first_not_of(" \t") != std::string::npos) msg += (msg.empty() ? "" : "; ") + line;
-      start = end + 1;
-    }
-    msg = msg.empty() ? head : msg + " [" + head + "]";
     const char* what = kind == gpulod::GpuLodError::NoContext ? "no OpenGL context for the GPU LOD: " : "";
-    throw UsageError(what + msg);
+    throw UsageError(what + head, log);
   }
   opt.factors = p;
 #else
@@ -49,6 +44,24 @@ void attachGpuLod(const vf::Terrain& terrain, const SceneArgs& a, vf::CheckOptio
                    " needs the GPU path, and this fftess was built without OpenGL (EGL or GL/glcorearb.h not found; "
                    "install libegl-dev libgl-dev and rebuild)");
 #endif
+}
+
+bool shaderReadsClamp(const vf::Scene& scene) {
+  if (scene.lod.shader.empty()) return true;
+  std::ifstream f(scene.lod.shader, std::ios::binary);
+  const std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  static const std::regex lodMain(R"(\blodMain\s*\()"), clampMode(R"(\bclampMode\b)");
+  return std::regex_search(text, lodMain) && std::regex_search(text, clampMode);
+}
+
+std::string neighbourRuleWords(const vf::Scene& scene) {
+  if (!shaderReadsClamp(scene)) {
+    const std::string& f = scene.lod.shader;
+    return "lod.shader " + f.substr(f.find_last_of('/') == std::string::npos ? 0 : f.find_last_of('/') + 1) +
+           " (its own neighbour rule)";
+  }
+  return std::string("lod.adjacency_clamp = ") + vf::toString(scene.lod.screenSphere.clamp) +
+         (scene.lod.screenSphere.clamp == vf::AdjacencyClamp::Pow2 ? " (the power-of-two workaround on)" : "");
 }
 
 static const char* const kFactorNames[6] = {"Ueq0", "Veq0", "Ueq1", "Veq1", "insideU", "insideV"};
@@ -89,9 +102,11 @@ std::string FactorDiffTally::text(const vf::Scene& scene, const vf::CheckOptions
     out += "  GPU LOD        " + p->description() + " on " + p->renderer() + "\n";
     const double per = p->dispatches() > 0 ? p->dispatchSeconds() / static_cast<double>(p->dispatches()) : 0.0;
     std::snprintf(buf, sizeof buf,
-                  "                 %lld dispatches, %.3f ms per camera (upload of the patches once: %.1f ms, "
+                  "                 %lld %s, %.3f ms per camera (upload of the patches once: %.1f ms, "
                   "program build: %.1f ms)\n",
-                  static_cast<long long>(p->dispatches()), per * 1e3, p->uploadSeconds() * 1e3,
+                  static_cast<long long>(p->dispatches()),
+                  p->description().rfind("hull shader", 0) == 0 ? "draws through the TCS" : "dispatches", per * 1e3,
+                  p->uploadSeconds() * 1e3,
                   p->compileSeconds() * 1e3);
     out += buf;
     if (p->cpuCameras() > 0) {

@@ -19,6 +19,13 @@ namespace vf = fftess::verify;
 // missing, or when fftess was built without EGL.
 void attachGpuLod(const vf::Terrain& terrain, const SceneArgs& a, vf::CheckOptions& opt);
 
+// Whether the scene's factors read lod.adjacency_clamp: a built-in scheme does; a lodMain shader when its text uses
+// settings.clampMode; a hull shader as written never (it has its own rule; fftess does not state a clamp for it).
+bool shaderReadsClamp(const vf::Scene& scene);
+// The summary's headline of the neighbour rule: "lod.adjacency_clamp = pow2 (the power-of-two workaround on)", or
+// for a shader that does not read it "lod.shader FILE (its own neighbour rule)".
+std::string neighbourRuleWords(const vf::Scene& scene);
+
 // The factor differences of a command, for the text report: counts from the summed stats, the first examples kept.
 class FactorDiffTally {
 public:

@@ -102,6 +102,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "fftess: %s\n", e.what());
     return 130;
   } catch (const UsageError& e) {
+    std::fputs(e.details.c_str(), stderr);
     std::fprintf(stderr, "fftess: error: %s\n", e.what());
     return kExitUsage;
   } catch (const std::bad_alloc&) {

@@ -352,16 +352,17 @@ std::string SweepRun::summaryText(const vf::SweepResult& res, const std::string&
   const vf::Scene& scene = terrain_.scene();
   std::string text;
   char buf[256];
-  text += "\n== " + label + ": lod.adjacency_clamp = " + vf::toString(scene.lod.screenSphere.clamp) +
-          (scene.lod.screenSphere.clamp == vf::AdjacencyClamp::Pow2 ? " (the power-of-two workaround on)" : "") + " ==\n";
+  const std::string rule = neighbourRuleWords(scene);
+  text += "\n== " + label + ": " + rule + " ==\n";
   for (const std::string& s : overridesOf(a_)) text += "  --set " + s + "\n";
   std::snprintf(buf, sizeof buf, "  cameras        %zu of %zu%s (%s%s, %.1f s, %s threads)\n", res.camerasDone,
                 requested_, res.cancelled ? " (interrupted)" : "", how_.c_str(),
                 plan_.sharded ? (", shard " + a_.shard).c_str() : "", elapsed_,
                 a_.threads > 0 ? std::to_string(a_.threads).c_str() : "all");
   text += buf;
-  text += "  adjacency      " + std::string(vf::toString(scene.lod.screenSphere.clamp)) + " clamp, " +
-          toString(scene.partitioning) + " partitioning\n";
+  text += "  adjacency      " + (shaderReadsClamp(scene) ? std::string(vf::toString(scene.lod.screenSphere.clamp)) + " clamp"
+                                                            : std::string("the shader's own neighbour rule")) +
+          ", " + toString(scene.partitioning) + " partitioning\n";
   text += statsText(res.total, a_.offscreen);
   text += gpuDiffs_.text(scene, opt_, res.total);
   std::snprintf(buf, sizeof buf, "  cameras with cracks %zu, with T-junctions only %zu, with holes %zu\n", crackCameras_,

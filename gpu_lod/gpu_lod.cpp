@@ -2,6 +2,7 @@
 // docs/gpu_lod.md; the compute source comes from gpu_lod/wrapper.h (wrapper_glsl.cpp, wrapper_hlsl.cpp).
 #include "gpu_lod/gpu_lod.h"
 #include "gl/gl_context.h"
+#include "gpu_lod/hull.h"
 #include "gpu_lod/wrapper.h"
 
 #include "base/bits.h"
@@ -37,11 +38,13 @@ struct GpuLodProvider::Impl {
   int64_t cpuCameras = 0;
   double cpuSeconds = 0;
   std::vector<uint32_t> words;
+  std::unique_ptr<hull::HullCapture> hull; // a hull shader as written (hull.h): the driver's TCS, not the compute path
 };
 
 GpuLodProvider::GpuLodProvider(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 GpuLodProvider::~GpuLodProvider() {
   if (impl_ && impl_->ctx.makeCurrent()) {
+    impl_->hull.reset(); // its GL objects, on its context
     const GlFunctions& gl = impl_->ctx.gl;
     gl.glDeleteBuffers(3, impl_->buffers);
     if (impl_->program) gl.glDeleteProgram(impl_->program);
@@ -172,6 +175,69 @@ bool buildProgram(GpuLodProvider::Impl& impl, const vf::Lod& L, const std::strin
 
 } // namespace
 
+namespace {
+
+// The scene keys that feed a hull shader as written, set with a lodMain file: the first one's name, or nullptr.
+const char* hullKeySet(const vf::Lod& L) {
+  const vf::Lod d;
+  if (!L.entry.empty()) return "lod.entry";
+  if (!L.evaluationShader.empty()) return "lod.evaluation_shader";
+  if (!L.uniforms.empty()) return "lod.uniforms";
+  if (!L.inputs.empty()) return "lod.inputs";
+  if (L.controlPoints != d.controlPoints || L.cornerOrder != d.cornerOrder) return "lod.control_points / lod.corner_order";
+  if (L.domainU != d.domainU || L.domainV != d.domainV) return "lod.domain_u / lod.domain_v";
+  return nullptr;
+}
+
+// "WHAT:" and the diagnostics, one per line (the cli prints them as they are: file:line:col: error: ...).
+std::string diagnosticError(const std::string& what, const std::vector<hull::Diagnostic>& ds) {
+  return what + ":\n" + hull::formatDiagnostics(ds);
+}
+
+// A hull shader as written (hull.h): the front end, the scene against it, then the driver's program. impl's context
+// is created here.
+bool createHull(GpuLodProvider::Impl& impl, const vf::LodPatches& patches, const GpuLodOptions& options,
+                std::string& error, GpuLodError& kind) {
+  const vf::Lod& L = patches.scene().lod;
+  hull::HullProgram program;
+  std::vector<hull::Diagnostic> diags;
+  kind = GpuLodError::Shader;
+  if (!hull::compileHull(L.shader, L.entry, program, diags)) {
+    error = diagnosticError(L.shader + ": the hull shader does not compile", diags);
+    return false;
+  }
+  if (!L.evaluationShader.empty() && !hull::readEvaluationShader(L.evaluationShader, program, diags)) {
+    error = diagnosticError(L.shader + ": the hull shader and its evaluation shader " + L.evaluationShader + " disagree", diags);
+    return false;
+  }
+  if (!hull::checkAgainstScene(program, patches.scene(), diags)) {
+    error = diagnosticError(L.shader + ": the scene does not feed what the hull shader uses (" +
+                                patches.scene().source + ")", diags);
+    return false;
+  }
+  impl.description = "hull shader " + L.shader +
+                     (program.language == hull::Language::Hlsl ? " (HLSL " + program.entry + " -> SPIR-V -> GLSL TCS)"
+                                                               : std::string(" (GLSL TCS)")) +
+                     " on the driver's tessellation control stage";
+  gltest::ContextOptions co;
+  co.order = options.hardware ? gltest::DeviceOrder::HardwareFirst : gltest::DeviceOrder::SoftwareFirst;
+  co.allowSoftware = !options.hardware;
+  if (!impl.ctx.create(co, error)) {
+    kind = GpuLodError::NoContext;
+    return false;
+  }
+  impl.hull = hull::HullCapture::create(impl.ctx, program, patches, diags);
+  impl.ctx.releaseCurrent();
+  if (!impl.hull) {
+    error = diagnosticError(L.shader + ": the driver (" + impl.ctx.renderer() + ") refused the hull shader", diags);
+    return false;
+  }
+  kind = GpuLodError::None;
+  return true;
+}
+
+} // namespace
+
 std::shared_ptr<GpuLodProvider> createGpuLod(const vf::LodPatches& patches, const GpuLodOptions& options,
                                              std::string& error, GpuLodError& kind) {
   using Clock = std::chrono::steady_clock;
@@ -180,6 +246,25 @@ std::shared_ptr<GpuLodProvider> createGpuLod(const vf::LodPatches& patches, cons
   auto impl = std::make_unique<GpuLodProvider::Impl>();
   impl->scheme = L.scheme;
   kind = GpuLodError::None;
+  if (!L.shader.empty()) {
+    std::string text;
+    if (!readFile(L.shader, text)) {
+      kind = GpuLodError::Shader;
+      error = L.shader + ": cannot read the shader";
+      return nullptr;
+    }
+    if (hull::isHullShader(L.shader, text)) {
+      if (!createHull(*impl, patches, options, error, kind)) return nullptr;
+      impl->compileSeconds = std::chrono::duration<double>(Clock::now() - t0).count();
+      return std::make_shared<GpuLodProvider>(std::move(impl));
+    }
+    if (const char* key = hullKeySet(L)) {
+      kind = GpuLodError::Shader;
+      error = L.shader + ": " + key + " feeds a hull shader as written, and this file is a lodMain file (its inputs "
+              "are lodMain's parameters; docs/gpu_lod.md)";
+      return nullptr;
+    }
+  }
   if (L.shader.empty() && L.scheme == vf::LodScheme::Geomorph) {
     kind = GpuLodError::Shader;
     error = "lod.scheme = \"geomorph\" has no GPU path";
@@ -286,6 +371,13 @@ bool GpuLodProvider::evaluate(const vf::LodPatches& patches, const lod::Camera& 
   const size_t n = patches.size();
   if (n == 0) {
     out.clear();
+    return true;
+  }
+  if (m.hull) {
+    const auto t0 = Clock::now();
+    if (!m.hull->evaluate(patches, camera, out, error)) return false;
+    ++m.dispatches;
+    m.dispatchSeconds += std::chrono::duration<double>(Clock::now() - t0).count();
     return true;
   }
   // The patches' inputs: once per terrain.

@@ -161,7 +161,8 @@ DomainCamera domainCamera(const TerrainData& t, const std::vector<lod::PatchLod>
 }
 
 void neighbourRule(const TerrainData& t, const TerrainPatch& p, int e, EdgeLod& out) {
-  out.scheme = t.scene.lod.scheme;
+  // The factors' producer: the user's shader whenever lod.shader is set (lod.scheme is then only the comparison).
+  out.scheme = t.scene.lod.shader.empty() ? t.scene.lod.scheme : LodScheme::Shader;
   const bool tileCode = t.adjacency && out.scheme != LodScheme::PatchCenter;
   out.neighbourSize = tileCode ? p.tile.size[e] : 1.0f;
   out.clamp = tileCode && out.neighbourSize != 1.0f ? t.scene.lod.screenSphere.clamp : AdjacencyClamp::None;
@@ -225,7 +226,9 @@ std::string lodWords(const EdgeSide& side) {
   if (l.scheme == LodScheme::Constant && l.neighbourSize == 1.0f) return out; // lod/ did not run
   for (uint32_t bit = 1; bit <= lod::FixLiteralSource; bit <<= 1)
     if (l.why.fixes & bit) add(lod::fixName(static_cast<lod::Fix>(bit)));
-  if (l.neighbourSize == 2.0f)
+  if (l.scheme == LodScheme::Shader && l.neighbourSize != 1.0f) // the shader's own rule: fftess states no clamp
+    add(l.neighbourSize == 2.0f ? "neighbour 2x" : "neighbour 0.5x");
+  else if (l.neighbourSize == 2.0f)
     add(std::string("neighbour 2x: rebuilt ") + toString(l.reconstruction) + ", " + toString(l.clamp) + " clamp");
   else if (l.neighbourSize == 0.5f)
     add(std::string("neighbour 0.5x: ") + toString(l.clamp) + " clamp");
