@@ -1,7 +1,7 @@
 #version 450
-// expect: syntax_error.tesc:18:5: error: syntax error, unexpected IDENTIFIER, expecting COMMA or SEMICOLON
+// expect: syntax_error.tesc:19:5: error: syntax error, unexpected IDENTIFIER, expecting COMMA or SEMICOLON
 // (glslang 12.0's message, one line, no "compilation errors" summary; glslang 12.0 prints no column: 5 is the
-// unexpected token's). fftess negative fixture (syntax_error.toml, exit 2): line 17 lacks its ';'; everything the
+// unexpected token's). fftess negative fixture (syntax_error.toml, exit 2): line 18 lacks its ';'; everything the
 // shader uses is bound.
 layout(vertices = 4) out;
 
