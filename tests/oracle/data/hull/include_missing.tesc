@@ -1,7 +1,7 @@
 #version 450
-// expect: include_missing.tesc:11:10: error: '#include' : Could not process include directive for header name:
-// include/no_such_file.glsl (glslang's message; the column is the header name's). fftess negative fixture
-// (include_missing.toml, exit 2, that one line).
+// expect: include_missing.tesc:11:1: error: '#include' : Could not process include directive for header name:
+// include/no_such_file.glsl (glslang's message), first; glslang goes on, so its follow-on errors for the missing
+// edgeLevel (lines 16-19, col 28) may follow. fftess negative fixture (include_missing.toml, exit 2).
 #extension GL_GOOGLE_include_directive : require
 layout(vertices = 4) out;
 

@@ -1,4 +1,4 @@
-// expect: partitioning_contradicts.hlsl:47:2: error: [partitioning("integer")] contradicts the scene's
+// expect: partitioning_contradicts.hlsl:47:1: error: [partitioning("integer")] contradicts the scene's
 // tessellation.partitioning = "fractional_odd" (partitioning_contradicts.toml)
 // fftess negative fixture (exit 2, that one line; also reported at the scene's key is fine): a small distance hull
 // shader, complete and bound, whose only fault is the partitioning attribute against that scene. wrong_entry.toml

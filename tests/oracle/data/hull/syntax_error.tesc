@@ -1,8 +1,8 @@
 #version 450
 // expect: syntax_error.tesc:19:5: error: syntax error, unexpected IDENTIFIER, expecting COMMA or SEMICOLON
-// (glslang 12.0's message, one line, no "compilation errors" summary; glslang 12.0 prints no column: 5 is the
-// unexpected token's). fftess negative fixture (syntax_error.toml, exit 2): line 18 lacks its ';'; everything the
-// shader uses is bound.
+// (glslang 12.0's message, one line, no summary; glslang 12.0 gives no column here, so the front end on branch
+// front prints syntax_error.tesc:19: without one; 5 is the unexpected token's). fftess negative fixture
+// (syntax_error.toml, exit 2): line 18 lacks its ';'; everything the shader uses is bound.
 layout(vertices = 4) out;
 
 uniform vec3 uEye;
