@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <regex>
 #include <sstream>
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -173,6 +174,10 @@ std::string glslangErrors(const std::string& log, const std::string& wrapper, co
       inWrapper = true;
     }
     if (l.find(base + ":") != std::string::npos) inUser = true;
+    // "ERROR: FILE:LINE: text" -> "FILE:LINE: error: text" (the form an editor reads, as the GLSL path prints).
+    static const std::regex glslangError(R"(^ERROR: ([^:]+:\d+(?::\d+)?): (.*)$)");
+    std::smatch m;
+    if (std::regex_match(l, m, glslangError)) l = m[1].str() + ": error: " + m[2].str();
     msg += (msg.empty() ? "" : "\n") + l;
   }
   return msg.empty() ? trimLog(log) : msg;

@@ -180,14 +180,17 @@ struct UniformBinding {
 inline const char* const kLodUniformValues[] = {
     "view", "projection", "view_projection", "projection_d3d", "view_projection_d3d", "world", "eye", "viewport",
     "frustum_planes", "frustum_planes_gl", "frustum_planes_d3d", "near", "far", "fov_y", "heightmap",
-    "height_scale", "terrain_min", "terrain_size", "patch_size"};
+    "height_scale", "terrain_min", "terrain_size", "patch_size", "heightmap_size", "heightmap_texel",
+    "projection_vulkan", "view_projection_vulkan"};
 // [lod.inputs]: a per-control-point input of the hull shader, bound by its name to what the control point carries.
 struct InputBinding {
   std::string name;  // the key: the GLSL input variable / block member, the HLSL struct member or semantic
-  std::string value; // one of kLodInputValues
+  std::string value; // one of kLodInputValues, or "" for a constant
+  std::vector<double> numbers; // a constant, the same for every control point (e.g. a normal [0, 1, 0])
   int line = 0, column = 0;
 };
-inline const char* const kLodInputValues[] = {"position", "position_flat", "uv", "bounds_y", "patch_size"};
+inline const char* const kLodInputValues[] = {"position", "position_flat", "position_xz", "uv", "bounds_y",
+                                              "patch_size"};
 // The world direction of a hull shader's domain axis (lod.domain_u / lod.domain_v).
 enum class DomainAxis : uint8_t { PlusX, MinusX, PlusZ, MinusZ };
 
@@ -222,6 +225,7 @@ struct Lod {
   // A hull shader as written (lod.shader a GLSL tessellation control shader or an HLSL hull shader; docs/gpu_lod.md
   // "Your hull shader as written"): how the scene feeds it. Refused with a lodMain file.
   std::string entry;            // lod.entry: the HLSL hull shader function ("" = the one with [patchconstantfunc])
+  int entryLine = 0, entryColumn = 0; // lod.entry's position in the scene file (0: from --set or absent)
   std::string evaluationShader; // lod.evaluation_shader: the GLSL TES / HLSL domain shader (resolved like lod.shader;
                                 // "" = none): its domain and partitioning are checked against the scene
   std::vector<UniformBinding> uniforms; // [lod.uniforms], in file order

@@ -99,10 +99,15 @@ void readInputs(Reader& r, const toml::table& lod, Lod& L) {
     b.name = std::string(k.str());
     const std::string key = "lod.inputs." + b.name;
     position(v, b.line, b.column);
-    if (!v.is_string()) r.fail(key, &v, std::string("expected a string, got ") + Reader::typeName(v));
-    b.value = v.as_string()->get();
-    if (!oneOf(kLodInputValues, b.value))
-      r.fail(key, &v, "unknown value \"" + b.value + "\" (expected one of: " + choices(kLodInputValues) + ")");
+    if (v.is_string()) {
+      b.value = v.as_string()->get();
+      if (!oneOf(kLodInputValues, b.value))
+        r.fail(key, &v, "unknown value \"" + b.value + "\" (expected one of: " + choices(kLodInputValues) +
+                            ", or a constant: a number or an array of up to 4)");
+    } else {
+      numbers(r, key, v, b.numbers);
+      if (b.numbers.size() > 4) r.fail(key, &v, "a constant input has at most 4 components");
+    }
     L.inputs.push_back(std::move(b));
   }
 }
@@ -152,8 +157,10 @@ void readHullKeys(Reader& r, const toml::table& t, Lod& L, const std::string& ba
                          "hull shader)");
     return;
   }
-  if (r.string(t, p, "entry", L.entry) && L.entry.empty())
-    r.fail(p + "entry", t.get("entry"), "must name the hull shader function");
+  if (r.string(t, p, "entry", L.entry)) {
+    if (L.entry.empty()) r.fail(p + "entry", t.get("entry"), "must name the hull shader function");
+    position(*t.get("entry"), L.entryLine, L.entryColumn);
+  }
   if (r.string(t, p, "evaluation_shader", L.evaluationShader)) {
     const toml::node* at = t.get("evaluation_shader");
     if (L.evaluationShader.empty()) r.fail(p + "evaluation_shader", at, "must name a file");

@@ -230,7 +230,8 @@ TEST_CASE("hull shader keys: uniforms, inputs, control points and domain axes re
   SceneResult r = loadScene(scene, {"lod.entry='HS'", "lod.uniforms.gScale=1.5", "lod.uniforms.gOn=true",
                                     "lod.uniforms.gViewProj='transpose(view_projection)'",
                                     "lod.uniforms.gPair=[[1, 2], [3, 4.5]]", "lod.uniforms.gHeight='heightmap'",
-                                    "lod.inputs.vPos='position'", "lod.inputs.vTex='uv'", "lod.control_points=1",
+                                    "lod.inputs.vPos='position'", "lod.inputs.vTex='uv'", "lod.inputs.vN=[0, 1, 0]",
+                                    "lod.control_points=1",
                                     "lod.corner_order=[3]", "lod.domain_u='+z'", "lod.domain_v='-x'"});
   REQUIRE(r);
   const Lod& L = r.scene.lod;
@@ -245,7 +246,9 @@ TEST_CASE("hull shader keys: uniforms, inputs, control points and domain axes re
   CHECK(u.at("gPair")->numbers == std::vector<double>{1, 2, 3, 4.5});
   CHECK(u.at("gHeight")->value == "heightmap");
   CHECK_FALSE(u.at("gHeight")->transpose);
-  REQUIRE(L.inputs.size() == 2);
+  REQUIRE(L.inputs.size() == 3);
+  for (const InputBinding& b : L.inputs)
+    if (b.name == "vN") CHECK((b.value.empty() && b.numbers == std::vector<double>{0, 1, 0}));
   CHECK(L.controlPoints == 1);
   CHECK(L.cornerOrder[0] == 3);
   CHECK(L.domainU == DomainAxis::PlusZ);
@@ -265,7 +268,7 @@ TEST_CASE("hull shader keys: each mistake is refused naming the key", "[verify][
       {"lod.uniforms.x=[]", "an empty array binds nothing"},
       {"lod.uniforms.x={a = 1}", "expected a number, a boolean, an array of them or a named value"},
       {"lod.inputs.x='normal'", "unknown value \"normal\""},
-      {"lod.inputs.x=3", "expected a string"},
+      {"lod.inputs.x=[1, 2, 3, 4, 5]", "at most 4 components"},
       {"lod.control_points=3", "must be 4 (a patch's corners) or 1"},
       {"lod.corner_order=[0, 0, 1, 2]", "corner 0 twice"},
       {"lod.corner_order=[0, 1, 2]", "expected an array of 4 corner indices"},
