@@ -82,6 +82,7 @@ struct HullProgram {
   std::string glsl;
   std::vector<std::string> sourceFiles; // GLSL: source-string number -> file, [0] = the main file
   int inputControlPoints = 0;  // HLSL InputPatch<T, N>; GLSL 0 (unknown: the scene's lod.control_points)
+  SourcePos inputControlPointsAt; // HLSL: where InputPatch<T, N> is written
   int outputControlPoints = 0; // layout(vertices = N) / [outputcontrolpoints(N)]
   Domain domain = Domain::Unknown; // HLSL [domain(...)]; GLSL Unknown unless an evaluation shader said
   SourcePos domainAt;

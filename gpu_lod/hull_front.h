@@ -1,0 +1,74 @@
+// Internal to the hull shader front end (hull_glsl.cpp, hull_hlsl.cpp, hull_diagnostics.cpp, hull_check.cpp): the
+// user's files with their #includes, glslang's log as Diagnostics, the reflection shared by GLSL and HLSL.
+#pragma once
+
+#include "gpu_lod/hull.h"
+
+#include <glslang/Public/ShaderLang.h>
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace fftess::gpulod::hull::detail {
+
+// The user's files as read: [0] the main file, then every #included file once, in the order first included.
+struct SourceSet {
+  std::vector<std::string> files;
+  std::vector<std::string> texts;
+  int add(const std::string& file, const std::string& text); // index of file (added once)
+  const std::string* textOf(const std::string& file) const;
+};
+
+// A diagnostic naming a file without a line (printed "file: error: message").
+inline Diagnostic inFile(const std::string& file, std::string message) {
+  Diagnostic d;
+  d.at.file = file;
+  d.message = std::move(message);
+  return d;
+}
+
+bool readText(const std::string& path, std::string& out);
+// `name` as #include "name" in `includer` resolves: relative to the including file's folder (absolute stays).
+std::string resolveInclude(const std::string& name, const std::string& includer);
+
+// glslang's Includer: #include "x" and <x> relative to the including file; every file read lands in `sources`.
+class FileIncluder : public glslang::TShader::Includer {
+public:
+  explicit FileIncluder(SourceSet& sources) : sources_(sources) {}
+  IncludeResult* includeLocal(const char* header, const char* includer, size_t depth) override;
+  IncludeResult* includeSystem(const char* header, const char* includer, size_t depth) override;
+  void releaseInclude(IncludeResult* r) override;
+
+private:
+  SourceSet& sources_;
+  std::vector<std::unique_ptr<std::string>> kept_;
+};
+
+// glslang::InitializeProcess once per process.
+void initGlslang();
+
+// glslang's info log (errors and warnings, "ERROR: FILE:LINE: 'tok' : msg") as one Diagnostic each; glslang's
+// summary lines ("N compilation errors.  No code generated.") dropped. glslang 12 prints no columns: the column is
+// where the quoted token first appears on that line of the file (0 when it does not).
+std::vector<Diagnostic> parseGlslangLog(const std::string& log, const SourceSet& sources);
+
+// Where `name` is declared in the user's files: the first line in `sources` (main file after its includes' order is
+// not known, so: every file, the first line with `keyword` (if not "") and the name as a whole word, else the first
+// whole-word occurrence), comments skipped. line 0 when not found.
+SourcePos findDeclaration(const SourceSet& sources, const std::string& name, const std::string& keyword);
+
+// Uniforms, block members and samplers the linked program uses (glslang's reflection), with their declarations.
+// HLSL SamplerState objects are left out (the scene binds the texture, which names the combined sampler).
+void reflectResources(glslang::TProgram& program, const SourceSet& sources, bool hlsl, std::vector<Resource>& out);
+
+// Line and column of the byte offset `at` in `text` (1-based).
+SourcePos positionOf(const std::string& file, const std::string& text, size_t at);
+// `text` with comments replaced by spaces (newlines kept), so offsets and lines stay.
+std::string blankComments(const std::string& text);
+
+bool compileGlsl(const std::string& file, HullProgram& out, std::vector<Diagnostic>& errors);
+bool compileHlsl(const std::string& file, const std::string& entry, HullProgram& out, std::vector<Diagnostic>& errors);
+
+} // namespace fftess::gpulod::hull::detail

@@ -1,0 +1,160 @@
+// gpu_lod/hull.h front end: a GLSL tessellation control shader through glslang (the library): its diagnostics, the
+// text the driver compiles (#include expanded, `#line L S`), what it uses (glslang's reflection). compileHull.
+#include "gpu_lod/hull_front.h"
+
+#include <glslang/Include/Types.h>
+#include <glslang/MachineIndependent/localintermediate.h>
+#include <glslang/Public/ResourceLimits.h>
+
+#include <algorithm>
+#include <regex>
+#include <sstream>
+
+namespace fftess::gpulod::hull {
+namespace detail {
+
+namespace {
+
+const std::regex kInclude(R"(^\s*#\s*include\s*["<]([^">]+)[">].*$)");
+const std::regex kIncludeExtension(R"(^\s*#\s*extension\s+GL_GOOGLE_(include|cpp_style_line)_directive\b.*$)");
+
+// `text` (file `file`) with each #include line replaced by `#line 1 S`, the included text, `#line L+1 P`; the
+// GL_GOOGLE_include_directive extension lines blanked (drivers do not know them). Line numbers stay the user's.
+// Files not found were reported by glslang already.
+std::string expandIncludes(const std::string& file, const std::string& text, SourceSet& sources, int depth) {
+  const int self = sources.add(file, text);
+  std::string out;
+  std::istringstream in(text);
+  std::string line;
+  int n = 0;
+  std::smatch m;
+  while (std::getline(in, line)) {
+    ++n;
+    std::string body;
+    if (std::regex_match(line, kIncludeExtension)) {
+      line.clear();
+    } else if (depth < 32 && std::regex_match(line, m, kInclude) && readText(resolveInclude(m[1], file), body)) {
+      const std::string path = resolveInclude(m[1], file);
+      const int s = sources.add(path, body);
+      out += "#line 1 " + std::to_string(s) + "\n" + expandIncludes(path, body, sources, depth + 1);
+      if (!out.empty() && out.back() != '\n') out += '\n';
+      line = "#line " + std::to_string(n + 1) + " " + std::to_string(self);
+    }
+    out += line + "\n";
+  }
+  return out;
+}
+
+int componentsOf(const glslang::TType& t) {
+  if (t.isMatrix()) return t.getMatrixCols() * t.getMatrixRows();
+  return t.getVectorSize() > 0 ? t.getVectorSize() : 1;
+}
+
+// Per-control-point inputs the TCS reads: glslang's pipe inputs (blocks unwrapped into "Block.member"), gl_in's
+// gl_Position as a builtin.
+void reflectGlslInputs(glslang::TProgram& program, const std::string& glsl, const SourceSet& sources,
+                       std::vector<Input>& out) {
+  for (int i = 0; i < program.getNumPipeInputs(); ++i) {
+    const glslang::TObjectReflection& r = program.getPipeInput(i);
+    Input in;
+    const size_t dot = r.name.rfind('.');
+    in.name = dot == std::string::npos ? r.name : r.name.substr(dot + 1);
+    in.glslName = r.name;
+    in.builtin = r.name.rfind("gl_", 0) == 0 || in.name.rfind("gl_", 0) == 0;
+    if (in.builtin && in.name != "gl_Position") continue; // gl_PrimitiveID, gl_InvocationID: not fed by fftess
+    if (in.builtin) in.glslName = "gl_Position";
+    const glslang::TType* t = r.getType();
+    if (t && t->getQualifier().hasLocation()) in.location = static_cast<int>(t->getQualifier().layoutLocation);
+    if (t) in.components = componentsOf(*t);
+    if (!in.builtin) in.declared = findDeclaration(sources, in.name, "");
+    out.push_back(in);
+  }
+  if (std::regex_search(glsl, std::regex(R"(\bgl_in\s*\[[^\]]*\]\s*\.\s*gl_Position\b)")) &&
+      std::none_of(out.begin(), out.end(), [](const Input& i) { return i.name == "gl_Position"; })) {
+    Input in;
+    in.name = in.glslName = "gl_Position";
+    in.builtin = true;
+    out.push_back(in);
+  }
+}
+
+} // namespace
+
+void reflectResources(glslang::TProgram& program, const SourceSet& sources, bool hlsl, std::vector<Resource>& out) {
+  for (int i = 0; i < program.getNumUniformVariables(); ++i) {
+    const glslang::TObjectReflection& u = program.getUniform(i);
+    const glslang::TType* t = u.getType();
+    Resource r;
+    r.name = u.name;
+    if (t && t->getBasicType() == glslang::EbtSampler) {
+      if (t->getSampler().isPureSampler()) continue; // HLSL SamplerState: the texture names the combined sampler
+      r.kind = Resource::Kind::Sampler;
+    }
+    if (u.index >= 0) {
+      r.kind = Resource::Kind::BlockMember;
+      r.block = program.getUniformBlock(u.index).name;
+      const size_t dot = r.name.find('.');
+      if (dot != std::string::npos && r.name.compare(0, dot, r.block) == 0) r.name = r.name.substr(dot + 1);
+    }
+    const size_t bracket = r.name.find('[');
+    if (bracket != std::string::npos) r.name = r.name.substr(0, bracket);
+    const size_t dot = r.name.find('.'); // a struct member: the scene binds the whole uniform
+    const std::string declName = dot == std::string::npos ? r.name : r.name.substr(0, dot);
+    r.declared = findDeclaration(sources, declName, hlsl || r.kind == Resource::Kind::BlockMember ? "" : "uniform");
+    out.push_back(r);
+  }
+}
+
+bool compileGlsl(const std::string& file, HullProgram& out, std::vector<Diagnostic>& errors) {
+  SourceSet sources;
+  std::string text;
+  if (!readText(file, text)) {
+    errors.push_back(inFile(file, "cannot read the hull shader"));
+    return false;
+  }
+  sources.add(file, text);
+  initGlslang();
+  glslang::TShader shader(EShLangTessControl);
+  const char* strings[] = {text.c_str()};
+  const int lengths[] = {static_cast<int>(text.size())};
+  const char* names[] = {file.c_str()};
+  shader.setStringsWithLengthsAndNames(strings, lengths, names, 1);
+  // fftess turns glslang's include support on itself (a preamble: the user's line numbers stay).
+  shader.setPreamble("#extension GL_GOOGLE_include_directive : enable\n");
+  shader.setEnvInput(glslang::EShSourceGlsl, EShLangTessControl, glslang::EShClientNone, 0);
+  FileIncluder includer(sources);
+  const EShMessages messages = EShMsgCascadingErrors;
+  bool ok = shader.parse(GetDefaultResources(), 450, ECoreProfile, false, false, messages, includer);
+  glslang::TProgram program;
+  if (ok) {
+    program.addShader(&shader);
+    ok = program.link(messages);
+  }
+  const std::string log = std::string(shader.getInfoLog()) + (ok ? "" : program.getInfoLog());
+  std::vector<Diagnostic> diags = parseGlslangLog(log, sources);
+  for (const Diagnostic& d : diags)
+    if (!d.warning) errors.push_back(d);
+  if (!ok || !errors.empty()) return false;
+  program.buildReflection(EShReflectionIntermediateIO | EShReflectionUnwrapIOBlocks);
+  out.language = Language::Glsl;
+  out.file = file;
+  out.entry = "main";
+  SourceSet expanded;
+  out.glsl = expandIncludes(file, text, expanded, 0);
+  out.sourceFiles = expanded.files;
+  out.outputControlPoints = shader.getIntermediate()->getVertices();
+  reflectResources(program, sources, false, out.resources);
+  reflectGlslInputs(program, out.glsl, sources, out.inputs);
+  return true;
+}
+
+} // namespace detail
+
+bool compileHull(const std::string& file, const std::string& entry, HullProgram& out, std::vector<Diagnostic>& errors) {
+  out = HullProgram{};
+  errors.clear();
+  return languageOf(file) == Language::Hlsl ? detail::compileHlsl(file, entry, out, errors)
+                                            : detail::compileGlsl(file, out, errors);
+}
+
+} // namespace fftess::gpulod::hull
