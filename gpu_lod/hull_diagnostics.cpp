@@ -186,24 +186,58 @@ std::vector<Diagnostic> parseGlslangLog(const std::string& log, const SourceSet&
     } else {
       continue;
     }
+    d.message.erase(d.message.find_last_not_of(" \t\r") + 1);
     out.push_back(d);
   }
   return out;
 }
 
-SourcePos findDeclaration(const SourceSet& sources, const std::string& name, const std::string& keyword) {
-  const std::regex word("\\b" + name + "\\b");
-  SourcePos first;
-  for (size_t f = 0; f < sources.files.size(); ++f) {
-    const std::string text = blankComments(sources.texts[f]);
-    for (auto it = std::sregex_iterator(text.begin(), text.end(), word); it != std::sregex_iterator(); ++it) {
-      const size_t at = static_cast<size_t>(it->position());
-      const size_t ls = text.rfind('\n', at) == std::string::npos ? 0 : text.rfind('\n', at) + 1;
-      const std::string line = text.substr(ls, text.find('\n', at) - ls);
-      if (keyword.empty() || std::regex_search(line, std::regex("\\b" + keyword + "\\b")))
-        return positionOf(sources.files[f], sources.texts[f], at);
-      if (first.line == 0) first = positionOf(sources.files[f], sources.texts[f], at);
+namespace {
+
+struct Line {
+  int file = 0; // index in SourceSet::files
+  int line = 0;
+  std::string text; // comments blanked
+};
+
+// The user's files in the order the compiler reads them: every #include "x" replaced by x's lines.
+void expandedLines(const SourceSet& sources, int file, int depth, std::vector<Line>& out) {
+  static const std::regex include(R"(^\s*#\s*include\s*["<]([^">]+)[">])");
+  std::istringstream in(blankComments(sources.texts[static_cast<size_t>(file)]));
+  std::string text;
+  std::smatch m;
+  for (int n = 1; std::getline(in, text); ++n) {
+    if (depth < 32 && std::regex_search(text, m, include)) {
+      const std::string path = resolveInclude(m[1], sources.files[static_cast<size_t>(file)]);
+      for (size_t i = 0; i < sources.files.size(); ++i)
+        if (sources.files[i] == path) expandedLines(sources, static_cast<int>(i), depth + 1, out);
+      continue;
     }
+    out.push_back({file, n, text});
+  }
+}
+
+} // namespace
+
+SourcePos findDeclaration(const SourceSet& sources, const std::string& name, const std::string& keyword,
+                          const std::string& after) {
+  if (sources.files.empty()) return {};
+  std::vector<Line> lines;
+  expandedLines(sources, 0, 0, lines);
+  const std::regex word("\\b" + name + "\\b");
+  size_t from = 0;
+  if (!after.empty()) {
+    const std::regex block("\\b" + after + "\\b");
+    while (from < lines.size() && !std::regex_search(lines[from].text, block)) ++from;
+    if (from == lines.size()) from = 0;
+  }
+  SourcePos first;
+  std::smatch m;
+  for (size_t i = from; i < lines.size(); ++i) {
+    if (!std::regex_search(lines[i].text, m, word)) continue;
+    const SourcePos at{sources.files[static_cast<size_t>(lines[i].file)], lines[i].line, static_cast<int>(m.position()) + 1};
+    if (keyword.empty() || std::regex_search(lines[i].text, std::regex("\\b" + keyword + "\\b"))) return at;
+    if (first.line == 0) first = at;
   }
   return first;
 }

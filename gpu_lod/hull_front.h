@@ -54,10 +54,12 @@ void initGlslang();
 // where the quoted token first appears on that line of the file (0 when it does not).
 std::vector<Diagnostic> parseGlslangLog(const std::string& log, const SourceSet& sources);
 
-// Where `name` is declared in the user's files: the first line in `sources` (main file after its includes' order is
-// not known, so: every file, the first line with `keyword` (if not "") and the name as a whole word, else the first
-// whole-word occurrence), comments skipped. line 0 when not found.
-SourcePos findDeclaration(const SourceSet& sources, const std::string& name, const std::string& keyword);
+// Where `name` is declared in the user's files, read in the compiler's order (each #include replaced by the file, as
+// far as `sources` holds it), comments skipped: the first line with `keyword` (if not "") and the name as a whole
+// word, else its first whole-word occurrence; with `after` (a block's name) only from the first line naming that
+// block on. line 0 when not found.
+SourcePos findDeclaration(const SourceSet& sources, const std::string& name, const std::string& keyword,
+                          const std::string& after = "");
 
 // Uniforms, block members and samplers the linked program uses (glslang's reflection), with their declarations.
 // HLSL SamplerState objects are left out (the scene binds the texture, which names the combined sampler).

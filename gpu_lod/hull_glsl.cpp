@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <regex>
 #include <sstream>
+#include <tuple>
 
 namespace fftess::gpulod::hull {
 namespace detail {
@@ -100,9 +101,19 @@ void reflectResources(glslang::TProgram& program, const SourceSet& sources, bool
     if (bracket != std::string::npos) r.name = r.name.substr(0, bracket);
     const size_t dot = r.name.find('.'); // a struct member: the scene binds the whole uniform
     const std::string declName = dot == std::string::npos ? r.name : r.name.substr(0, dot);
-    r.declared = findDeclaration(sources, declName, hlsl || r.kind == Resource::Kind::BlockMember ? "" : "uniform");
+    const bool member = r.kind == Resource::Kind::BlockMember;
+    r.declared = findDeclaration(sources, declName, hlsl || member ? "" : "uniform",
+                                 member && r.block != "$Global" ? r.block : "");
     out.push_back(r);
   }
+  // In the order of the user's files (glslang's reflection order is its own).
+  const auto rank = [&sources](const SourcePos& p) {
+    const auto f = std::find(sources.files.begin(), sources.files.end(), p.file);
+    return std::make_tuple(f - sources.files.begin(), p.line, p.column);
+  };
+  std::stable_sort(out.begin(), out.end(), [&](const Resource& a, const Resource& b) {
+    return rank(a.declared) < rank(b.declared);
+  });
 }
 
 bool compileGlsl(const std::string& file, HullProgram& out, std::vector<Diagnostic>& errors) {

@@ -167,29 +167,39 @@ int componentsOfHlsl(const std::string& type) {
   return 4;
 }
 
-// InputPatch<T, N> of the entry's parameters: N, and T's members (name, semantic, type) as the inputs.
-void readInputPatch(const std::string& file, const std::string& original, const Function& entry, HullProgram& out) {
-  const std::string text = blankComments(original);
+// The members of `struct T { ... }` (name, semantic, type) as inputs, from whichever of the user's files declares it.
+void readStructInputs(const SourceSet& sources, const std::string& type, HullProgram& out) {
+  static const std::regex member(R"((\w+)\s+(\w+)\s*:\s*(\w+)\s*;)");
+  for (size_t f = 0; f < sources.files.size(); ++f) {
+    const std::string text = blankComments(sources.texts[f]);
+    std::smatch st;
+    if (!std::regex_search(text, st, std::regex("\\bstruct\\s+" + type + "\\s*\\{([^}]*)\\}"))) continue;
+    const std::string body = st[1];
+    const size_t base = static_cast<size_t>(st.position(1));
+    for (auto it = std::sregex_iterator(body.begin(), body.end(), member); it != std::sregex_iterator(); ++it) {
+      Input in;
+      in.name = (*it)[2];
+      in.semantic = (*it)[3];
+      in.components = componentsOfHlsl((*it)[1]);
+      in.builtin = in.semantic == "SV_Position" || in.semantic == "SV_POSITION";
+      if (in.builtin) in.glslName = "gl_Position";
+      in.declared = positionOf(sources.files[f], sources.texts[f], base + static_cast<size_t>(it->position(2)));
+      out.inputs.push_back(in);
+    }
+    return;
+  }
+}
+
+// InputPatch<T, N> of the entry's parameters: N, and T's members as the inputs.
+void readInputPatch(const SourceSet& sources, const Function& entry, HullProgram& out) {
+  const std::string text = blankComments(sources.texts[0]);
   const std::string params = text.substr(entry.paramsAt, text.find(')', entry.paramsAt) - entry.paramsAt);
   std::smatch m;
   if (!std::regex_search(params, m, std::regex(R"(InputPatch\s*<\s*(\w+)\s*,\s*(\d+)\s*>)"))) return;
   out.inputControlPoints = std::stoi(m[2]);
-  out.inputControlPointsAt = positionOf(file, original, entry.paramsAt + static_cast<size_t>(m.position(0)));
-  std::smatch st;
-  if (!std::regex_search(text, st, std::regex("\\bstruct\\s+" + std::string(m[1]) + "\\s*\\{([^}]*)\\}"))) return;
-  const std::string body = st[1];
-  const size_t base = static_cast<size_t>(st.position(1));
-  static const std::regex member(R"((\w+)\s+(\w+)\s*:\s*(\w+)\s*;)");
-  for (auto it = std::sregex_iterator(body.begin(), body.end(), member); it != std::sregex_iterator(); ++it) {
-    Input in;
-    in.name = (*it)[2];
-    in.semantic = (*it)[3];
-    in.components = componentsOfHlsl((*it)[1]);
-    in.builtin = in.semantic == "SV_Position" || in.semantic == "SV_POSITION";
-    if (in.builtin) in.glslName = "gl_Position";
-    in.declared = positionOf(file, original, base + static_cast<size_t>(it->position(2)));
-    out.inputs.push_back(in);
-  }
+  out.inputControlPointsAt =
+      positionOf(sources.files[0], sources.texts[0], entry.paramsAt + static_cast<size_t>(m.position(0)));
+  readStructInputs(sources, m[1], out);
 }
 
 // The SPIR-V stage inputs (names and locations) matched to the struct members: glslang names the flattened input
@@ -265,7 +275,7 @@ bool compileHlsl(const std::string& file, const std::string& entryName, HullProg
   }
   program.buildReflection();
   reflectResources(program, sources, true, out.resources);
-  readInputPatch(file, text, *entry, out);
+  readInputPatch(sources, *entry, out);
   matchInputLocations(locs, out);
   return true;
 }
