@@ -56,6 +56,8 @@ struct Resource {
   Kind kind = Kind::Uniform;
   std::string name;   // the name the scene binds: the uniform's, the member's (without the block), the texture's
   std::string block;  // BlockMember: the uniform block / cbuffer name ("" otherwise)
+  std::string glslBlock; // BlockMember: the block's name in HullProgram::glsl (GL introspection names the member
+                         // "glslBlock.name"): GLSL the block's; HLSL the cbuffer's, "$Global" -> "_Global"
   SourcePos declared; // its declaration in the user's file(s) (line 0 when unknown)
 };
 

@@ -94,6 +94,9 @@ void reflectResources(glslang::TProgram& program, const SourceSet& sources, bool
     if (u.index >= 0) {
       r.kind = Resource::Kind::BlockMember;
       r.block = program.getUniformBlock(u.index).name;
+      r.glslBlock = r.block;
+      for (char& c : r.glslBlock) // SPIRV-Cross's names: [A-Za-z0-9_]
+        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_') c = '_';
       const size_t dot = r.name.find('.');
       if (dot != std::string::npos && r.name.compare(0, dot, r.block) == 0) r.name = r.name.substr(dot + 1);
     }

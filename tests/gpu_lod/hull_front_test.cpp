@@ -114,7 +114,8 @@ TEST_CASE("Hull shaders are told from lodMain files by name and by text") {
   CHECK_FALSE(isHullShader("t.glsl", "LodResult lodMain(LodPatch p) {}"));
   CHECK(isHullShader("t.hlsl", "[patchconstantfunc(\"P\")] H HS() {}"));
   CHECK(isHullShader("t.fx", "float4 VS() {}"));
-  CHECK_FALSE(isHullShader("t.hlsl", "LodResult lodMain(LodPatch p) {}"));
+  CHECK_FALSE(isHullShader("t.fx", "LodResult lodMain(LodPatch p) {}"));
+  CHECK_FALSE(isHullShader("t.tesc", "layout(vertices = 4) out;\nLodResult lodMain(LodPatch p) {}"));
   CHECK(languageOf("a.hlsl") == Language::Hlsl);
   CHECK(languageOf("a.fx") == Language::Hlsl);
   CHECK(languageOf("a.tesc") == Language::Glsl);
@@ -207,6 +208,9 @@ TEST_CASE("An HLSL hull shader goes through glslang and SPIRV-Cross with its att
                                                    "member gMaxDist [cbPerFrame] hull.hlsl:7:9",
                                                    "member gMaxTess [$Global] hull.hlsl:11:7",
                                                    "sampler gHeightMap hull.hlsl:12:11"});
+  CHECK(p.resources[3].glslBlock == "_Global");
+  CHECK(p.glsl.find("uniform _Global\n{\n    float gMaxTess;\n}") != std::string::npos);
+  CHECK(p.resources[0].glslBlock == "cbPerFrame");
   CHECK(inputsOf(p) == std::vector<std::string>{"PosW POSITION p_PosW 0 3", "Tex TEXCOORD0 p_Tex 1 2",
                                                 "BoundsY TEXCOORD1 p_BoundsY 2 2"});
   // SPIRV-Cross's GLSL: the combined sampler named after the texture; glslang's wrapper main: the control-point
