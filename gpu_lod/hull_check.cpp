@@ -88,7 +88,7 @@ const char* domainName(Domain d) {
 
 bool readEvaluationShader(const std::string& file, HullProgram& program, std::vector<Diagnostic>& errors) {
   std::string text;
-  if (!detail::readText(file, text)) {
+  if (!detail::readFile(file, text)) {
     errors.push_back(detail::inFile(file, "cannot read the evaluation shader (lod.evaluation_shader)"));
     return false;
   }

@@ -2,7 +2,8 @@
 // their #includes, glslang's log.
 #include "gpu_lod/hull_front.h"
 
-#include <fstream>
+#include <glslang/Public/ResourceLimits.h>
+
 #include <mutex>
 #include <regex>
 #include <sstream>
@@ -62,13 +63,37 @@ const std::string* SourceSet::textOf(const std::string& file) const {
   return nullptr;
 }
 
-bool readText(const std::string& path, std::string& out) {
-  std::ifstream f(path, std::ios::binary);
-  if (!f) return false;
-  std::ostringstream ss;
-  ss << f.rdbuf();
-  out = ss.str();
+bool MainSource::read(const std::string& path, SourceSet& sources, std::vector<Diagnostic>& errors) {
+  file = path;
+  if (!readFile(path, text)) {
+    errors.push_back(inFile(path, "cannot read the shader"));
+    return false;
+  }
+  sources.add(file, text);
   return true;
+}
+
+void MainSource::attach(glslang::TShader& shader) {
+  string = text.c_str();
+  length = static_cast<int>(text.size());
+  name = file.c_str();
+  shader.setStringsWithLengthsAndNames(&string, &length, &name, 1);
+}
+
+bool parseAndLink(glslang::TShader& shader, glslang::TProgram& program, SourceSet& sources, EShMessages messages,
+                  int defaultVersion, EProfile profile, std::vector<Diagnostic>& errors) {
+  initGlslang();
+  FileIncluder includer(sources);
+  bool ok = shader.parse(GetDefaultResources(), defaultVersion, profile, false, false, messages, includer);
+  if (ok) {
+    program.addShader(&shader);
+    ok = program.link(messages);
+  }
+  const std::string log = std::string(shader.getInfoLog()) + (ok ? "" : program.getInfoLog());
+  const size_t before = errors.size();
+  for (const Diagnostic& d : parseGlslangLog(log, sources))
+    if (!d.warning) errors.push_back(d);
+  return ok && errors.size() == before;
 }
 
 std::string resolveInclude(const std::string& name, const std::string& includer) {
@@ -80,7 +105,7 @@ std::string resolveInclude(const std::string& name, const std::string& includer)
 FileIncluder::IncludeResult* FileIncluder::includeLocal(const char* header, const char* includer, size_t) {
   const std::string path = resolveInclude(header, includer ? includer : "");
   auto text = std::make_unique<std::string>();
-  if (!readText(path, *text)) return nullptr; // glslang: "Could not process include directive for header name"
+  if (!readFile(path, *text)) return nullptr; // glslang: "Could not process include directive for header name"
   sources_.add(path, *text);
   kept_.push_back(std::move(text));
   return new IncludeResult(path, kept_.back()->data(), kept_.back()->size(), nullptr);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "gpu_lod/hull.h"
+#include "gpu_lod/wrapper.h"
 
 #include <glslang/Public/ShaderLang.h>
 
@@ -29,7 +30,7 @@ inline Diagnostic inFile(const std::string& file, std::string message) {
   return d;
 }
 
-bool readText(const std::string& path, std::string& out);
+using gpulod::detail::readFile;
 // `name` as #include "name" in `includer` resolves: relative to the including file's folder (absolute stays).
 std::string resolveInclude(const std::string& name, const std::string& includer);
 
@@ -48,6 +49,22 @@ private:
 
 // glslang::InitializeProcess once per process.
 void initGlslang();
+
+// The user's main file as glslang reads it (the shader keeps pointers to these until it is destroyed).
+struct MainSource {
+  std::string file, text;
+  const char* string = nullptr;
+  int length = 0;
+  const char* name = nullptr;
+  // Reads `file` into text and sources; false with a diagnostic.
+  bool read(const std::string& path, SourceSet& sources, std::vector<Diagnostic>& errors);
+  void attach(glslang::TShader& shader);
+};
+
+// Parses `shader` (its environment set by the caller) with the file includer, links it into `program`; false with
+// every glslang error as a diagnostic in `errors` (warnings dropped).
+bool parseAndLink(glslang::TShader& shader, glslang::TProgram& program, SourceSet& sources, EShMessages messages,
+                  int defaultVersion, EProfile profile, std::vector<Diagnostic>& errors);
 
 // glslang's info log (errors and warnings, "ERROR: FILE:LINE: 'tok' : msg") as one Diagnostic each; glslang's
 // summary lines ("N compilation errors.  No code generated.") dropped. glslang 12 prints no columns: the column is

@@ -4,7 +4,6 @@
 
 #include <glslang/Include/Types.h>
 #include <glslang/MachineIndependent/localintermediate.h>
-#include <glslang/Public/ResourceLimits.h>
 
 #include <algorithm>
 #include <regex>
@@ -34,7 +33,7 @@ std::string expandIncludes(const std::string& file, const std::string& text, Sou
     std::string body;
     if (std::regex_match(line, kIncludeExtension)) {
       line.clear();
-    } else if (depth < 32 && std::regex_match(line, m, kInclude) && readText(resolveInclude(m[1], file), body)) {
+    } else if (depth < 32 && std::regex_match(line, m, kInclude) && readFile(resolveInclude(m[1], file), body)) {
       const std::string path = resolveInclude(m[1], file);
       const int s = sources.add(path, body);
       out += "#line 1 " + std::to_string(s) + "\n" + expandIncludes(path, body, sources, depth + 1);
@@ -121,34 +120,16 @@ void reflectResources(glslang::TProgram& program, const SourceSet& sources, bool
 
 bool compileGlsl(const std::string& file, HullProgram& out, std::vector<Diagnostic>& errors) {
   SourceSet sources;
-  std::string text;
-  if (!readText(file, text)) {
-    errors.push_back(inFile(file, "cannot read the hull shader"));
-    return false;
-  }
-  sources.add(file, text);
-  initGlslang();
+  MainSource main;
+  if (!main.read(file, sources, errors)) return false;
+  const std::string& text = main.text;
   glslang::TShader shader(EShLangTessControl);
-  const char* strings[] = {text.c_str()};
-  const int lengths[] = {static_cast<int>(text.size())};
-  const char* names[] = {file.c_str()};
-  shader.setStringsWithLengthsAndNames(strings, lengths, names, 1);
+  main.attach(shader);
   // fftess turns glslang's include support on itself (a preamble: the user's line numbers stay).
   shader.setPreamble("#extension GL_GOOGLE_include_directive : enable\n");
   shader.setEnvInput(glslang::EShSourceGlsl, EShLangTessControl, glslang::EShClientNone, 0);
-  FileIncluder includer(sources);
-  const EShMessages messages = EShMsgCascadingErrors;
-  bool ok = shader.parse(GetDefaultResources(), 450, ECoreProfile, false, false, messages, includer);
   glslang::TProgram program;
-  if (ok) {
-    program.addShader(&shader);
-    ok = program.link(messages);
-  }
-  const std::string log = std::string(shader.getInfoLog()) + (ok ? "" : program.getInfoLog());
-  std::vector<Diagnostic> diags = parseGlslangLog(log, sources);
-  for (const Diagnostic& d : diags)
-    if (!d.warning) errors.push_back(d);
-  if (!ok || !errors.empty()) return false;
+  if (!parseAndLink(shader, program, sources, EShMsgCascadingErrors, 450, ECoreProfile, errors)) return false;
   program.buildReflection(EShReflectionIntermediateIO | EShReflectionUnwrapIOBlocks);
   out.language = Language::Glsl;
   out.file = file;

@@ -10,7 +10,6 @@
 #include "gpu_lod/hull_front.h"
 
 #include <glslang/Include/Types.h>
-#include <glslang/Public/ResourceLimits.h>
 #include <glslang/SPIRV/GlslangToSpv.h>
 #include <spirv_cross/spirv_cross_c.h>
 
@@ -225,12 +224,9 @@ void matchInputLocations(const std::vector<std::pair<std::string, int>>& locs, H
 bool compileHlsl(const std::string& file, const std::string& entryName, HullProgram& out,
                  std::vector<Diagnostic>& errors) {
   SourceSet sources;
-  std::string text;
-  if (!readText(file, text)) {
-    errors.push_back(inFile(file, "cannot read the hull shader"));
-    return false;
-  }
-  sources.add(file, text);
+  MainSource main;
+  if (!main.read(file, sources, errors)) return false;
+  const std::string& text = main.text;
   const std::vector<Function> fns = functionsOf(file, text);
   const Function* entry = findEntry(file, fns, entryName, errors);
   if (!entry) return false;
@@ -240,30 +236,17 @@ bool compileHlsl(const std::string& file, const std::string& entryName, HullProg
   out.sourceFiles = {file};
   readAttributes(*entry, out, errors);
   if (!errors.empty()) return false;
-  initGlslang();
   glslang::TShader shader(EShLangTessControl);
-  const char* strings[] = {text.c_str()};
-  const int lengths[] = {static_cast<int>(text.size())};
-  const char* names[] = {file.c_str()};
-  shader.setStringsWithLengthsAndNames(strings, lengths, names, 1);
+  main.attach(shader);
   shader.setEntryPoint(out.entry.c_str());
   shader.setEnvInput(glslang::EShSourceHlsl, EShLangTessControl, glslang::EShClientVulkan, 100);
   shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_0);
   shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_0);
   shader.setAutoMapLocations(true);
   shader.setAutoMapBindings(true);
-  FileIncluder includer(sources);
-  const EShMessages messages = static_cast<EShMessages>(EShMsgReadHlsl | EShMsgSpvRules | EShMsgVulkanRules);
-  bool ok = shader.parse(GetDefaultResources(), 100, false, messages, includer);
   glslang::TProgram program;
-  if (ok) {
-    program.addShader(&shader);
-    ok = program.link(messages);
-  }
-  const std::string log = std::string(shader.getInfoLog()) + (ok ? "" : program.getInfoLog());
-  for (const Diagnostic& d : parseGlslangLog(log, sources))
-    if (!d.warning) errors.push_back(d);
-  if (!ok || !errors.empty()) return false;
+  const EShMessages messages = static_cast<EShMessages>(EShMsgReadHlsl | EShMsgSpvRules | EShMsgVulkanRules);
+  if (!parseAndLink(shader, program, sources, messages, 100, ENoProfile, errors)) return false;
   std::vector<unsigned> spirv;
   glslang::GlslangToSpv(*program.getIntermediate(EShLangTessControl), spirv);
   std::vector<std::pair<std::string, int>> locs;

@@ -258,14 +258,20 @@ TEST_CASE("An HLSL include that is not found and an HLSL syntax error are diagno
 }
 
 TEST_CASE("A wrong HLSL entry point is a diagnostic naming the hull shaders") {
+  const std::string at = data("wrong_entry.hlsl");
   CHECK(compileErrors("wrong_entry.hlsl", "Main") ==
-        std::vector<std::string>{data("wrong_entry.hlsl") +
-                                 ": error: lod.entry 'Main' names no function in this file (hull shaders here: HS)"});
-  CHECK(compileErrors("wrong_entry.hlsl", "ConstantHS") ==
-        std::vector<std::string>{data("wrong_entry.hlsl") +
-                                 ":4:11: error: lod.entry 'ConstantHS' is not a hull shader (no [patchconstantfunc(...)] "
-                                 "attribute): the hull shaders here: HS"});
-  CHECK(compiled("wrong_entry.hlsl", "HS").entry == "HS");
+        std::vector<std::string>{at + ": error: lod.entry 'Main' names no function in this file (hull shaders here: "
+                                      "NearHS, FarHS)"});
+  CHECK(compileErrors("wrong_entry.hlsl", "NearPatch") ==
+        std::vector<std::string>{at + ":6:9: error: lod.entry 'NearPatch' is not a hull shader (no "
+                                      "[patchconstantfunc(...)] attribute): the hull shaders here: NearHS, FarHS"});
+  CHECK(compileErrors("wrong_entry.hlsl") ==
+        std::vector<std::string>{at + ": error: several hull shaders (NearHS, FarHS): name one in lod.entry"});
+  const HullProgram far = compiled("wrong_entry.hlsl", "FarHS");
+  CHECK(far.entry == "FarHS");
+  CHECK(far.patchConstantFunction == "FarPatch");
+  CHECK(far.glsl.find("FarPatch(") != std::string::npos);
+  CHECK(far.glsl.find("NearPatch(") == std::string::npos);
 }
 
 TEST_CASE("A partitioning attribute that contradicts the scene is an error at the attribute") {

@@ -12,12 +12,5 @@ PatchTess ConstantHS(InputPatch<VertexOut, 4> patch)
   return pt;
 }
 
-[domain("quad")]
-[partitioning("integer")]
-[outputtopology("triangle_cw")]
-[outputcontrolpoints(4)]
-[patchconstantfunc("ConstantHS")]
-VertexOut HS(InputPatch<VertexOut, 4> p, uint i : SV_OutputControlPointID)
-{
-  return p[i];
-}
+[domain("quad")] [partitioning("integer")] [outputtopology("triangle_cw")] [outputcontrolpoints(4)] [patchconstantfunc("ConstantHS")]
+VertexOut HS(InputPatch<VertexOut, 4> p, uint i : SV_OutputControlPointID) { return p[i]; }

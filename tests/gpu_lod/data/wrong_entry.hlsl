@@ -1,20 +1,13 @@
+// Two hull shaders of one file (near and far rings) and a helper: lod.entry must name one of the hull shaders.
 struct VertexOut { float3 PosW : POSITION; };
-struct PatchTess { float EdgeTess[4] : SV_TessFactor; float InsideTess[2] : SV_InsideTessFactor; };
+struct Factors { float Edge[4] : SV_TessFactor; float Inside[2] : SV_InsideTessFactor; };
 
-PatchTess ConstantHS(InputPatch<VertexOut, 4> patch, uint patchID : SV_PrimitiveID)
-{
-  PatchTess pt;
-  pt.EdgeTess[0] = 1; pt.EdgeTess[1] = 2; pt.EdgeTess[2] = 3; pt.EdgeTess[3] = 4;
-  pt.InsideTess[0] = 5; pt.InsideTess[1] = 6;
-  return pt;
-}
+Factors Uniform(float f) { Factors t; t.Edge[0] = f; t.Edge[1] = f; t.Edge[2] = f; t.Edge[3] = f; t.Inside[0] = f; t.Inside[1] = f; return t; }
+Factors NearPatch(InputPatch<VertexOut, 4> patch) { return Uniform(16.0f); }
+Factors FarPatch(InputPatch<VertexOut, 4> patch) { return Uniform(2.0f); }
 
-[domain("quad")]
-  [partitioning("fractional_odd")]
-[outputtopology("triangle_cw")]
-[outputcontrolpoints(4)]
-[patchconstantfunc("ConstantHS")]
-VertexOut HS(InputPatch<VertexOut, 4> p, uint i : SV_OutputControlPointID)
-{
-  return p[i];
-}
+[domain("quad")] [partitioning("integer")] [outputtopology("triangle_ccw")] [outputcontrolpoints(4)] [patchconstantfunc("NearPatch")]
+VertexOut NearHS(InputPatch<VertexOut, 4> p, uint i : SV_OutputControlPointID) { return p[i]; }
+
+[domain("quad")] [partitioning("integer")] [outputtopology("triangle_ccw")] [outputcontrolpoints(4)] [patchconstantfunc("FarPatch")]
+VertexOut FarHS(InputPatch<VertexOut, 4> p, uint i : SV_OutputControlPointID) { return p[i]; }
