@@ -18,6 +18,22 @@ namespace {
 const std::regex kInclude(R"(^\s*#\s*include\s*["<]([^">]+)[">].*$)");
 const std::regex kIncludeExtension(R"(^\s*#\s*extension\s+GL_GOOGLE_(include|cpp_style_line)_directive\b.*$)");
 
+// Vulkan GLSL's descriptor sets (`layout(set = 0, binding = 1)`, as Vulkan samples write their TCS) are not OpenGL
+// GLSL: `set = N` is blanked with spaces (columns stay; Vulkan GLSL always has a binding beside it, so the layout is
+// not left empty). fftess binds by name, so the binding does not matter either.
+std::string withoutDescriptorSets(const std::string& line) {
+  static const std::regex layout(R"(layout\s*\(([^)]*)\))");
+  static const std::regex set(R"(\bset\s*=\s*\d+\s*(,\s*)?)");
+  std::string out = line;
+  for (auto it = std::sregex_iterator(line.begin(), line.end(), layout); it != std::sregex_iterator(); ++it) {
+    const std::string args = (*it)[1];
+    for (auto s = std::sregex_iterator(args.begin(), args.end(), set); s != std::sregex_iterator(); ++s)
+      out.replace(static_cast<size_t>(it->position(1) + s->position()), static_cast<size_t>(s->length()),
+                  static_cast<size_t>(s->length()), ' ');
+  }
+  return out;
+}
+
 // `text` (file `file`) with each #include line replaced by `#line 1 S`, the included text, `#line L+1 P`; the
 // GL_GOOGLE_include_directive extension lines blanked (drivers do not know them). Line numbers stay the user's.
 // Files not found were reported by glslang already.
@@ -40,7 +56,7 @@ std::string expandIncludes(const std::string& file, const std::string& text, Sou
       if (!out.empty() && out.back() != '\n') out += '\n';
       line = "#line " + std::to_string(n + 1) + " " + std::to_string(self);
     }
-    out += line + "\n";
+    out += withoutDescriptorSets(line) + "\n";
   }
   return out;
 }
@@ -127,6 +143,7 @@ bool compileGlsl(const std::string& file, HullProgram& out, std::vector<Diagnost
   main.attach(shader);
   // fftess turns glslang's include support on itself (a preamble: the user's line numbers stay).
   shader.setPreamble("#extension GL_GOOGLE_include_directive : enable\n");
+  // OpenGL GLSL; glslang accepts Vulkan's layout(set = N, binding = M) there (the driver gets it without the set).
   shader.setEnvInput(glslang::EShSourceGlsl, EShLangTessControl, glslang::EShClientNone, 0);
   glslang::TProgram program;
   if (!parseAndLink(shader, program, sources, EShMsgCascadingErrors, 450, ECoreProfile, errors)) return false;

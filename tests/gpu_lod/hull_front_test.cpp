@@ -140,6 +140,18 @@ TEST_CASE("A GLSL TCS with an include reaches the driver with line directives an
                                                 "worldPos - Corner.worldPos -1 3"});
 }
 
+TEST_CASE("A Vulkan GLSL TCS reaches the driver without descriptor sets and with its columns") {
+  const HullProgram p = compiled("vulkan_sets.tesc");
+  CHECK(p.glsl.find("\nlayout(         binding = 0) uniform UBO\n") != std::string::npos);
+  CHECK(p.glsl.find("\nlayout(         binding = 1) uniform sampler2D samplerHeight;\n") != std::string::npos);
+  CHECK(p.glsl.find("set =") == std::string::npos);
+  CHECK(resourcesOf(p) == std::vector<std::string>{"member frustumPlanes [UBO] vulkan_sets.tesc:7:7",
+                                                   "member tessellationFactor [UBO] vulkan_sets.tesc:8:8",
+                                                   "sampler samplerHeight vulkan_sets.tesc:11:48"});
+  CHECK(inputsOf(p) == std::vector<std::string>{"inUV - inUV 1 2", "gl_Position - gl_Position -1 4 builtin",
+                                                "inNormal - inNormal 0 3"});
+}
+
 TEST_CASE("A GLSL syntax error is a diagnostic at the user's line") {
   CHECK(compileErrors("syntax_error.tesc") ==
         std::vector<std::string>{data("syntax_error.tesc") +
