@@ -139,6 +139,13 @@ bool compileGlsl(const std::string& file, HullProgram& out, std::vector<Diagnost
   MainSource main;
   if (!main.read(file, sources, errors)) return false;
   const std::string& text = main.text;
+  if (!std::regex_search(blankComments(text), std::regex(R"((^|\n)\s*#\s*version\b)"))) {
+    // glslang would take its default version; the driver would take GLSL 1.10, which has no tessellation stage
+    errors.push_back(inFile(file, "no #version line: a tessellation control shader needs #version 400 or later "
+                                  "(add #version 450 as the first line)"));
+    errors.back().at.line = errors.back().at.column = 1;
+    return false;
+  }
   glslang::TShader shader(EShLangTessControl);
   main.attach(shader);
   // fftess turns glslang's include support on itself (a preamble: the user's line numbers stay).

@@ -1,12 +1,14 @@
 // gpu_lod/hull.h front end: an HLSL hull shader through glslang's HLSL front end (the library) -> SPIR-V ->
 // SPIRV-Cross (C API) -> the GLSL 4.50 TCS the driver compiles; its attributes, InputPatch and inputs from the text.
 //
-// What glslang and SPIRV-Cross make of a hull shader (checked with tests/gpu_lod/data/luna_like.hlsl through this
-// file, GLSL printed by test_gpu_lod_hull_front): glslang writes a wrapper main() that calls the control-point function
+// What glslang and SPIRV-Cross make of a hull shader (checked with tests/gpu_lod/data/hull.hlsl through this file;
+// test_gpu_lod_hull_front compares the end of the GLSL): glslang writes a wrapper main() that calls the control-point function
 // for gl_InvocationID, stores its output, then `barrier()`, and `if (gl_InvocationID == 0)` calls the patch-constant
 // function and copies SV_TessFactor[i] -> gl_TessLevelOuter[i] (i = 0..3) and SV_InsideTessFactor[j] ->
 // gl_TessLevelInner[j] (j = 0..1) for [domain("quad")], element by element in the same order (no permutation);
-// main has no `return`. SPIRV-Cross keeps that shape (see the report in docs/gpu_lod.md "The front end").
+// main has no `return`. SPIRV-Cross keeps that shape (docs/gpu_lod.md "Hull shaders as written: the front end").
+// Its uniform blocks: cbuffers by their name, globals in "_Global" (glslang's "$Global"), both may say binding = 0
+// (the driver half assigns block bindings itself); float4x4 members are layout(row_major).
 #include "gpu_lod/hull_front.h"
 
 #include <glslang/Include/Types.h>

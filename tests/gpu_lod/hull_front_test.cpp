@@ -158,6 +158,13 @@ TEST_CASE("A GLSL syntax error is a diagnostic at the user's line") {
                                  ":8: error: syntax error, unexpected IDENTIFIER, expecting COMMA or SEMICOLON"});
 }
 
+TEST_CASE("A GLSL TCS without a version line is a diagnostic at its first line") {
+  CHECK(compileErrors("no_version.tesc") ==
+        std::vector<std::string>{data("no_version.tesc") + ":1:1: error: no #version line: a tessellation control "
+                                                           "shader needs #version 400 or later (add #version 450 as "
+                                                           "the first line)"});
+}
+
 TEST_CASE("A GLSL include that is not found is a diagnostic at the include line") {
   CHECK(compileErrors("include_missing.tesc") ==
         std::vector<std::string>{data("include_missing.tesc") +
