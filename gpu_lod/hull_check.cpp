@@ -20,7 +20,11 @@ std::string spelled(Partitioning p, const std::string& file) {
   }
 }
 
-std::string placeOf(const SourcePos& p) { return formatDiagnostic({p, ""}).substr(0, formatDiagnostic({p, ""}).find(": error")); }
+// "file:line:col" of p (as formatDiagnostic writes it).
+std::string placeOf(const SourcePos& p) {
+  const std::string d = formatDiagnostic({p, ""});
+  return d.substr(0, d.rfind(": error: "));
+}
 
 struct Found {
   Domain domain = Domain::Unknown;
@@ -51,8 +55,9 @@ void readGlslLayout(const std::string& file, const std::string& original, Found&
         f.domain = domainNamed(t);
         f.domainAt = at;
       } else if (t == "equal_spacing" || t == "fractional_odd_spacing" || t == "fractional_even_spacing") {
-        f.partitioning = t == "equal_spacing" ? Partitioning::Integer
-                       : t == "fractional_odd_spacing" ? Partitioning::FractionalOdd : Partitioning::FractionalEven;
+        f.partitioning = t == "equal_spacing"            ? Partitioning::Integer
+                         : t == "fractional_odd_spacing" ? Partitioning::FractionalOdd
+                                                         : Partitioning::FractionalEven;
         f.partitioningAt = at;
       }
     }
@@ -97,7 +102,8 @@ bool readEvaluationShader(const std::string& file, HullProgram& program, std::ve
   else readGlslLayout(file, text, f);
   const size_t before = errors.size();
   if (f.domain == Domain::Unknown)
-    errors.push_back(detail::inFile(file, "no domain found: expected layout(quads, ...) in; (GLSL) or [domain(\"quad\")] (HLSL)"));
+    errors.push_back(
+        detail::inFile(file, "no domain found: expected layout(quads, ...) in; (GLSL) or [domain(\"quad\")] (HLSL)"));
   else if (program.domain == Domain::Unknown) {
     program.domain = f.domain;
     program.domainAt = f.domainAt;
@@ -121,7 +127,8 @@ namespace {
 
 template <typename Names> std::string joined(const Names& names) {
   std::string out;
-  for (const char* n : names) out += (out.empty() ? "" : ", ") + std::string(n);
+  for (const char* n : names)
+    out += (out.empty() ? "" : ", ") + std::string(n);
   return out;
 }
 
@@ -144,18 +151,20 @@ std::string described(const Resource& r, Language lang) {
   }
 }
 
-void checkResource(const HullProgram& p, const verify::Scene& scene, const Resource& r, std::vector<Diagnostic>& errors) {
+void checkResource(const HullProgram& p, const verify::Scene& scene, const Resource& r,
+                   std::vector<Diagnostic>& errors) {
   const SourcePos at = r.declared.line > 0 ? r.declared : SourcePos{p.file, 0, 0};
   const verify::UniformBinding* b = bindingOf(scene, r);
   const bool sampler = r.kind == Resource::Kind::Sampler;
   const std::string key = r.block.empty() || r.block == "$Global" ? r.name : r.name + "' or '" + r.block + "." + r.name;
   if (!b && sampler)
-    errors.push_back({at, described(r, p.language) + " is not bound: add " + r.name +
-                              " = \"heightmap\" to [lod.uniforms] (the scene's heightmap is the texture fftess binds)"});
+    errors.push_back(
+        {at, described(r, p.language) + " is not bound: add " + r.name +
+                 " = \"heightmap\" to [lod.uniforms] (the scene's heightmap is the texture fftess binds)"});
   else if (!b)
-    errors.push_back({at, described(r, p.language) + " is not bound: add '" + key +
-                              "' to [lod.uniforms] (a number, an array, or one of: " + joined(verify::kLodUniformValues) +
-                              ")"});
+    errors.push_back(
+        {at, described(r, p.language) + " is not bound: add '" + key +
+                 "' to [lod.uniforms] (a number, an array, or one of: " + joined(verify::kLodUniformValues) + ")"});
   else if (sampler && b->value != "heightmap")
     errors.push_back({at, described(r, p.language) + " is bound to " +
                               (b->value.empty() ? std::string("numbers") : "'" + b->value + "'") +
@@ -179,8 +188,8 @@ void checkPatch(const HullProgram& p, const verify::Scene& scene, std::vector<Di
     errors.push_back({p.inputControlPointsAt.line > 0 ? p.inputControlPointsAt : SourcePos{p.file, 0, 0},
                       "the hull shader takes " + std::to_string(p.inputControlPoints) +
                           " control points, the scene's lod.control_points is " +
-                          std::to_string(scene.lod.controlPoints) + ": set lod.control_points = " +
-                          std::to_string(p.inputControlPoints)});
+                          std::to_string(scene.lod.controlPoints) +
+                          ": set lod.control_points = " + std::to_string(p.inputControlPoints)});
   if (p.domain != Domain::Unknown && p.domain != Domain::Quad)
     errors.push_back({p.domainAt, std::string("the domain is ") + domainName(p.domain) +
                                       ": fftess verifies quad patches (a terrain's tiles)"});
@@ -196,8 +205,10 @@ void checkPatch(const HullProgram& p, const verify::Scene& scene, std::vector<Di
 bool checkAgainstScene(const HullProgram& program, const verify::Scene& scene, std::vector<Diagnostic>& errors) {
   const size_t before = errors.size();
   checkPatch(program, scene, errors);
-  for (const Resource& r : program.resources) checkResource(program, scene, r, errors);
-  for (const Input& in : program.inputs) checkInput(program, scene, in, errors);
+  for (const Resource& r : program.resources)
+    checkResource(program, scene, r, errors);
+  for (const Input& in : program.inputs)
+    checkInput(program, scene, in, errors);
   return errors.size() == before;
 }
 

@@ -126,7 +126,8 @@ std::string blankComments(const std::string& text) {
   std::string out = text;
   for (size_t i = 0; i + 1 < out.size(); ++i) {
     if (out[i] == '/' && out[i + 1] == '/') {
-      while (i < out.size() && out[i] != '\n') out[i++] = ' ';
+      while (i < out.size() && out[i] != '\n')
+        out[i++] = ' ';
     } else if (out[i] == '/' && out[i + 1] == '*') {
       size_t j = i;
       for (; j < out.size() && !(j > i + 1 && out[j - 1] == '*' && out[j] == '/'); ++j)
@@ -253,14 +254,16 @@ SourcePos findDeclaration(const SourceSet& sources, const std::string& name, con
   size_t from = 0;
   if (!after.empty()) {
     const std::regex block("\\b" + after + "\\b");
-    while (from < lines.size() && !std::regex_search(lines[from].text, block)) ++from;
+    while (from < lines.size() && !std::regex_search(lines[from].text, block))
+      ++from;
     if (from == lines.size()) from = 0;
   }
   SourcePos first;
   std::smatch m;
   for (size_t i = from; i < lines.size(); ++i) {
     if (!std::regex_search(lines[i].text, m, word)) continue;
-    const SourcePos at{sources.files[static_cast<size_t>(lines[i].file)], lines[i].line, static_cast<int>(m.position()) + 1};
+    const SourcePos at{sources.files[static_cast<size_t>(lines[i].file)], lines[i].line,
+                       static_cast<int>(m.position()) + 1};
     if (keyword.empty() || std::regex_search(lines[i].text, std::regex("\\b" + keyword + "\\b"))) return at;
     if (first.line == 0) first = at;
   }

@@ -129,9 +129,8 @@ void reflectResources(glslang::TProgram& program, const SourceSet& sources, bool
     const auto f = std::find(sources.files.begin(), sources.files.end(), p.file);
     return std::make_tuple(f - sources.files.begin(), p.line, p.column);
   };
-  std::stable_sort(out.begin(), out.end(), [&](const Resource& a, const Resource& b) {
-    return rank(a.declared) < rank(b.declared);
-  });
+  std::stable_sort(out.begin(), out.end(),
+                   [&](const Resource& a, const Resource& b) { return rank(a.declared) < rank(b.declared); });
 }
 
 bool compileGlsl(const std::string& file, HullProgram& out, std::vector<Diagnostic>& errors) {

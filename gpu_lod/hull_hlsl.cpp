@@ -2,9 +2,9 @@
 // SPIRV-Cross (C API) -> the GLSL 4.50 TCS the driver compiles; its attributes, InputPatch and inputs from the text.
 //
 // What glslang and SPIRV-Cross make of a hull shader (checked with tests/gpu_lod/data/hull.hlsl through this file;
-// test_gpu_lod_hull_front compares the end of the GLSL): glslang writes a wrapper main() that calls the control-point function
-// for gl_InvocationID, stores its output, then `barrier()`, and `if (gl_InvocationID == 0)` calls the patch-constant
-// function and copies SV_TessFactor[i] -> gl_TessLevelOuter[i] (i = 0..3) and SV_InsideTessFactor[j] ->
+// test_gpu_lod_hull_front compares the end of the GLSL): glslang writes a wrapper main() that calls the control-point
+// function for gl_InvocationID, stores its output, then `barrier()`, and `if (gl_InvocationID == 0)` calls the
+// patch-constant function and copies SV_TessFactor[i] -> gl_TessLevelOuter[i] (i = 0..3) and SV_InsideTessFactor[j] ->
 // gl_TessLevelInner[j] (j = 0..1) for [domain("quad")], element by element in the same order (no permutation);
 // main has no `return`. SPIRV-Cross keeps that shape (docs/gpu_lod.md "Hull shaders as written: the front end").
 // Its uniform blocks: cbuffers by their name, globals in "_Global" (glslang's "$Global"), both may say binding = 0
@@ -55,7 +55,8 @@ std::vector<Function> functionsOf(const std::string& file, const std::string& or
     const std::string attrs = m[1];
     const size_t base = static_cast<size_t>(m.position(1));
     for (auto a = std::sregex_iterator(attrs.begin(), attrs.end(), attr); a != std::sregex_iterator(); ++a)
-      f.attributes.push_back({(*a)[1], (*a)[2], positionOf(file, original, base + static_cast<size_t>(a->position(0)))});
+      f.attributes.push_back(
+          {(*a)[1], (*a)[2], positionOf(file, original, base + static_cast<size_t>(a->position(0)))});
     out.push_back(f);
   }
   return out;
@@ -81,7 +82,7 @@ const Function* findEntry(const std::string& file, const std::vector<Function>& 
   if (entry.empty()) {
     if (count == 1) return only;
     errors.push_back(inFile(file, count == 0 ? "no hull shader: no function has a [patchconstantfunc(...)] attribute"
-                                               : "several hull shaders (" + hulls + "): name one in lod.entry"));
+                                             : "several hull shaders (" + hulls + "): name one in lod.entry"));
     return nullptr;
   }
   for (const Function& f : fns) {
@@ -92,15 +93,17 @@ const Function* findEntry(const std::string& file, const std::vector<Function>& 
     return nullptr;
   }
   errors.push_back(inFile(file, "lod.entry '" + entry + "' names no function in this file" +
-                                      (hulls.empty() ? std::string() : " (hull shaders here: " + hulls + ")")));
+                                    (hulls.empty() ? std::string() : " (hull shaders here: " + hulls + ")")));
   return nullptr;
 }
 
 void readAttributes(const Function& f, HullProgram& out, std::vector<Diagnostic>& errors) {
   if (const Attribute* a = attributeOf(f, "domain")) {
     out.domainAt = a->at;
-    out.domain = a->argument == "quad" ? Domain::Quad : a->argument == "tri" ? Domain::Tri
-               : a->argument == "isoline" ? Domain::Isoline : Domain::Unknown;
+    out.domain = a->argument == "quad"      ? Domain::Quad
+                 : a->argument == "tri"     ? Domain::Tri
+                 : a->argument == "isoline" ? Domain::Isoline
+                                            : Domain::Unknown;
     if (out.domain == Domain::Unknown)
       errors.push_back({a->at, "[domain(\"" + a->argument + "\")]: expected \"quad\", \"tri\" or \"isoline\""});
   }
@@ -111,10 +114,13 @@ void readAttributes(const Function& f, HullProgram& out, std::vector<Diagnostic>
     else if (p == "pow2") out.partitioning = Partitioning::Pow2;
     else if (p == "fractional_odd") out.partitioning = Partitioning::FractionalOdd;
     else if (p == "fractional_even") out.partitioning = Partitioning::FractionalEven;
-    else errors.push_back({a->at, "[partitioning(\"" + p + "\")]: expected \"integer\", \"pow2\", \"fractional_odd\" or "
-                                  "\"fractional_even\""});
+    else
+      errors.push_back({a->at, "[partitioning(\"" + p +
+                                   "\")]: expected \"integer\", \"pow2\", \"fractional_odd\" or "
+                                   "\"fractional_even\""});
   }
-  if (const Attribute* a = attributeOf(f, "outputcontrolpoints")) out.outputControlPoints = std::atoi(a->argument.c_str());
+  if (const Attribute* a = attributeOf(f, "outputcontrolpoints"))
+    out.outputControlPoints = std::atoi(a->argument.c_str());
   if (const Attribute* a = attributeOf(f, "maxtessfactor")) {
     out.maxTessFactor = std::strtof(a->argument.c_str(), nullptr);
     out.maxTessFactorAt = a->at;
@@ -213,7 +219,8 @@ void matchInputLocations(const std::vector<std::pair<std::string, int>>& locs, H
       for (char& c : glsl)
         if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_') c = '_';
       const std::string tail = "_" + in.name;
-      if (glsl == in.name || (glsl.size() > tail.size() && glsl.compare(glsl.size() - tail.size(), tail.size(), tail) == 0)) {
+      if (glsl == in.name ||
+          (glsl.size() > tail.size() && glsl.compare(glsl.size() - tail.size(), tail.size(), tail) == 0)) {
         in.glslName = glsl;
         in.location = loc;
       }
@@ -255,7 +262,8 @@ bool compileHlsl(const std::string& file, const std::string& entryName, HullProg
   std::string error;
   if (!crossCompile(spirv, out, locs, error)) {
     errors.push_back(inFile(file, "SPIRV-Cross could not translate glslang's SPIR-V to GLSL (fftess's problem, not "
-                                    "the shader's): " + error));
+                                  "the shader's): " +
+                                      error));
     return false;
   }
   program.buildReflection();

@@ -33,7 +33,8 @@ std::vector<std::string> compileErrors(const std::string& file, const std::strin
   std::vector<Diagnostic> errors;
   CHECK_FALSE(compileHull(data(file), entry, p, errors));
   std::vector<std::string> out;
-  for (const Diagnostic& d : errors) out.push_back(formatDiagnostic(d));
+  for (const Diagnostic& d : errors)
+    out.push_back(formatDiagnostic(d));
   return out;
 }
 
@@ -51,9 +52,9 @@ std::vector<std::string> resourcesOf(const HullProgram& p) {
   static const char* kinds[] = {"uniform", "member", "sampler"};
   std::vector<std::string> out;
   for (const Resource& r : p.resources)
-    out.push_back(std::string(kinds[static_cast<int>(r.kind)]) + " " + r.name + (r.block.empty() ? "" : " [" + r.block + "]") +
-                  " " + r.declared.file.substr(data("").size()) + ":" + std::to_string(r.declared.line) + ":" +
-                  std::to_string(r.declared.column));
+    out.push_back(std::string(kinds[static_cast<int>(r.kind)]) + " " + r.name +
+                  (r.block.empty() ? "" : " [" + r.block + "]") + " " + r.declared.file.substr(data("").size()) + ":" +
+                  std::to_string(r.declared.line) + ":" + std::to_string(r.declared.column));
   return out;
 }
 
@@ -71,7 +72,8 @@ std::vector<std::string> sceneErrors(const HullProgram& p, const verify::Scene& 
   const bool ok = checkAgainstScene(p, scene, errors);
   CHECK(ok == errors.empty());
   std::vector<std::string> out;
-  for (const Diagnostic& d : errors) out.push_back(formatDiagnostic(d));
+  for (const Diagnostic& d : errors)
+    out.push_back(formatDiagnostic(d));
   return out;
 }
 
@@ -127,15 +129,17 @@ TEST_CASE("A GLSL TCS with an include reaches the driver with line directives an
   CHECK(p.outputControlPoints == 4);
   CHECK(p.sourceFiles == std::vector<std::string>{data("uniforms.tesc"), data("includes/camera.glsl")});
   // the include replaced by `#line 1 1` + its text + `#line 7 0`; the extension line blanked (line numbers kept)
-  CHECK(p.glsl.find("#line 1 1\n// The camera's uniforms, included by uniforms.tesc.\nuniform vec3 uEye;\n#line 7 0\n") !=
-        std::string::npos);
+  CHECK(
+      p.glsl.find("#line 1 1\n// The camera's uniforms, included by uniforms.tesc.\nuniform vec3 uEye;\n#line 7 0\n") !=
+      std::string::npos);
   CHECK(p.glsl.find("GL_GOOGLE_include_directive") == std::string::npos);
   CHECK(p.glsl.rfind("#version 450\n\n// A distance TCS", 0) == 0);
   // used only: uUnused and notRead are left out
-  CHECK(resourcesOf(p) == std::vector<std::string>{
-                              "uniform uMinTess uniforms.tesc:8:15", "uniform uMaxTess uniforms.tesc:9:15",
-                              "sampler uHeightMap uniforms.tesc:11:19", "member heightScale [Terrain] uniforms.tesc:14:9",
-                              "uniform uEye includes/camera.glsl:2:14"});
+  CHECK(resourcesOf(p) == std::vector<std::string>{"uniform uMinTess uniforms.tesc:8:15",
+                                                   "uniform uMaxTess uniforms.tesc:9:15",
+                                                   "sampler uHeightMap uniforms.tesc:11:19",
+                                                   "member heightScale [Terrain] uniforms.tesc:14:9",
+                                                   "uniform uEye includes/camera.glsl:2:14"});
   CHECK(inputsOf(p) == std::vector<std::string>{"vUv - vUv -1 2", "gl_Position - gl_Position -1 4 builtin",
                                                 "worldPos - Corner.worldPos -1 3"});
 }
@@ -181,9 +185,11 @@ TEST_CASE("An unbound uniform is an error at its declaration that names lod.unif
   const HullProgram p = compiled("unbound_uniform.tesc");
   verify::Scene scene;
   scene.lod.uniforms = {bound("gBound")};
-  CHECK(sceneErrors(p, scene) == std::vector<std::string>{data("unbound_uniform.tesc") +
-                                                          ":4:14: error: uniform 'gEyePosW' is not bound: add 'gEyePosW' "
-                                                          "to [lod.uniforms] " + kValues});
+  CHECK(sceneErrors(p, scene) ==
+        std::vector<std::string>{data("unbound_uniform.tesc") +
+                                 ":4:14: error: uniform 'gEyePosW' is not bound: add 'gEyePosW' "
+                                 "to [lod.uniforms] " +
+                                 kValues});
   scene.lod.uniforms.push_back(bound("gEyePosW", "eye"));
   CHECK(sceneErrors(p, scene).empty());
 }
@@ -261,7 +267,8 @@ TEST_CASE("An HLSL hull shader goes through glslang and SPIRV-Cross with its att
 TEST_CASE("An HLSL cbuffer and input struct from an include are found in the included file") {
   const HullProgram p = compiled("include.hlsl");
   CHECK(resourcesOf(p) == std::vector<std::string>{"member gEyePosW [cbPerFrame] includes/common.hlsli:4:10"});
-  CHECK(inputsOf(p) == std::vector<std::string>{"PosH SV_Position gl_Position -1 4 builtin", "PosW POSITION p_PosW 0 3"});
+  CHECK(inputsOf(p) ==
+        std::vector<std::string>{"PosH SV_Position gl_Position -1 4 builtin", "PosW POSITION p_PosW 0 3"});
   CHECK(p.inputs[1].declared.file == data("includes/common.hlsli"));
 }
 
@@ -271,9 +278,9 @@ TEST_CASE("An HLSL include that is not found and an HLSL syntax error are diagno
                                  ":1:1: error: '#include' : Could not process include directive for header name: "
                                  "includes/nowhere.hlsli"});
   const std::string at = data("syntax_error.hlsl");
-  CHECK(compileErrors("syntax_error.hlsl") ==
-        std::vector<std::string>{at + ":8:3: error: 'pt' : redefinition", at + ":8: error: 'swizzle or member' : Expected",
-                                 at + ":8: error: 'declaration' : Expected"});
+  CHECK(compileErrors("syntax_error.hlsl") == std::vector<std::string>{at + ":8:3: error: 'pt' : redefinition",
+                                                                       at + ":8: error: 'swizzle or member' : Expected",
+                                                                       at + ":8: error: 'declaration' : Expected"});
 }
 
 TEST_CASE("A wrong HLSL entry point is a diagnostic naming the hull shaders") {
@@ -297,16 +304,18 @@ TEST_CASE("A partitioning attribute that contradicts the scene is an error at th
   const HullProgram p = compiled("partitioning_contradicts.hlsl");
   verify::Scene scene;
   scene.lod.inputs = {input("POSITION", "position")}; // bound by its semantic
-  CHECK(sceneErrors(p, scene) == std::vector<std::string>{data("partitioning_contradicts.hlsl") +
-                                                          ":13:3: error: [partitioning(\"fractional_odd\")] contradicts "
-                                                          "the scene's tessellation.partitioning = \"fractional_even\": "
-                                                          "set tessellation.partitioning = \"fractional_odd\""});
+  CHECK(sceneErrors(p, scene) ==
+        std::vector<std::string>{data("partitioning_contradicts.hlsl") +
+                                 ":13:3: error: [partitioning(\"fractional_odd\")] contradicts "
+                                 "the scene's tessellation.partitioning = \"fractional_even\": "
+                                 "set tessellation.partitioning = \"fractional_odd\""});
   scene.partitioning = Partitioning::FractionalOdd;
   CHECK(sceneErrors(p, scene).empty());
   scene.lod.controlPoints = 1;
-  CHECK(sceneErrors(p, scene) == std::vector<std::string>{data("partitioning_contradicts.hlsl") +
-                                                          ":17:14: error: the hull shader takes 4 control points, the "
-                                                          "scene's lod.control_points is 1: set lod.control_points = 4"});
+  CHECK(sceneErrors(p, scene) ==
+        std::vector<std::string>{data("partitioning_contradicts.hlsl") +
+                                 ":17:14: error: the hull shader takes 4 control points, the "
+                                 "scene's lod.control_points is 1: set lod.control_points = 4"});
 }
 
 TEST_CASE("An unbound HLSL input names its semantic and lod.inputs") {
@@ -326,21 +335,22 @@ TEST_CASE("The evaluation shader gives the domain and partitioning and a contrad
   CHECK(errors.empty());
   CHECK(p.domain == hull::Domain::Quad);
   CHECK(p.partitioning == Partitioning::FractionalOdd);
-  CHECK(formatDiagnostic(diag(p.partitioningAt.file, p.partitioningAt.line, p.partitioningAt.column, "x")) == data("quad_odd.tese") + ":2:15: error: x");
+  CHECK(formatDiagnostic(diag(p.partitioningAt.file, p.partitioningAt.line, p.partitioningAt.column, "x")) ==
+        data("quad_odd.tese") + ":2:15: error: x");
   verify::Scene scene;
   scene.lod.uniforms = {bound("gBound"), bound("gEyePosW", "eye")};
-  CHECK(sceneErrors(p, scene) == std::vector<std::string>{data("quad_odd.tese") +
-                                                          ":2:15: error: layout(fractional_odd_spacing) contradicts the "
-                                                          "scene's tessellation.partitioning = \"fractional_even\": set "
-                                                          "tessellation.partitioning = \"fractional_odd\""});
+  CHECK(sceneErrors(p, scene) ==
+        std::vector<std::string>{data("quad_odd.tese") + ":2:15: error: layout(fractional_odd_spacing) contradicts the "
+                                                         "scene's tessellation.partitioning = \"fractional_even\": set "
+                                                         "tessellation.partitioning = \"fractional_odd\""});
 
   HullProgram hlsl = compiled("hull.hlsl");
   errors.clear();
   CHECK_FALSE(readEvaluationShader(data("quad_odd.tese"), hlsl, errors));
   CHECK(formatDiagnostics(errors) == data("quad_odd.tese") +
                                          ":2:15: error: layout(fractional_odd_spacing) contradicts the hull shader's "
-                                         "[partitioning(\"fractional_even\")] (" + data("hull.hlsl") +
-                                         ":56:1): make them agree");
+                                         "[partitioning(\"fractional_even\")] (" +
+                                         data("hull.hlsl") + ":56:1): make them agree");
   errors.clear();
   CHECK(readEvaluationShader(data("domain.hlsl"), hlsl, errors));
   CHECK(errors.empty());
@@ -355,7 +365,7 @@ TEST_CASE("A triangle domain from the evaluation shader is refused for the scene
   verify::Scene scene;
   scene.partitioning = Partitioning::Integer;
   scene.lod.uniforms = {bound("gBound"), bound("gEyePosW", "eye")};
-  CHECK(sceneErrors(p, scene) == std::vector<std::string>{data("tri.tese") +
-                                                          ":3:8: error: the domain is tri: fftess verifies quad patches "
-                                                          "(a terrain's tiles)"});
+  CHECK(sceneErrors(p, scene) ==
+        std::vector<std::string>{data("tri.tese") + ":3:8: error: the domain is tri: fftess verifies quad patches "
+                                                    "(a terrain's tiles)"});
 }
