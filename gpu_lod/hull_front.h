@@ -47,6 +47,11 @@ private:
   std::vector<std::unique_ptr<std::string>> kept_;
 };
 
+// `text` (file `file`) with each #include "x" line replaced by `#line 1 S`, x's text, `#line L+1 P` (S, P: indices in
+// `sources`, which gains every file read), GL_GOOGLE_include_directive lines blanked and Vulkan's `set = N` blanked:
+// the GLSL the driver compiles. Files not found are left to glslang's diagnostics.
+std::string expandIncludes(const std::string& file, const std::string& text, SourceSet& sources, int depth);
+
 // glslang::InitializeProcess once per process.
 void initGlslang();
 

@@ -37,6 +37,8 @@ std::string withoutDescriptorSets(const std::string& line) {
 // `text` (file `file`) with each #include line replaced by `#line 1 S`, the included text, `#line L+1 P`; the
 // GL_GOOGLE_include_directive extension lines blanked (drivers do not know them). Line numbers stay the user's.
 // Files not found were reported by glslang already.
+} // namespace
+
 std::string expandIncludes(const std::string& file, const std::string& text, SourceSet& sources, int depth) {
   const int self = sources.add(file, text);
   std::string out;
@@ -60,6 +62,8 @@ std::string expandIncludes(const std::string& file, const std::string& text, Sou
   }
   return out;
 }
+
+namespace {
 
 int componentsOf(const glslang::TType& t) {
   if (t.isMatrix()) return t.getMatrixCols() * t.getMatrixRows();

@@ -15,6 +15,7 @@
 #include <glslang/SPIRV/GlslangToSpv.h>
 #include <spirv_cross/spirv_cross_c.h>
 
+#include <algorithm>
 #include <regex>
 
 namespace fftess::gpulod::hull::detail {
@@ -199,13 +200,14 @@ void readStructInputs(const SourceSet& sources, const std::string& type, HullPro
 
 // InputPatch<T, N> of the entry's parameters: N, and T's members as the inputs.
 void readInputPatch(const SourceSet& sources, const Function& entry, HullProgram& out) {
-  const std::string text = blankComments(sources.texts[0]);
+  const std::string& original = *sources.textOf(entry.at.file);
+  const std::string text = blankComments(original);
   const std::string params = text.substr(entry.paramsAt, text.find(')', entry.paramsAt) - entry.paramsAt);
   std::smatch m;
   if (!std::regex_search(params, m, std::regex(R"(InputPatch\s*<\s*(\w+)\s*,\s*(\d+)\s*>)"))) return;
   out.inputControlPoints = std::stoi(m[2]);
   out.inputControlPointsAt =
-      positionOf(sources.files[0], sources.texts[0], entry.paramsAt + static_cast<size_t>(m.position(0)));
+      positionOf(entry.at.file, original, entry.paramsAt + static_cast<size_t>(m.position(0)));
   readStructInputs(sources, m[1], out);
 }
 
@@ -236,7 +238,12 @@ bool compileHlsl(const std::string& file, const std::string& entryName, HullProg
   MainSource main;
   if (!main.read(file, sources, errors)) return false;
   const std::string& text = main.text;
-  const std::vector<Function> fns = functionsOf(file, text);
+  expandIncludes(file, text, sources, 0); // the #included files too: the functions may be there
+  std::vector<Function> fns;
+  for (size_t i = 0; i < sources.files.size(); ++i) {
+    const std::vector<Function> more = functionsOf(sources.files[i], sources.texts[i]);
+    fns.insert(fns.end(), more.begin(), more.end());
+  }
   const Function* entry = findEntry(file, fns, entryName, errors);
   if (!entry) return false;
   out.language = Language::Hlsl;
@@ -246,6 +253,10 @@ bool compileHlsl(const std::string& file, const std::string& entryName, HullProg
   readAttributes(*entry, out, errors);
   if (!errors.empty()) return false;
   glslang::TShader shader(EShLangTessControl);
+  // glslang knows no [partitioning("pow2")] (D3D's): it reads "integer" there; the factors do not depend on it (fftess
+  // tessellates them with pow2) and the attribute's position and value are fftess's (readAttributes).
+  if (out.partitioning == Partitioning::Pow2)
+    main.text = std::regex_replace(main.text, std::regex(R"re((\[\s*partitioning\s*\(\s*")pow2("))re"), "$1integer$2");
   main.attach(shader);
   shader.setEntryPoint(out.entry.c_str());
   shader.setEnvInput(glslang::EShSourceHlsl, EShLangTessControl, glslang::EShClientVulkan, 100);
@@ -255,7 +266,15 @@ bool compileHlsl(const std::string& file, const std::string& entryName, HullProg
   shader.setAutoMapBindings(true);
   glslang::TProgram program;
   const EShMessages messages = static_cast<EShMessages>(EShMsgReadHlsl | EShMsgSpvRules | EShMsgVulkanRules);
-  if (!parseAndLink(shader, program, sources, messages, 100, ENoProfile, errors)) return false;
+  const size_t before = errors.size();
+  if (!parseAndLink(shader, program, sources, messages, 100, ENoProfile, errors)) {
+    // glslang says "'F' : patch constant function not found" without a place: the attribute's
+    const Attribute* pcf = attributeOf(*entry, "patchconstantfunc");
+    for (size_t i = before; i < errors.size(); ++i)
+      if (errors[i].at.line == 0 && errors[i].message.find("patch constant function not found") != std::string::npos)
+        errors[i].at = pcf->at;
+    return false;
+  }
   std::vector<unsigned> spirv;
   glslang::GlslangToSpv(*program.getIntermediate(EShLangTessControl), spirv);
   std::vector<std::pair<std::string, int>> locs;

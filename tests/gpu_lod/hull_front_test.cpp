@@ -272,6 +272,20 @@ TEST_CASE("An HLSL cbuffer and input struct from an include are found in the inc
   CHECK(p.inputs[1].declared.file == data("includes/common.hlsli"));
 }
 
+TEST_CASE("An HLSL hull shader defined in an included file is found there with its attributes") {
+  const HullProgram p = compiled("hs_in_include.hlsl");
+  CHECK(p.entry == "TerrainHS");
+  CHECK(p.partitioning == Partitioning::FractionalOdd);
+  const std::string hs = data("includes/terrain_hs.hlsli");
+  CHECK(formatDiagnostic(diag(p.partitioningAt.file, p.partitioningAt.line, p.partitioningAt.column, "x")) ==
+        hs + ":13:18: error: x");
+  CHECK(formatDiagnostic(diag(p.inputControlPointsAt.file, p.inputControlPointsAt.line, p.inputControlPointsAt.column,
+                              "x")) == hs + ":15:18: error: x");
+  CHECK(resourcesOf(p) == std::vector<std::string>{"member EyeW [PerView] hs_in_include.hlsl:2:26",
+                                                   "member Scale [PerView] hs_in_include.hlsl:2:38"});
+  CHECK(inputsOf(p) == std::vector<std::string>{"W POSITION c_W 0 3"});
+}
+
 TEST_CASE("An HLSL include that is not found and an HLSL syntax error are diagnostics at the user's lines") {
   CHECK(compileErrors("include_missing.hlsl") ==
         std::vector<std::string>{data("include_missing.hlsl") +
@@ -298,6 +312,19 @@ TEST_CASE("A wrong HLSL entry point is a diagnostic naming the hull shaders") {
   CHECK(far.patchConstantFunction == "FarPatch");
   CHECK(far.glsl.find("FarPatch(") != std::string::npos);
   CHECK(far.glsl.find("NearPatch(") == std::string::npos);
+}
+
+TEST_CASE("An HLSL pow2 partitioning goes through glslang and stays pow2") {
+  const HullProgram p = compiled("pow2.hlsl");
+  CHECK(p.partitioning == Partitioning::Pow2);
+  CHECK(p.partitioningAt.line == 7);
+  CHECK(p.glsl.find("gl_TessLevelOuter[3] = ") != std::string::npos);
+}
+
+TEST_CASE("A patch-constant function that does not exist is a diagnostic at the attribute") {
+  CHECK(compileErrors("patchconstantfunc_missing.hlsl") ==
+        std::vector<std::string>{data("patchconstantfunc_missing.hlsl") +
+                                 ":8:58: error: 'PatchFactors' : patch constant function not found"});
 }
 
 TEST_CASE("A partitioning attribute that contradicts the scene is an error at the attribute") {
