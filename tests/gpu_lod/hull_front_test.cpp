@@ -162,6 +162,15 @@ TEST_CASE("A GLSL syntax error is a diagnostic at the user's line") {
                                  ":8: error: syntax error, unexpected IDENTIFIER, expecting COMMA or SEMICOLON"});
 }
 
+TEST_CASE("Each of glslang's errors is its own diagnostic line") {
+  const std::string at = data("two_errors.tesc");
+  // glslang quotes 'assign', which is not in the line: no column
+  CHECK(compileErrors("two_errors.tesc") ==
+        std::vector<std::string>{at + ":5:26: error: 'uFar' : undeclared identifier",
+                                 at + ":6: error: 'assign' :  cannot convert from ' const 2-component vector of float' "
+                                      "to ' patch temp float TessLevelOuter'"});
+}
+
 TEST_CASE("A GLSL TCS without a version line is a diagnostic at its first line") {
   CHECK(compileErrors("no_version.tesc") ==
         std::vector<std::string>{data("no_version.tesc") + ":1:1: error: no #version line: a tessellation control "
