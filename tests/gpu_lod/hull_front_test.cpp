@@ -333,7 +333,7 @@ TEST_CASE("An HLSL pow2 partitioning goes through glslang and stays pow2") {
 TEST_CASE("A patch-constant function that does not exist is a diagnostic at the attribute") {
   CHECK(compileErrors("patchconstantfunc_missing.hlsl") ==
         std::vector<std::string>{data("patchconstantfunc_missing.hlsl") +
-                                 ":8:58: error: 'PatchFactors' : patch constant function not found"});
+                                 ":8:1: error: 'PatchFactors' : patch constant function not found"});
 }
 
 TEST_CASE("A partitioning attribute that contradicts the scene is an error at the attribute") {

@@ -1,9 +1,12 @@
 // The patch-constant function named by the attribute does not exist (it is called Factors).
-struct CP { float3 P : POSITION; };
-struct PF { float e[4] : SV_TessFactor; float i[2] : SV_InsideTessFactor; };
-PF Factors(InputPatch<CP, 4> q) { PF f; f.e[0] = f.e[1] = f.e[2] = f.e[3] = q[0].P.x; f.i[0] = f.i[1] = 4; return f; }
+struct CP
+{
+  float3 P : POSITION;
+};
 
-[domain("quad")]
-[partitioning("integer")]
-[outputtopology("triangle_cw")] [outputcontrolpoints(4)] [patchconstantfunc("PatchFactors")]
-CP Main(InputPatch<CP, 4> q, uint k : SV_OutputControlPointID) { return q[k]; }
+[domain("quad")] [partitioning("integer")] [outputtopology("triangle_cw")] [outputcontrolpoints(4)]
+[patchconstantfunc("PatchFactors")]
+CP Main(InputPatch<CP, 4> q, uint k : SV_OutputControlPointID)
+{
+  return q[k];
+}
