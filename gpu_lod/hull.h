@@ -56,6 +56,8 @@ struct Resource {
   Kind kind = Kind::Uniform;
   std::string name;   // the name the scene binds: the uniform's, the member's (without the block), the texture's
   std::string block;  // BlockMember: the uniform block / cbuffer name ("" otherwise)
+  std::string glslBlock; // BlockMember: the block's name in HullProgram::glsl (GL introspection names the member
+                         // "glslBlock.name"): GLSL the block's; HLSL the cbuffer's, "$Global" -> "_Global"
   SourcePos declared; // its declaration in the user's file(s) (line 0 when unknown)
 };
 
@@ -82,6 +84,7 @@ struct HullProgram {
   std::string glsl;
   std::vector<std::string> sourceFiles; // GLSL: source-string number -> file, [0] = the main file
   int inputControlPoints = 0;  // HLSL InputPatch<T, N>; GLSL 0 (unknown: the scene's lod.control_points)
+  SourcePos inputControlPointsAt; // HLSL: where InputPatch<T, N> is written
   int outputControlPoints = 0; // layout(vertices = N) / [outputcontrolpoints(N)]
   Domain domain = Domain::Unknown; // HLSL [domain(...)]; GLSL Unknown unless an evaluation shader said
   SourcePos domainAt;
