@@ -296,12 +296,16 @@ bool valuesOf(const UniformBinder::Active& a, Language language, const CameraVal
     error = what + ": '" + b.value + "' is not a value for a uniform";
     return false;
   }
-  const size_t count = out.size() / static_cast<size_t>(e);
-  if (ti.cols == 1 && count == static_cast<size_t>(a.arraySize) && e == 3 && comps == 4) {
-    for (size_t k = count; k-- > 0;) out.insert(out.begin() + static_cast<long>(k * 3 + 3), 1.0f); // w = 1
+  // An array the driver reports shorter (its highest used element + 1) takes the value's first elements.
+  const size_t count = std::max(out.size() / static_cast<size_t>(e), static_cast<size_t>(1));
+  if (count > static_cast<size_t>(a.arraySize) && a.arraySize > 1) out.resize(static_cast<size_t>(a.arraySize * e));
+  const size_t used = std::min(count, static_cast<size_t>(a.arraySize));
+  if (ti.cols == 1 && (count == static_cast<size_t>(a.arraySize) || a.arraySize > 1) && e == 3 && comps == 4) {
+    for (size_t k = used; k-- > 0;) out.insert(out.begin() + static_cast<long>(k * 3 + 3), 1.0f); // w = 1
     return true;
   }
-  if (ti.cols != 1 || static_cast<size_t>(e) != comps || count != static_cast<size_t>(a.arraySize)) {
+  if (ti.cols != 1 || static_cast<size_t>(e) != comps || (count != static_cast<size_t>(a.arraySize) &&
+                                                           (a.arraySize == 1 || count < static_cast<size_t>(a.arraySize)))) {
     error = what + ": " + b.value + " has " + std::to_string(count) + " element(s) of " + std::to_string(e) +
             " component(s)";
     return false;
@@ -408,6 +412,12 @@ GLuint heightmapTexture(const gltest::GlFunctions& gl, const verify::Displacemen
   return tex;
 }
 
+bool isUsedMember(const HullProgram& hull, const UniformBinder::Active& a) {
+  for (const Resource& r : hull.resources)
+    if (r.kind == Resource::Kind::BlockMember && r.name == a.member) return true;
+  return false;
+}
+
 // Checks one active uniform against its binding: false with a diagnostic when unbound or of the wrong kind.
 bool checkBinding(const HullProgram& hull, const UniformBinder::Active& a, std::vector<Diagnostic>& errors) {
   const bool sampler = typeInfo(a.type).base == 's';
@@ -445,6 +455,9 @@ bool UniformBinder::create(const HullProgram& hull, const verify::LodPatches& pa
   bool ok = true;
   for (Active& a : active_) {
     a.binding = findUniform(scene_->lod, a);
+    // GL lists every member of a std140 / shared block as active: a member the front end did not find used
+    // (HullProgram::resources) may stay unbound (zero).
+    if (!a.binding && a.blockIndex >= 0 && !isUsedMember(hull, a)) continue;
     ok = checkBinding(hull, a, errors) && ok;
     if (typeInfo(a.type).base == 's') a.unit = units++;
   }
@@ -523,6 +536,7 @@ bool UniformBinder::bind(const lod::Camera& camera, std::string& error) {
   const TerrainValues t{heightScale_, patchSize_, extent_};
   std::vector<float> v;
   for (const Active& a : active_) {
+    if (!a.binding) continue; // an unused block member: zero
     if (a.unit < 0 && !valuesOf(a, language_, c, t, v, error)) return false;
     store(a, v);
   }

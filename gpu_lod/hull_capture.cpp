@@ -72,6 +72,31 @@ std::string recordStatements(int binding) {
 
 } // namespace
 
+// Line numbers the driver prints name their file whatever it does with `#line L S`'s source-string number (Mesa
+// prints 0): every `#line L [S]` becomes `#line S * kLineStride + L S`, and a log's line N is file N / kLineStride,
+// line N % kLineStride (lines before the first directive: string 0).
+constexpr int kLineStride = 100000;
+
+std::string encodeLineDirectives(const std::string& glsl) {
+  std::istringstream in(glsl);
+  std::string line, out;
+  int source = 0;
+  while (std::getline(in, line)) {
+    size_t p = line.find_first_not_of(" \t");
+    if (p != std::string::npos && line[p] == '#') {
+      p = line.find_first_not_of(" \t", p + 1);
+      long l = 0, s = -1;
+      if (p != std::string::npos && line.compare(p, 4, "line") == 0 &&
+          std::sscanf(line.c_str() + p + 4, "%ld %ld", &l, &s) >= 1) {
+        if (s >= 0) source = static_cast<int>(s);
+        line = "#line " + std::to_string(static_cast<long>(source) * kLineStride + l) + " " + std::to_string(source);
+      }
+    }
+    out += line + "\n";
+  }
+  return out;
+}
+
 // The TCS the driver compiles: program.glsl with the recording epilogue (docs/gpu_lod.md "The driver half"). The
 // SSBO declaration goes before main (on main's own line, so no line moves); numbered as source string
 // `generatedString` where it adds lines. False with a message when main cannot be found or the record cannot be
@@ -90,7 +115,8 @@ bool tcsWithEpilogue(const std::string& glsl, int binding, int generatedString, 
     // Rename the user's main; a new main after it runs it, waits for every invocation and records.
     out = glsl.substr(0, voidAt) + ssbo + glsl.substr(voidAt, main - voidAt) + "fftessUserMain" +
           glsl.substr(main + 4);
-    out += "\n#line 1 " + std::to_string(generatedString) + "\nvoid main() { fftessUserMain(); barrier(); " +
+    out += "\n#line " + std::to_string(static_cast<long>(generatedString) * kLineStride + 1) + " " +
+           std::to_string(generatedString) + "\nvoid main() { fftessUserMain(); barrier(); " +
            recordStatements(binding) + "}\n";
     return true;
   }
@@ -129,7 +155,7 @@ bool tcsWithEpilogue(const std::string& glsl, int binding, int generatedString, 
 namespace {
 
 // One line of a driver's info log as a diagnostic: Mesa "S:L(C): error: MSG", NVIDIA "S(L) : error CNNNN: MSG".
-// S indexes the program's sourceFiles (a GLSL TCS); other strings (fftess's epilogue, SPIRV-Cross's GLSL of an HLSL
+// S (decoded from the line, encodeLineDirectives) indexes the program's sourceFiles (a GLSL TCS); other strings (fftess's epilogue, SPIRV-Cross's GLSL of an HLSL
 // file) are fftess's: the diagnostic has no place and says so.
 Diagnostic driverDiagnostic(const HullProgram& program, const std::string& line) {
   int s = -1, l = 0, c = 0, n = 0;
@@ -137,6 +163,8 @@ Diagnostic driverDiagnostic(const HullProgram& program, const std::string& line)
   if (std::sscanf(line.c_str(), "%d:%d(%d): %n", &s, &l, &c, &n) == 3 && n > 0) rest = line.substr(n);
   else if (std::sscanf(line.c_str(), "%d(%d) : %n", &s, &l, &n) == 2 && n > 0) rest = line.substr(n), c = 0;
   else return diagnostic({}, "the driver: " + line);
+  s = l / kLineStride; // encodeLineDirectives
+  l %= kLineStride;
   for (const char* word : {"error: ", "error ", "warning: ", "warning "})
     if (rest.compare(0, std::strlen(word), word) == 0) {
       rest = rest.substr(std::strlen(word));
@@ -243,7 +271,7 @@ bool buildProgram(HullCapture::Impl& m, const HullProgram& hull, const verify::S
   m.ssboBinding = bindings - 1;
   std::string tcs, error;
   const int generated = static_cast<int>(hull.sourceFiles.size() + 1000);
-  if (!tcsWithEpilogue(hull.glsl, m.ssboBinding, generated, tcs, error)) {
+  if (!tcsWithEpilogue(encodeLineDirectives(hull.glsl), m.ssboBinding, generated, tcs, error)) {
     errors.push_back(diagnostic({hull.file, 0, 0}, error));
     return false;
   }
