@@ -273,7 +273,7 @@ bool valuesOf(const UniformBinder::Active& a, Language language, const CameraVal
   const std::string what = "[lod.uniforms] " + b.name + " (uniform '" + a.name + "', " + typeWords(ti, a.arraySize) +
                            ")";
   if (b.value.empty()) {
-    if (b.numbers.size() < need || (a.arraySize == 1 && b.numbers.size() != need)) {
+    if (b.numbers.size() < need || (!a.array && b.numbers.size() != need)) {
       error = what + ": " + std::to_string(b.numbers.size()) + " number(s) given, " + std::to_string(need) + " needed";
       return false;
     }
@@ -298,14 +298,14 @@ bool valuesOf(const UniformBinder::Active& a, Language language, const CameraVal
   }
   // An array the driver reports shorter (its highest used element + 1) takes the value's first elements.
   const size_t count = std::max(out.size() / static_cast<size_t>(e), static_cast<size_t>(1));
-  if (count > static_cast<size_t>(a.arraySize) && a.arraySize > 1) out.resize(static_cast<size_t>(a.arraySize * e));
+  if (count > static_cast<size_t>(a.arraySize) && a.array) out.resize(static_cast<size_t>(a.arraySize * e));
   const size_t used = std::min(count, static_cast<size_t>(a.arraySize));
-  if (ti.cols == 1 && (count == static_cast<size_t>(a.arraySize) || a.arraySize > 1) && e == 3 && comps == 4) {
+  if (ti.cols == 1 && (count == static_cast<size_t>(a.arraySize) || a.array) && e == 3 && comps == 4) {
     for (size_t k = used; k-- > 0;) out.insert(out.begin() + static_cast<long>(k * 3 + 3), 1.0f); // w = 1
     return true;
   }
   if (ti.cols != 1 || static_cast<size_t>(e) != comps || (count != static_cast<size_t>(a.arraySize) &&
-                                                           (a.arraySize == 1 || count < static_cast<size_t>(a.arraySize)))) {
+                                                           (!a.array || count < static_cast<size_t>(a.arraySize)))) {
     error = what + ": " + b.value + " has " + std::to_string(count) + " element(s) of " + std::to_string(e) +
             " component(s)";
     return false;
@@ -344,7 +344,10 @@ std::vector<UniformBinder::Active> activeUniforms(const gltest::GlFunctions& gl,
     UniformBinder::Active a;
     a.name = name;
     if (a.name.compare(0, 3, "gl_") == 0 || a.name.compare(0, 6, "fftess") == 0) continue;
-    if (a.name.size() > 3 && a.name.compare(a.name.size() - 3, 3, "[0]") == 0) a.name.resize(a.name.size() - 3);
+    if (a.name.size() > 3 && a.name.compare(a.name.size() - 3, 3, "[0]") == 0) {
+      a.name.resize(a.name.size() - 3);
+      a.array = true;
+    }
     a.type = static_cast<GLenum>(v[0]);
     a.arraySize = std::max(1, v[1]);
     a.offset = v[2], a.arrayStride = v[3], a.matrixStride = v[4], a.rowMajor = v[5], a.location = v[6];

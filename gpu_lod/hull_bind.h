@@ -75,6 +75,7 @@ public:
     GLint arraySize = 1, offset = -1, arrayStride = 0, matrixStride = 0, rowMajor = 0, location = -1, blockIndex = -1;
     const verify::UniformBinding* binding = nullptr;
     int unit = -1; // sampler: its texture unit
+    bool array = false; // GL named it "x[0]" (its arraySize may be the highest used element + 1)
   };
 
 private:

@@ -6,6 +6,7 @@
 
 #include "base/bits.h"
 
+#include <algorithm>
 #include <array>
 #include <cctype>
 #include <cstdio>
@@ -59,14 +60,15 @@ size_t findMain(const std::string& code) {
 
 std::string recordStatements(int binding) {
   (void)binding;
-  return "if (gl_InvocationID == 0) { uint fftessAt = uint(gl_PrimitiveID) * 6u; "
+  return "if (gl_InvocationID == 0) { uint fftessPatch = fftessPatchBase + uint(gl_PrimitiveID); "
+         "uint fftessAt = fftessPatch * 6u; "
          "fftessLevels[fftessAt] = floatBitsToUint(gl_TessLevelOuter[0]); "
          "fftessLevels[fftessAt + 1u] = floatBitsToUint(gl_TessLevelOuter[1]); "
          "fftessLevels[fftessAt + 2u] = floatBitsToUint(gl_TessLevelOuter[2]); "
          "fftessLevels[fftessAt + 3u] = floatBitsToUint(gl_TessLevelOuter[3]); "
          "fftessLevels[fftessAt + 4u] = floatBitsToUint(gl_TessLevelInner[0]); "
          "fftessLevels[fftessAt + 5u] = floatBitsToUint(gl_TessLevelInner[1]); "
-         "fftessLevels[fftessPatchCount * 6u + uint(gl_PrimitiveID)] = 1u; "
+         "fftessLevels[fftessPatchCount * 6u + fftessPatch] = 1u; "
          "gl_TessLevelOuter[0] = 0.0; } ";
 }
 
@@ -76,6 +78,11 @@ std::string recordStatements(int binding) {
 // prints 0): every `#line L [S]` becomes `#line S * kLineStride + L S`, and a log's line N is file N / kLineStride,
 // line N % kLineStride (lines before the first directive: string 0).
 constexpr int kLineStride = 100000;
+
+// Patches per draw: gl_PrimitiveID counts from 0 in each draw (the record adds fftessPatchBase). llvmpipe (Mesa 22)
+// restarts gl_PrimitiveID within one draw of 4096 four-point patches at patch 1024 (seen: patch 1024's levels were
+// never recorded), so draws stay well below that.
+constexpr size_t kPatchesPerDraw = 256;
 
 std::string encodeLineDirectives(const std::string& glsl) {
   std::istringstream in(glsl);
@@ -109,7 +116,7 @@ bool tcsWithEpilogue(const std::string& glsl, int binding, int generatedString, 
     return false;
   }
   const std::string ssbo = "layout(std430, binding = " + std::to_string(binding) +
-                           ") buffer FftessLevels { uint fftessLevels[]; }; uniform uint fftessPatchCount; ";
+                           ") buffer FftessLevels { uint fftessLevels[]; }; uniform uint fftessPatchCount; uniform uint fftessPatchBase; ";
   size_t voidAt = code.rfind("void", main);
   if (findCall(code, "barrier") == std::string::npos) {
     // Rename the user's main; a new main after it runs it, waits for every invocation and records.
@@ -359,7 +366,13 @@ bool HullCapture::evaluate(const verify::LodPatches& patches, const lod::Camera&
   gl.glBindVertexArray(m.vertexArray);
   gl.glEnable(GL_RASTERIZER_DISCARD);
   gl.glPatchParameteri(GL_PATCH_VERTICES, m.controlPoints);
-  gl.glDrawArrays(GL_PATCHES, 0, static_cast<GLsizei>(n * static_cast<size_t>(m.controlPoints)));
+  const GLint base = gl.glGetUniformLocation(m.program, "fftessPatchBase");
+  for (size_t first = 0; first < n; first += kPatchesPerDraw) {
+    const size_t count = std::min(kPatchesPerDraw, n - first);
+    gl.glUniform1ui(base, static_cast<GLuint>(first));
+    gl.glDrawArrays(GL_PATCHES, static_cast<GLint>(first * static_cast<size_t>(m.controlPoints)),
+                    static_cast<GLsizei>(count * static_cast<size_t>(m.controlPoints)));
+  }
   gl.glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   gl.glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(n * 7 * 4), m.words.data());
   if (!gltest::checkGl(gl, "the hull shader's draw", error)) return false;
