@@ -367,7 +367,9 @@ std::vector<UniformBinder::Active> activeUniforms(const gltest::GlFunctions& gl,
 
 const verify::UniformBinding* findUniform(const verify::Lod& lod, const UniformBinder::Active& a) {
   for (const verify::UniformBinding& b : lod.uniforms)
-    if (b.name == a.member || b.name == a.name || (!a.block.empty() && b.name == a.block + "." + a.member)) return &b;
+    if (b.name == a.member || b.name == a.name || (!a.block.empty() && b.name == a.block + "." + a.member) ||
+        ((a.block == "_Global" || a.block == "$Global") && b.name == "$Global." + a.member)) // HLSL globals
+      return &b;
   return nullptr;
 }
 
@@ -478,6 +480,10 @@ bool UniformBinder::create(const HullProgram& hull, const verify::LodPatches& pa
     gl_.glBindBuffer(GL_UNIFORM_BUFFER, blockBuffers_[b]);
     gl_.glBufferData(GL_UNIFORM_BUFFER, size, nullptr, GL_DYNAMIC_DRAW);
     gl_.glUniformBlockBinding(program_, static_cast<GLuint>(b), static_cast<GLuint>(b));
+  }
+  if (units > 0 && !scene_->displacement.texels) {
+    errors.push_back(diagnostic({}, "[lod.uniforms] binds \"heightmap\" but the scene has no displacement texture"));
+    return false;
   }
   if (units > 0) heightmap_ = heightmapTexture(gl_, scene_->displacement);
   // Every value checked once against its uniform's type (any camera: the shapes do not depend on it).

@@ -200,22 +200,19 @@ void logDiagnostics(const HullProgram& program, const std::string& log, std::vec
 bool compileStage(const gltest::GlFunctions& gl, GLuint program, GLenum stage, const std::string& src,
                   const HullProgram& hull, bool user, std::vector<Diagnostic>& errors) {
   const GLuint shader = gl.glCreateShader(stage);
-  const char* text = src.c_str();
-  gl.glShaderSource(shader, 1, &text, nullptr);
-  gl.glCompileShader(shader);
-  GLint ok = 0;
-  gl.glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-  if (!ok) {
-    char log[8192] = {};
-    gl.glGetShaderInfoLog(shader, sizeof log, nullptr, log);
-    if (user) logDiagnostics(hull, log, errors);
-    else errors.push_back(diagnostic({}, "fftess's generated shader does not compile on this driver: " + std::string(log)));
-    gl.glDeleteShader(shader);
-    return false;
-  }
-  gl.glAttachShader(program, shader);
-  gl.glDeleteShader(shader); // freed with the program
-  return true;
+  std::string error;
+  const bool ok = gltest::compileShader(gl, shader, src, error);
+  if (ok) gl.glAttachShader(program, shader);
+  gl.glDeleteShader(shader); // an attached shader is freed with the program
+  if (ok) return true;
+  // error = "GL shader compile failed: " + LOG + "\n" + src (gl_context.h): the log alone.
+  const std::string prefix = "GL shader compile failed: ";
+  const size_t end = error.size() >= prefix.size() + src.size() + 1 ? error.size() - src.size() - 1 : error.size();
+  const std::string log = error.compare(0, prefix.size(), prefix) == 0 ? error.substr(prefix.size(), end - prefix.size())
+                                                                       : error;
+  if (user) logDiagnostics(hull, log, errors);
+  else errors.push_back(diagnostic({}, "fftess's generated shader does not compile on this driver: " + log));
+  return false;
 }
 
 const char* spacingOf(Partitioning p) {
