@@ -116,7 +116,8 @@ bool tcsWithEpilogue(const std::string& glsl, int binding, int generatedString, 
     return false;
   }
   const std::string ssbo = "layout(std430, binding = " + std::to_string(binding) +
-                           ") buffer FftessLevels { uint fftessLevels[]; }; uniform uint fftessPatchCount; uniform uint fftessPatchBase; ";
+                           ") buffer FftessLevels { uint fftessLevels[]; }; uniform uint fftessPatchCount; "
+                           "uniform uint fftessPatchBase; ";
   size_t voidAt = code.rfind("void", main);
   if (findCall(code, "barrier") == std::string::npos) {
     // Rename the user's main; a new main after it runs it, waits for every invocation and records.
@@ -162,7 +163,8 @@ bool tcsWithEpilogue(const std::string& glsl, int binding, int generatedString, 
 namespace {
 
 // One line of a driver's info log as a diagnostic: Mesa "S:L(C): error: MSG", NVIDIA "S(L) : error CNNNN: MSG".
-// S (decoded from the line, encodeLineDirectives) indexes the program's sourceFiles (a GLSL TCS); other strings (fftess's epilogue, SPIRV-Cross's GLSL of an HLSL
+// S (decoded from the line, encodeLineDirectives) indexes the program's sourceFiles (a GLSL TCS); other strings
+// (fftess's epilogue, SPIRV-Cross's GLSL of an HLSL
 // file) are fftess's: the diagnostic has no place and says so.
 Diagnostic driverDiagnostic(const HullProgram& program, const std::string& line) {
   int s = -1, l = 0, c = 0, n = 0;
@@ -208,8 +210,8 @@ bool compileStage(const gltest::GlFunctions& gl, GLuint program, GLenum stage, c
   // error = "GL shader compile failed: " + LOG + "\n" + src (gl_context.h): the log alone.
   const std::string prefix = "GL shader compile failed: ";
   const size_t end = error.size() >= prefix.size() + src.size() + 1 ? error.size() - src.size() - 1 : error.size();
-  const std::string log = error.compare(0, prefix.size(), prefix) == 0 ? error.substr(prefix.size(), end - prefix.size())
-                                                                       : error;
+  const std::string log =
+      error.compare(0, prefix.size(), prefix) == 0 ? error.substr(prefix.size(), end - prefix.size()) : error;
   if (user) logDiagnostics(hull, log, errors);
   else errors.push_back(diagnostic({}, "fftess's generated shader does not compile on this driver: " + log));
   return false;
@@ -381,7 +383,8 @@ bool HullCapture::evaluate(const verify::LodPatches& patches, const lod::Camera&
       return false;
     }
     lod::PatchLod& r = out[i];
-    r.why.scheme = lod::Scheme::ScreenSphere; // lod::Scheme has no "shader"; as the compute path reports lod.scheme = "shader"
+    // lod::Scheme has no "shader": what the compute path reports for lod.scheme = "shader" (gpu_lod.cpp lodScheme).
+    r.why.scheme = lod::Scheme::ScreenSphere;
     for (int k = 0; k < 6; ++k) {
       const float f = floatOf(m.words[i * 6 + static_cast<size_t>(k)]);
       const int t = m.targets[static_cast<size_t>(k)];
