@@ -341,6 +341,74 @@ TEST_CASE("a main that calls barrier gets the record inserted before its closing
   }
 }
 
+// SPIRV-Cross's GLSL (spirv-cross --version 450 --no-es, Debian) of glslang's SPIR-V (glslangValidator -D -V -S tesc
+// -e HS) for this HLSL, written by us:
+//   cbuffer cbPerFrame { float4x4 gViewProj; float4 gPlanes[6]; };
+//   struct VIn { float3 PosW : POSITION; };
+//   struct PC { float E[4] : SV_TessFactor; float I[2] : SV_InsideTessFactor; };
+//   PC ConstHS(InputPatch<VIn, 4> p, uint id : SV_PrimitiveID) {
+//     PC o; float4 c = mul(gViewProj, float4(p[0].PosW, 1.0));
+//     o.E[0] = c.x; o.E[1] = gViewProj[2][1]; o.E[2] = 3; o.E[3] = 4; o.I[0] = 5; o.I[1] = 6; return o; }
+//   HS: [domain("quad")] ... [patchconstantfunc("ConstHS")], passes PosW through.
+// mul(M, p) became p * G and M[2][1] became G[2].y: G's column i is the HLSL row i (a row_major mat4 in the block).
+const char* const kSpirvCrossTcs = R"(layout(vertices = 4) out;
+struct VIn
+{
+    vec3 PosW;
+};
+layout(binding = 0, std140) uniform cbPerFrame
+{
+    layout(row_major) mat4 gViewProj;
+    vec4 gPlanes[6];
+} _47;
+layout(location = 0) in vec3 p_PosW[];
+layout(location = 0) out vec3 _entryPointOutput_PosW[4];
+mat4 spvWorkaroundRowMajor(mat4 wrap) { return wrap; }
+void main()
+{
+    VIn param[4] = VIn[](VIn(p_PosW[0]), VIn(p_PosW[1]), VIn(p_PosW[2]), VIn(p_PosW[3]));
+    _entryPointOutput_PosW[gl_InvocationID] = param[gl_InvocationID].PosW;
+    barrier();
+    if (int(gl_InvocationID) == 0)
+    {
+        gl_TessLevelOuter[0] = (vec4(p_PosW[0], 1.0) * spvWorkaroundRowMajor(_47.gViewProj)).x;
+        gl_TessLevelOuter[1] = _47.gViewProj[2].y;
+        gl_TessLevelOuter[2] = 3.0;
+        gl_TessLevelOuter[3] = 4.0;
+        gl_TessLevelInner[0] = 5.0;
+        gl_TessLevelInner[1] = 6.0;
+    }
+}
+)";
+
+TEST_CASE("an HLSL cbuffer matrix through glslang and SPIRV-Cross multiplies as the HLSL source says",
+          "[gpu_lod][hull]") {
+  HullProgram p;
+  p.language = Language::Hlsl;
+  p.file = "terrain.hlsl";
+  p.glsl = std::string("#version 450\n") + kSpirvCrossTcs;
+  p.outputControlPoints = 4;
+  Input pos;
+  pos.name = "PosW", pos.semantic = "POSITION", pos.glslName = "p_PosW", pos.location = 0, pos.components = 3;
+  p.inputs = {pos};
+  Resource vp;
+  vp.kind = Resource::Kind::BlockMember, vp.name = "gViewProj", vp.block = "cbPerFrame";
+  p.resources = {vp};
+  verify::Lod lod;
+  lod.uniforms = {{"gViewProj", {}, "view_projection"}};
+  lod.inputs = {{"POSITION", "position"}};
+  const verify::Terrain t = terrain(lod);
+  const lod::Camera cam = camera();
+  const std::vector<lod::PatchLod> out = capture(p, t, cam);
+  const glm::mat4 m = cam.projection * cam.view;
+  verify::LodPatches patches(t);
+  for (size_t i = 0; i < out.size(); ++i) {
+    const glm::vec4 clip = m * glm::vec4(patches[i].patch.corners[0], 1.0f);
+    CHECK(out[i].factors[0] == Approx(clip.x).epsilon(1e-5).margin(1e-5)); // the shader's own dot product order
+    CHECK(bitsOf(out[i].factors[1]) == bitsOf(m[1][2]));                    // HLSL M[2][1]: row 2, column 1
+  }
+}
+
 TEST_CASE("a driver compile error names the user's file and line", "[gpu_lod][hull]") {
   HullProgram p = program("void main() {\n  gl_TessLevelOuter[0] = 1.0;\n#line 7 1\n  float x = undefinedThing;\n}\n");
   p.sourceFiles.push_back("lib/include.glsl");
