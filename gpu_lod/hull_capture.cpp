@@ -58,8 +58,7 @@ size_t findMain(const std::string& code) {
   return std::string::npos;
 }
 
-std::string recordStatements(int binding) {
-  (void)binding;
+std::string recordStatements() {
   return "if (gl_InvocationID == 0) { uint fftessPatch = fftessPatchBase + uint(gl_PrimitiveID); "
          "uint fftessAt = fftessPatch * 6u; "
          "fftessLevels[fftessAt] = floatBitsToUint(gl_TessLevelOuter[0]); "
@@ -72,7 +71,6 @@ std::string recordStatements(int binding) {
          "gl_TessLevelOuter[0] = 0.0; } ";
 }
 
-} // namespace
 
 // Line numbers the driver prints name their file whatever it does with `#line L S`'s source-string number (Mesa
 // prints 0): every `#line L [S]` becomes `#line S * kLineStride + L S`, and a log's line N is file N / kLineStride,
@@ -108,7 +106,8 @@ std::string encodeLineDirectives(const std::string& glsl) {
 // SSBO declaration goes before main (on main's own line, so no line moves); numbered as source string
 // `generatedString` where it adds lines. False with a message when main cannot be found or the record cannot be
 // placed.
-bool tcsWithEpilogue(const std::string& glsl, int binding, int generatedString, std::string& out, std::string& error) {
+bool tcsWithEpilogue(const std::string& glsl, int binding, int generatedString, std::string& out,
+                     std::string& error) {
   const std::string code = withoutComments(glsl);
   const size_t main = findMain(code);
   if (main == std::string::npos) {
@@ -125,7 +124,7 @@ bool tcsWithEpilogue(const std::string& glsl, int binding, int generatedString, 
           glsl.substr(main + 4);
     out += "\n#line " + std::to_string(static_cast<long>(generatedString) * kLineStride + 1) + " " +
            std::to_string(generatedString) + "\nvoid main() { fftessUserMain(); barrier(); " +
-           recordStatements(binding) + "}\n";
+           recordStatements() + "}\n";
     return true;
   }
   // The text calls barrier() (HLSL through SPIRV-Cross always does): the record goes just before main's closing
@@ -145,22 +144,19 @@ bool tcsWithEpilogue(const std::string& glsl, int binding, int generatedString, 
     return false;
   }
   const std::string body = code.substr(open, close - open);
-  if (findCall(body, "return") != std::string::npos || body.find("return") != std::string::npos) {
-    bool word = false;
-    for (size_t p = body.find("return"); p != std::string::npos; p = body.find("return", p + 1))
-      word = word || ((p == 0 || !isIdent(body[p - 1])) && (p + 6 >= body.size() || !isIdent(body[p + 6])));
-    if (word) {
-      error = "the tessellation control shader's main() calls barrier() and returns early: fftess cannot place the "
-              "record of its levels after the last write (remove the return from main, or the barrier())";
-      return false;
-    }
+  bool returns = false; // the word `return` anywhere in main's body
+  for (size_t p = body.find("return"); p != std::string::npos; p = body.find("return", p + 1))
+    returns = returns || ((p == 0 || !isIdent(body[p - 1])) && (p + 6 >= body.size() || !isIdent(body[p + 6])));
+  if (returns) {
+    error = "the tessellation control shader's main() calls barrier() and returns early: fftess cannot place the "
+            "record of its levels after the last write (remove the return from main, or the barrier())";
+    return false;
   }
   out = glsl.substr(0, voidAt) + ssbo + glsl.substr(voidAt, close - voidAt) + " barrier(); " +
-        recordStatements(binding) + glsl.substr(close);
+        recordStatements() + glsl.substr(close);
   return true;
 }
 
-namespace {
 
 // One line of a driver's info log as a diagnostic: Mesa "S:L(C): error: MSG", NVIDIA "S(L) : error CNNNN: MSG".
 // S (decoded from the line, encodeLineDirectives) indexes the program's sourceFiles (a GLSL TCS); other strings
@@ -225,6 +221,8 @@ const char* spacingOf(Partitioning p) {
 
 } // namespace
 
+namespace {
+
 // Which fftess factor (Ueq0 Veq0 Ueq1 Veq1 insideU insideV) each of the shader's levels lands on: index k = outer 0..3,
 // inner 0..1 (GL and D3D agree for quads: outer 0 is the edge u = 0, 1 v = 0, 2 u = 1, 3 v = 1; inner 0 along u).
 std::array<int, 6> levelTargets(verify::DomainAxis u, verify::DomainAxis v) {
@@ -234,6 +232,8 @@ std::array<int, 6> levelTargets(verify::DomainAxis u, verify::DomainAxis v) {
   auto inside = [](A a) { return a == A::PlusX || a == A::MinusX ? 4 : 5; };
   return {low(u), low(v), high(u), high(v), inside(u), inside(v)};
 }
+
+} // namespace
 
 struct HullCapture::Impl {
   gltest::GlContext* ctx = nullptr;
