@@ -24,6 +24,20 @@ namespace {
 
 gltest::GlContext* gContext = nullptr;
 
+verify::UniformBinding numbers(const std::string& name, const std::vector<double>& values) {
+  verify::UniformBinding b;
+  b.name = name;
+  b.numbers = values;
+  return b;
+}
+
+verify::UniformBinding named(const std::string& name, const std::string& value) {
+  verify::UniformBinding b;
+  b.name = name;
+  b.value = value;
+  return b;
+}
+
 std::string formatDiagnosticsForTest(const std::vector<Diagnostic>& ds) {
   std::string s;
   for (const Diagnostic& d : ds) s += d.at.file + ":" + std::to_string(d.at.line) + ":" +
@@ -164,7 +178,8 @@ TEST_CASE("a uniform, a std140 block and the heightmap sampler are bound from lo
   std::vector<double> m(16), r(16), planes(24);
   for (int k = 0; k < 16; ++k) m[k] = 0.5 + k, r[k] = 100.25 + k;
   for (int k = 0; k < 24; ++k) planes[k] = -1000.0 - k;
-  lod.uniforms = {{"uScale", {7.25}}, {"Params.M", m}, {"R", r}, {"planes", planes}, {"uHeight", {}, "heightmap"}};
+  lod.uniforms = {numbers("uScale", {7.25}), numbers("Params.M", m), numbers("R", r), numbers("planes", planes),
+                  named("uHeight", "heightmap")};
   const verify::Terrain t = terrain(lod);
   const std::vector<lod::PatchLod> out = capture(p, t, camera());
   const verify::Displacement& d = t.scene().displacement;
@@ -177,7 +192,7 @@ TEST_CASE("a uniform, a std140 block and the heightmap sampler are bound from lo
     for (int k = 0; k < 6; ++k) CHECK(bitsOf(l.factors[k]) == bitsOf(want[k]));
 
   SECTION("an unbound member and an unbound sampler are errors naming them") {
-    lod.uniforms = {{"uScale", {7.25}}, {"M", m}, {"planes", planes}};
+    lod.uniforms = {numbers("uScale", {7.25}), numbers("M", m), numbers("planes", planes)};
     const verify::Terrain t2 = terrain(lod);
     verify::LodPatches patches(t2);
     std::vector<Diagnostic> errors;
@@ -187,7 +202,8 @@ TEST_CASE("a uniform, a std140 block and the heightmap sampler are bound from lo
     CHECK_THAT(all, Catch::Contains("sampler 'uHeight' is not bound"));
   }
   SECTION("too few numbers for a matrix is an error naming the key") {
-    lod.uniforms = {{"uScale", {7.25}}, {"M", {1, 2, 3}}, {"R", r}, {"planes", planes}, {"uHeight", {}, "heightmap"}};
+    lod.uniforms = {numbers("uScale", {7.25}), numbers("M", {1, 2, 3}), numbers("R", r), numbers("planes", planes),
+                    named("uHeight", "heightmap")};
     const verify::Terrain t2 = terrain(lod);
     verify::LodPatches patches(t2);
     std::vector<Diagnostic> errors;
@@ -219,9 +235,9 @@ TEST_CASE("the per-camera values are fftess's own, bit for bit", "[gpu_lod][hull
   HullProgram p = program(decl + simpleMain(levels("uPlanes[3].y", "uPlanesGl[4].w", "uPlanesD3d[4].z", "uVP[2][1]",
                                                   "uEye.z", "uNear")));
   verify::Lod lod;
-  lod.uniforms = {{"uPlanes", {}, "frustum_planes"}, {"uPlanesGl", {}, "frustum_planes_gl"},
-                  {"uPlanesD3d", {}, "frustum_planes_d3d"}, {"uVP", {}, "view_projection"}, {"uEye", {}, "eye"},
-                  {"uNear", {}, "near"}};
+  lod.uniforms = {named("uPlanes", "frustum_planes"), named("uPlanesGl", "frustum_planes_gl"),
+                  named("uPlanesD3d", "frustum_planes_d3d"), named("uVP", "view_projection"), named("uEye", "eye"),
+                  named("uNear", "near")};
   const verify::Terrain t = terrain(lod);
   const std::vector<lod::PatchLod> glsl = capture(p, t, cam);
   const float want[6] = {top.y / len, nearGl.w, nearD3d.z, vp[2][1], cam.eye.z, 0};
@@ -235,8 +251,8 @@ TEST_CASE("the per-camera values are fftess's own, bit for bit", "[gpu_lod][hull
                              simpleMain(levels("uPlanes[5].w", "uEye.x + uEye.w * 1000.0", "uViewport.y", "uFar",
                                                "uFov", "uScale")));
   verify::Lod lod2;
-  lod2.uniforms = {{"uPlanes", {}, "frustum_planes"}, {"uEye", {}, "eye"}, {"uViewport", {}, "viewport"},
-                   {"uFar", {}, "far"}, {"uFov", {}, "fov_y"}, {"uScale", {}, "height_scale"}};
+  lod2.uniforms = {named("uPlanes", "frustum_planes"), named("uEye", "eye"), named("uViewport", "viewport"),
+                   named("uFar", "far"), named("uFov", "fov_y"), named("uScale", "height_scale")};
   const std::vector<lod::PatchLod> m2 = capture(more, terrain(lod2), cam);
   CHECK(bitsOf(m2[0].factors[0]) == bitsOf(farGl.w / farLen));
   CHECK(m2[0].factors[1] == cam.eye.x + 1000.0f); // vec4 eye: w = 1
@@ -274,6 +290,16 @@ TEST_CASE("control points reach the shader in lod.corner_order", "[gpu_lod][hull
     CHECK(out[i].factors[5] == patches.corner(i, 1).flat.z);
   }
 
+  SECTION("an input the scene does not bind is an error at its declaration") {
+    p.inputs[0].declared = {"user.tesc", 1, 27};
+    lod.inputs = {{"gl_Position", "position_flat"}};
+    verify::LodPatches ps(terrain(lod));
+    std::vector<Diagnostic> errors;
+    CHECK_FALSE(HullCapture::create(*gContext, p, ps, errors));
+    REQUIRE(errors.size() == 1);
+    CHECK(errors[0].at.line == 1);
+    CHECK_THAT(errors[0].message, Catch::StartsWith("input 'vPos' is not bound: add it to [lod.inputs]"));
+  }
   SECTION("one control point per tile, inputs in a block") {
     HullProgram one = program("in VsOut { vec2 uv; float size; vec2 bounds; } tcIn[];\n" +
                                   simpleMain(levels("tcIn[0].uv.x", "tcIn[0].uv.y", "tcIn[0].size",
@@ -329,7 +355,7 @@ TEST_CASE("a main that calls barrier gets the record inserted before its closing
   verify::Lod lod;
   const std::vector<lod::PatchLod> out = capture(p, terrain(lod), camera());
   for (const lod::PatchLod& l : out)
-    for (int k = 0; k < 6; ++k) CHECK(l.factors[k] == 1.5f + k);
+    for (int k = 0; k < 6; ++k) CHECK(l.factors[k] == 1.5f + static_cast<float>(k));
 
   SECTION("an early return with barrier() is refused with a message") {
     HullProgram r = program("void main() {\n  barrier();\n  if (gl_InvocationID != 0) return;\n  " +
@@ -395,7 +421,7 @@ TEST_CASE("an HLSL cbuffer matrix through glslang and SPIRV-Cross multiplies as 
   vp.kind = Resource::Kind::BlockMember, vp.name = "gViewProj", vp.block = "cbPerFrame";
   p.resources = {vp};
   verify::Lod lod;
-  lod.uniforms = {{"gViewProj", {}, "view_projection"}};
+  lod.uniforms = {named("gViewProj", "view_projection")};
   lod.inputs = {{"POSITION", "position"}};
   const verify::Terrain t = terrain(lod);
   const lod::Camera cam = camera();
@@ -430,7 +456,7 @@ TEST_CASE("cost of one camera on a 64 x 64 and a 128 x 80 grid", "[.cost]") {
   HullProgram p = program(decl + simpleMain(levels("distance(uEye, gl_in[0].gl_Position.xyz)", "uVP[0][0]",
                                                   "uPlanes[0].x", "4.0", "5.0", "6.0")));
   verify::Lod lod;
-  lod.uniforms = {{"uVP", {}, "view_projection"}, {"uPlanes", {}, "frustum_planes"}, {"uEye", {}, "eye"}};
+  lod.uniforms = {named("uVP", "view_projection"), named("uPlanes", "frustum_planes"), named("uEye", "eye")};
   for (const char* x : {"64", "128"}) {
     const verify::Terrain t = terrain(lod, {std::string("layout.patches_x=") + x,
                                             std::string("layout.patches_z=") + (x[0] == '6' ? "64" : "80")});
