@@ -15,7 +15,7 @@
 namespace fftess {
 namespace gltest {
 
-// Every GL entry point the three tools call (EGL 1.5's eglGetProcAddress returns core functions too).
+// Every GL entry point the three tools and gpu_lod/ (hull_capture.cpp, hull_bind.cpp) call (EGL 1.5's eglGetProcAddress returns core functions too).
 #define FFTESS_GL_FUNCTIONS(X)                                                                                        \
   X(PFNGLGETSTRINGPROC, glGetString)                                                                                   \
   X(PFNGLGETERRORPROC, glGetError)                                                                                     \
@@ -65,7 +65,44 @@ namespace gltest {
   X(PFNGLDRAWARRAYSPROC, glDrawArrays)                                                                                 \
   X(PFNGLDISPATCHCOMPUTEPROC, glDispatchCompute)                                                                       \
   X(PFNGLMEMORYBARRIERPROC, glMemoryBarrier)                                                                         \
-  X(PFNGLDETACHSHADERPROC, glDetachShader)
+  X(PFNGLDETACHSHADERPROC, glDetachShader)                                                                             \
+  X(PFNGLDISABLEPROC, glDisable)                                                                                       \
+  X(PFNGLGETPROGRAMINTERFACEIVPROC, glGetProgramInterfaceiv)                                                           \
+  X(PFNGLGETPROGRAMRESOURCENAMEPROC, glGetProgramResourceName)                                                         \
+  X(PFNGLGETPROGRAMRESOURCEIVPROC, glGetProgramResourceiv)                                                             \
+  X(PFNGLUNIFORMBLOCKBINDINGPROC, glUniformBlockBinding)                                                               \
+  X(PFNGLUNIFORM1IPROC, glUniform1i)                                                                                   \
+  X(PFNGLUNIFORM1FVPROC, glUniform1fv)                                                                                 \
+  X(PFNGLUNIFORM2FVPROC, glUniform2fv)                                                                                 \
+  X(PFNGLUNIFORM3FVPROC, glUniform3fv)                                                                                 \
+  X(PFNGLUNIFORM4FVPROC, glUniform4fv)                                                                                 \
+  X(PFNGLUNIFORM1IVPROC, glUniform1iv)                                                                                 \
+  X(PFNGLUNIFORM2IVPROC, glUniform2iv)                                                                                 \
+  X(PFNGLUNIFORM3IVPROC, glUniform3iv)                                                                                 \
+  X(PFNGLUNIFORM4IVPROC, glUniform4iv)                                                                                 \
+  X(PFNGLUNIFORM1UIVPROC, glUniform1uiv)                                                                               \
+  X(PFNGLUNIFORM2UIVPROC, glUniform2uiv)                                                                               \
+  X(PFNGLUNIFORM3UIVPROC, glUniform3uiv)                                                                               \
+  X(PFNGLUNIFORM4UIVPROC, glUniform4uiv)                                                                               \
+  X(PFNGLUNIFORMMATRIX2FVPROC, glUniformMatrix2fv)                                                                     \
+  X(PFNGLUNIFORMMATRIX3FVPROC, glUniformMatrix3fv)                                                                     \
+  X(PFNGLUNIFORMMATRIX4FVPROC, glUniformMatrix4fv)                                                                     \
+  X(PFNGLUNIFORMMATRIX2X3FVPROC, glUniformMatrix2x3fv)                                                                 \
+  X(PFNGLUNIFORMMATRIX2X4FVPROC, glUniformMatrix2x4fv)                                                                 \
+  X(PFNGLUNIFORMMATRIX3X2FVPROC, glUniformMatrix3x2fv)                                                                 \
+  X(PFNGLUNIFORMMATRIX3X4FVPROC, glUniformMatrix3x4fv)                                                                 \
+  X(PFNGLUNIFORMMATRIX4X2FVPROC, glUniformMatrix4x2fv)                                                                 \
+  X(PFNGLUNIFORMMATRIX4X3FVPROC, glUniformMatrix4x3fv)                                                                 \
+  X(PFNGLGENTEXTURESPROC, glGenTextures)                                                                               \
+  X(PFNGLDELETETEXTURESPROC, glDeleteTextures)                                                                         \
+  X(PFNGLBINDTEXTUREPROC, glBindTexture)                                                                               \
+  X(PFNGLACTIVETEXTUREPROC, glActiveTexture)                                                                           \
+  X(PFNGLTEXSTORAGE2DPROC, glTexStorage2D)                                                                             \
+  X(PFNGLTEXSUBIMAGE2DPROC, glTexSubImage2D)                                                                           \
+  X(PFNGLTEXPARAMETERIPROC, glTexParameteri)                                                                           \
+  X(PFNGLPIXELSTOREIPROC, glPixelStorei)                                                                               \
+  X(PFNGLVERTEXATTRIBPOINTERPROC, glVertexAttribPointer)                                                               \
+  X(PFNGLENABLEVERTEXATTRIBARRAYPROC, glEnableVertexAttribArray)
 
 struct GlFunctions {
 #define FFTESS_GL_DECLARE(type, name) type name = nullptr;
