@@ -157,6 +157,24 @@ bool tcsWithEpilogue(const std::string& glsl, int binding, int generatedString, 
   return true;
 }
 
+// A shader of #version 400 to 420 (LearnOpenGL's TCS is 410 core) has no storage blocks and no layout(binding): the
+// record needs GL_ARB_shader_storage_buffer_object and GL_ARB_shading_language_420pack (both in every GL 4.3+
+// driver). They go right after the #version line, which keeps its number; `#line` puts the user's next line back.
+std::string withRecordExtensions(const std::string& glsl) {
+  const std::string code = withoutComments(glsl);
+  const size_t at = code.find("#version");
+  if (at == std::string::npos) return glsl;
+  int version = 0;
+  if (std::sscanf(code.c_str() + at + 8, "%d", &version) != 1 || version >= 430) return glsl;
+  const size_t eol = glsl.find('\n', at);
+  if (eol == std::string::npos) return glsl;
+  const long line = 1 + static_cast<long>(std::count(glsl.begin(), glsl.begin() + static_cast<long>(eol), '\n'));
+  return glsl.substr(0, eol + 1) +
+         "#extension GL_ARB_shader_storage_buffer_object : require\n"
+         "#extension GL_ARB_shading_language_420pack : require\n"
+         "#line " + std::to_string(line + 1) + " 0\n" + glsl.substr(eol + 1);
+}
+
 
 // One line of a driver's info log as a diagnostic: Mesa "S:L(C): error: MSG", NVIDIA "S(L) : error CNNNN: MSG".
 // S (decoded from the line, encodeLineDirectives) indexes the program's sourceFiles (a GLSL TCS); other strings
@@ -277,7 +295,7 @@ bool buildProgram(HullCapture::Impl& m, const HullProgram& hull, const verify::S
   m.ssboBinding = bindings - 1;
   std::string tcs, error;
   const int generated = static_cast<int>(hull.sourceFiles.size() + 1000);
-  if (!tcsWithEpilogue(encodeLineDirectives(hull.glsl), m.ssboBinding, generated, tcs, error)) {
+  if (!tcsWithEpilogue(encodeLineDirectives(withRecordExtensions(hull.glsl)), m.ssboBinding, generated, tcs, error)) {
     errors.push_back(diagnostic({hull.file, 0, 0}, error));
     return false;
   }
