@@ -6,115 +6,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
+#include <sstream>
 
 namespace fftess::gpulod::hull {
-
-namespace {
-
-constexpr const char* kVertexAttribute = "fftessAttribute";
-
-const char* glslType(int components) {
-  static const char* const names[] = {"float", "float", "vec2", "vec3", "vec4"};
-  return names[std::clamp(components, 1, 4)];
-}
-
-const verify::InputBinding* findInput(const verify::Lod& lod, const Input& in) {
-  for (const verify::InputBinding& b : lod.inputs)
-    if (b.name == in.name || (!in.semantic.empty() && b.name == in.semantic)) return &b;
-  return nullptr;
-}
-
-const verify::InputBinding* findInputKey(const verify::Lod& lod, const std::string& key) {
-  for (const verify::InputBinding& b : lod.inputs)
-    if (b.name == key) return &b;
-  return nullptr;
-}
-
-// Control point value `value` (kLodInputValues) of fftess corner c of patch i, as a vec4 (position types w = 1).
-glm::vec4 inputValue(const std::string& value, const verify::LodPatches& patches, size_t i, int c,
-                     const verify::LodInput& in) {
-  if (value == "position") return glm::vec4(in.patch.corners[c], 1.0f);
-  const verify::LodPatches::Corner corner = patches.corner(i, c);
-  if (value == "position_flat") return glm::vec4(corner.flat, 1.0f);
-  if (value == "uv") return glm::vec4(corner.tex, 0.0f, 0.0f);
-  if (value == "bounds_y") return glm::vec4(in.patch.minHeight, in.patch.maxHeight, 0.0f, 0.0f);
-  // patch_size: the flat patch's world size along x
-  return glm::vec4(patches.corner(i, 1).flat.x - patches.corner(i, 0).flat.x, 0.0f, 0.0f, 0.0f);
-}
-
-} // namespace
-
-bool controlPointData(const HullProgram& program, const verify::LodPatches& patches, std::vector<float>& data,
-                      int& slots, std::vector<Diagnostic>& errors) {
-  const verify::Lod& lod = patches.scene().lod;
-  std::vector<std::string> values(1);
-  const verify::InputBinding* position = findInputKey(lod, "gl_Position");
-  values[0] = position ? position->value : "position";
-  for (const Input& in : program.inputs) {
-    if (in.builtin) continue;
-    const verify::InputBinding* b = findInput(lod, in);
-    if (!b) {
-      errors.push_back(diagnostic(in.declared, "input '" + in.name + "' is not bound: add it to [lod.inputs] (one of: "
-                                         "position, position_flat, uv, bounds_y, patch_size)"));
-      continue;
-    }
-    values.push_back(b->value);
-  }
-  if (!errors.empty()) return false;
-  slots = static_cast<int>(values.size());
-  const int n = lod.controlPoints;
-  data.assign(patches.size() * n * slots * 4, 0.0f);
-  float* p = data.data();
-  for (size_t i = 0; i < patches.size(); ++i) {
-    const verify::LodInput in = patches[i];
-    for (int k = 0; k < n; ++k) {
-      const int c = lod.cornerOrder[k];
-      for (const std::string& v : values) {
-        const glm::vec4 x = inputValue(v, patches, i, c, in);
-        std::memcpy(p, &x[0], sizeof x);
-        p += 4;
-      }
-    }
-  }
-  return true;
-}
-
-std::string vertexShaderSource(const HullProgram& program) {
-  std::string decl, body = "  gl_Position = " + std::string(kVertexAttribute) + "0;\n";
-  std::string block, blockName;
-  int slot = 1;
-  auto closeBlock = [&] {
-    if (!blockName.empty()) decl += "out " + blockName + " {\n" + block + "} fftessOut" + blockName + ";\n";
-    block.clear();
-    blockName.clear();
-  };
-  for (const Input& in : program.inputs) {
-    if (in.builtin) continue;
-    const std::string attr = kVertexAttribute + std::to_string(slot);
-    decl += "layout(location = " + std::to_string(slot) + ") in vec4 " + attr + ";\n";
-    static const char* const swizzle[] = {".x", ".x", ".xy", ".xyz", ""};
-    const std::string value = attr + swizzle[std::clamp(in.components, 1, 4)];
-    const size_t dot = in.glslName.find('.');
-    if (dot != std::string::npos) {
-      const std::string name = in.glslName.substr(0, dot), member = in.glslName.substr(dot + 1);
-      if (name != blockName) closeBlock();
-      blockName = name;
-      block += "  " + std::string(glslType(in.components)) + " " + member + ";\n";
-      body += "  fftessOut" + name + "." + member + " = " + value + ";\n";
-    } else {
-      closeBlock();
-      const std::string loc = in.location >= 0 ? "layout(location = " + std::to_string(in.location) + ") " : "";
-      decl += loc + "out " + glslType(in.components) + " " + in.glslName + ";\n";
-      body += "  " + in.glslName + " = " + value + ";\n";
-    }
-    ++slot;
-  }
-  closeBlock();
-  // Attribute location k = controlPointData's slot k (0: gl_Position).
-  const std::string pos = "layout(location = 0) in vec4 " + std::string(kVertexAttribute) + "0;\n";
-  return "#version 450\n" + pos + decl + "void main() {\n" + body + "}\n";
-}
 
 // ---------------------------------------------------------------------------------------------------------------
 // Camera values.
@@ -140,6 +36,9 @@ CameraValues cameraValues(const lod::Camera& camera) {
     for (int c = 0; c < 4; ++c)
       v.projectionD3d[c][2] = 0.5f * camera.projection[c][2] + 0.5f * camera.projection[c][3];
   v.viewProjectionD3d = v.projectionD3d * camera.view;
+  v.projectionVulkan = v.projectionD3d;
+  for (int c = 0; c < 4; ++c) v.projectionVulkan[c][1] = -v.projectionD3d[c][1]; // y down in Vulkan's clip space
+  v.viewProjectionVulkan = v.projectionVulkan * camera.view;
   v.eye = camera.eye;
   v.viewport = camera.viewport;
   v.planesGl = gribbHartmann(v.viewProjection, false);
@@ -207,7 +106,7 @@ TypeInfo typeInfo(GLenum t) {
 
 bool isMatrixValue(const std::string& v) {
   return v == "view" || v == "projection" || v == "view_projection" || v == "projection_d3d" ||
-         v == "view_projection_d3d" || v == "world";
+         v == "view_projection_d3d" || v == "projection_vulkan" || v == "view_projection_vulkan" || v == "world";
 }
 
 const glm::mat4& matrixValue(const std::string& v, const CameraValues& c) {
@@ -217,6 +116,8 @@ const glm::mat4& matrixValue(const std::string& v, const CameraValues& c) {
          : v == "view_projection"     ? c.viewProjection
          : v == "projection_d3d"      ? c.projectionD3d
          : v == "view_projection_d3d" ? c.viewProjectionD3d
+         : v == "projection_vulkan"   ? c.projectionVulkan
+         : v == "view_projection_vulkan" ? c.viewProjectionVulkan
                                       : identity;
 }
 
@@ -224,6 +125,7 @@ const glm::mat4& matrixValue(const std::string& v, const CameraValues& c) {
 struct TerrainValues {
   float heightScale = 0, patchSize = 0;
   verify::Extent extent{};
+  glm::vec2 texSize{0.0f}; // the heightmap's texels across x and z
 };
 
 // A named value that is not a matrix: its elements (count x components) as floats. False when the name is unknown.
@@ -250,6 +152,8 @@ bool vectorValue(const std::string& v, const CameraValues& c, const TerrainValue
   else if (v == "terrain_min") vec({t.extent.minX, t.extent.minZ});
   else if (v == "terrain_size") vec({t.extent.maxX - t.extent.minX, t.extent.maxZ - t.extent.minZ});
   else if (v == "patch_size") vec({t.patchSize});
+  else if (v == "heightmap_size") vec({t.texSize.x, t.texSize.y});
+  else if (v == "heightmap_texel") vec({1.0f / t.texSize.x, 1.0f / t.texSize.y}); // Luna's gTexelCellSpaceU/V
   else return false;
   return true;
 }
@@ -449,6 +353,7 @@ bool UniformBinder::create(const HullProgram& hull, const verify::LodPatches& pa
   scene_ = &patches.scene();
   language_ = hull.language;
   heightScale_ = scene_->displacement.heightScale;
+  texSize_ = glm::vec2(static_cast<float>(scene_->displacement.texWidth), static_cast<float>(scene_->displacement.texHeight));
   extent_ = patches.extent();
   patchSize_ = 0;
   for (size_t i = 0; i < patches.size(); ++i) {
@@ -542,7 +447,7 @@ void UniformBinder::store(const Active& a, const std::vector<float>& v) {
 
 bool UniformBinder::bind(const lod::Camera& camera, std::string& error) {
   const CameraValues c = cameraValues(camera);
-  const TerrainValues t{heightScale_, patchSize_, extent_};
+  const TerrainValues t{heightScale_, patchSize_, extent_, texSize_};
   std::vector<float> v;
   for (const Active& a : active_) {
     if (!a.binding) continue; // an unused block member: zero

@@ -35,6 +35,7 @@ inline Diagnostic diagnostic(SourcePos at, std::string message) {
 //   near = P[3][2] / P[2][2], far = P[3][2] / (P[2][2] + 1) (depth 0..1); P = the projection, glm's [column][row].
 struct CameraValues {
   glm::mat4 view{1.0f}, projection{1.0f}, viewProjection{1.0f}, projectionD3d{1.0f}, viewProjectionD3d{1.0f};
+  glm::mat4 projectionVulkan{1.0f}, viewProjectionVulkan{1.0f}; // D3D's depth range and y flipped (Vulkan clip space)
   glm::vec3 eye{0.0f};
   glm::vec2 viewport{0.0f};
   std::array<glm::vec4, 6> planes{}, planesGl{}, planesD3d{};
@@ -89,6 +90,7 @@ private:
   std::vector<std::vector<unsigned char>> blockBytes_;
   GLuint heightmap_ = 0;
   float heightScale_ = 0, patchSize_ = 0;
+  glm::vec2 texSize_{0.0f}; // the heightmap's texels across x and z
   verify::Extent extent_{};
   const verify::Scene* scene_ = nullptr;
 };

@@ -180,7 +180,7 @@ void checkInput(const HullProgram& p, const verify::Scene& scene, const Input& i
     if (b.name == in.name || (!in.semantic.empty() && b.name == in.semantic)) return;
   const SourcePos at = in.declared.line > 0 ? in.declared : SourcePos{p.file, 0, 0};
   errors.push_back({at, "input '" + in.name + "'" + (in.semantic.empty() ? "" : " (" + in.semantic + ")") +
-                            " is not bound: add it to [lod.inputs] (one of: " + joined(verify::kLodInputValues) + ")"});
+                            " is not bound: add it to [lod.inputs] (one of: " + joined(verify::kLodInputValues) + ", or a constant)"});
 }
 
 void checkPatch(const HullProgram& p, const verify::Scene& scene, std::vector<Diagnostic>& errors) {

@@ -95,7 +95,7 @@ verify::InputBinding input(const std::string& name, const std::string& value) {
 const std::string kValues = "(a number, an array, or one of: view, projection, view_projection, projection_d3d, "
                             "view_projection_d3d, world, eye, viewport, frustum_planes, frustum_planes_gl, "
                             "frustum_planes_d3d, near, far, fov_y, heightmap, height_scale, terrain_min, terrain_size, "
-                            "patch_size)";
+                            "patch_size, heightmap_size, heightmap_texel, projection_vulkan, view_projection_vulkan)";
 
 } // namespace
 
@@ -361,7 +361,7 @@ TEST_CASE("An unbound HLSL input names its semantic and lod.inputs") {
   CHECK(sceneErrors(p, scene) ==
         std::vector<std::string>{data("partitioning_contradicts.hlsl") +
                                  ":1:27: error: input 'PosW' (POSITION) is not bound: add it to [lod.inputs] (one of: "
-                                 "position, position_flat, uv, bounds_y, patch_size)"});
+                                 "position, position_flat, position_xz, uv, bounds_y, patch_size, or a constant)"});
 }
 
 TEST_CASE("The evaluation shader gives the domain and partitioning and a contradiction is an error") {
