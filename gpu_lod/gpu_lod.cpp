@@ -194,6 +194,18 @@ std::string diagnosticError(const std::string& what, const std::vector<hull::Dia
   return what + ":\n" + hull::formatDiagnostics(ds);
 }
 
+// A wrong lod.entry is the scene's mistake: the diagnostic without a place goes to lod.entry's position in the scene.
+void entryAtSceneKey(const vf::Scene& scene, std::vector<hull::Diagnostic>& diags) {
+  for (hull::Diagnostic& d : diags) {
+    if (d.at.line > 0 || d.message.rfind("lod.entry", 0) != 0) continue;
+    const std::string shader = d.at.file;
+    d.at = {scene.source, scene.lod.entryLine, scene.lod.entryColumn};
+    const size_t here = d.message.find("in this file");
+    if (here != std::string::npos) d.message.replace(here, 12, "in " + shader);
+    else d.message += " (lod.shader " + shader + ")";
+  }
+}
+
 // A hull shader as written (hull.h): the front end, the scene against it, then the driver's program. impl's context
 // is created here.
 bool createHull(GpuLodProvider::Impl& impl, const vf::LodPatches& patches, const GpuLodOptions& options,
@@ -203,6 +215,14 @@ bool createHull(GpuLodProvider::Impl& impl, const vf::LodPatches& patches, const
   std::vector<hull::Diagnostic> diags;
   kind = GpuLodError::Shader;
   if (!hull::compileHull(L.shader, L.entry, program, diags)) {
+    entryAtSceneKey(patches.scene(), diags);
+    gltest::ContextOptions co; // the driver's columns where glslang 12 prints none (GLSL)
+    co.order = options.hardware ? gltest::DeviceOrder::HardwareFirst : gltest::DeviceOrder::SoftwareFirst;
+    std::string ignored;
+    if (program.language == hull::Language::Glsl && impl.ctx.create(co, ignored)) {
+      impl.ctx.releaseCurrent();
+      hull::fillColumnsFromDriver(impl.ctx, program, diags);
+    }
     error = diagnosticError(L.shader + ": the hull shader does not compile", diags);
     return false;
   }

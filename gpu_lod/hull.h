@@ -112,6 +112,11 @@ bool readEvaluationShader(const std::string& file, HullProgram& program, std::ve
 // scene's key). True when none.
 bool checkAgainstScene(const HullProgram& program, const verify::Scene& scene, std::vector<Diagnostic>& errors);
 
+// glslang 12 prints no columns: where a diagnostic of a GLSL hull shader has a line and no column, the driver's own
+// compiler (ctx, created, not current) compiles program.glsl and its message on the same file and line gives the
+// column (Mesa prints it; NVIDIA names the token, found on that line). Leaves the rest as it is.
+void fillColumnsFromDriver(gltest::GlContext& ctx, const HullProgram& program, std::vector<Diagnostic>& errors);
+
 // The driver half: built once per command on the provider's context (current while create/evaluate run).
 class HullCapture {
 public:

@@ -11,6 +11,7 @@
 #include <cctype>
 #include <cstdio>
 #include <cstring>
+#include <fstream>
 #include <sstream>
 
 namespace fftess::gpulod::hull {
@@ -231,6 +232,50 @@ bool compileStage(const gltest::GlFunctions& gl, GLuint program, GLenum stage, c
   return false;
 }
 
+// Line `line` (1-based) of `file`, "" when it has none.
+std::string lineOf(const std::string& file, int line) {
+  std::ifstream f(file, std::ios::binary);
+  std::string text;
+  for (int l = 1; l <= line && std::getline(f, text); ++l) {
+  }
+  return text;
+}
+
+// NVIDIA names the token, not the column ("... at token \"foo\""): its first whole-word occurrence on that line of the
+// file, 1-based; 0 when the message names none or the line lacks it.
+int columnOfToken(const Diagnostic& d, const std::string& message) {
+  const size_t at = message.find("at token \"");
+  if (at == std::string::npos || d.at.file.empty() || d.at.line <= 0) return 0;
+  const size_t end = message.find('"', at + 10);
+  if (end == std::string::npos || end == at + 10) return 0;
+  const std::string token = message.substr(at + 10, end - at - 10);
+  const std::string line = lineOf(d.at.file, d.at.line);
+  for (size_t p = line.find(token); p != std::string::npos; p = line.find(token, p + 1)) {
+    const bool start = p == 0 || !isIdent(line[p - 1]), stop = p + token.size() >= line.size() || !isIdent(line[p + token.size()]);
+    if (start && stop) return static_cast<int>(p) + 1;
+  }
+  return 0;
+}
+
+// Mesa's column (seen on Mesa 22.3: 1 + the characters before the token, each run of blanks counted as one) as the
+// column in the file; 0 when it does not land on the start of a token.
+int columnOfMesa(const Diagnostic& d, int mesa) {
+  const std::string line = lineOf(d.at.file, d.at.line);
+  int counted = 1;
+  for (size_t i = 0; i < line.size();) {
+    const bool blank = line[i] == ' ' || line[i] == '\t';
+    if (counted == mesa)
+      return blank || (i > 0 && isIdent(line[i - 1]) && isIdent(line[i])) ? 0 : static_cast<int>(i) + 1;
+    if (blank) {
+      while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
+    } else {
+      ++i;
+    }
+    ++counted;
+  }
+  return 0;
+}
+
 const char* spacingOf(Partitioning p) {
   return p == Partitioning::FractionalOdd ? "fractional_odd_spacing"
          : p == Partitioning::FractionalEven ? "fractional_even_spacing"
@@ -238,6 +283,44 @@ const char* spacingOf(Partitioning p) {
 }
 
 } // namespace
+
+void fillColumnsFromDriver(gltest::GlContext& ctx, const HullProgram& program, std::vector<Diagnostic>& errors) {
+  bool missing = false;
+  for (const Diagnostic& d : errors) missing = missing || (d.at.line > 0 && d.at.column == 0);
+  if (!missing || program.language != Language::Glsl || program.glsl.empty() || !ctx.makeCurrent()) return;
+  const gltest::GlFunctions& gl = ctx.gl;
+  const GLuint shader = gl.glCreateShader(GL_TESS_CONTROL_SHADER);
+  std::string error;
+  const bool ok = gltest::compileShader(gl, shader, encodeLineDirectives(program.glsl), error);
+  gl.glDeleteShader(shader);
+  ctx.releaseCurrent();
+  if (ok) return;
+  // error = "GL shader compile failed: " + LOG + "\n" + source (gl_context.h): the log alone.
+  const std::string prefix = "GL shader compile failed: ";
+  std::string log = error.compare(0, prefix.size(), prefix) == 0 ? error.substr(prefix.size()) : error;
+  log = log.substr(0, log.find("\n#version"));
+  std::vector<Diagnostic> driver;
+  logDiagnostics(program, log, driver);
+  for (Diagnostic& d : errors) {
+    if (d.at.line <= 0 || d.at.column != 0) continue;
+    // Only the driver's message of the same kind: both syntax errors, or the driver's column on glslang's quoted token.
+    const size_t q = d.message.find('\'');
+    const size_t q2 = q == std::string::npos ? q : d.message.find('\'', q + 1);
+    const std::string quoted = q2 == std::string::npos ? "" : d.message.substr(q + 1, q2 - q - 1);
+    for (const Diagnostic& g : driver) {
+      if (g.at.file != d.at.file || g.at.line != d.at.line) continue;
+      const int column = g.at.column > 0 ? columnOfMesa(g, g.at.column) : columnOfToken(g, g.message);
+      const bool syntax = d.message.find("syntax error") != std::string::npos &&
+                          g.message.find("syntax error") != std::string::npos;
+      const std::string line = lineOf(d.at.file, d.at.line);
+      const bool token = !quoted.empty() && column > 0 && line.compare(static_cast<size_t>(column - 1), quoted.size(), quoted) == 0;
+      if (column > 0 && (syntax || token)) {
+        d.at.column = column;
+        break;
+      }
+    }
+  }
+}
 
 namespace {
 

@@ -2,6 +2,8 @@
 // their #includes, glslang's log.
 #include "gpu_lod/hull_front.h"
 
+#include <cctype>
+
 #include <glslang/Public/ResourceLimits.h>
 
 #include <mutex>
@@ -171,8 +173,15 @@ int columnOfToken(const SourceSet& sources, const std::string& file, int line, c
   const size_t start = lineStart(*text, line);
   if (start == std::string::npos) return 0;
   const size_t end = std::min(text->find('\n', start), text->size());
-  const size_t at = text->substr(start, end - start).find(token);
-  return at == std::string::npos ? 0 : static_cast<int>(at) + 1;
+  // The first occurrence that is a whole token where the token is a word ('f' is not the f of "float").
+  const std::string l = text->substr(start, end - start);
+  const auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  const bool isWord = word(token.front()) && word(token.back());
+  for (size_t at = l.find(token); at != std::string::npos; at = l.find(token, at + 1)) {
+    if (!isWord || ((at == 0 || !word(l[at - 1])) && (at + token.size() >= l.size() || !word(l[at + token.size()]))))
+      return static_cast<int>(at) + 1;
+  }
+  return 0;
 }
 
 } // namespace

@@ -155,15 +155,16 @@ bool compileGlsl(const std::string& file, HullProgram& out, std::vector<Diagnost
   shader.setPreamble("#extension GL_GOOGLE_include_directive : enable\n");
   // OpenGL GLSL; glslang accepts Vulkan's layout(set = N, binding = M) there (the driver gets it without the set).
   shader.setEnvInput(glslang::EShSourceGlsl, EShLangTessControl, glslang::EShClientNone, 0);
-  glslang::TProgram program;
-  if (!parseAndLink(shader, program, sources, EShMsgCascadingErrors, 450, ECoreProfile, errors)) return false;
-  program.buildReflection(EShReflectionIntermediateIO | EShReflectionUnwrapIOBlocks);
+  // The driver's text first: a failed parse keeps it (hull::fillColumnsFromDriver compiles it for the columns).
   out.language = Language::Glsl;
   out.file = file;
   out.entry = "main";
   SourceSet expanded;
   out.glsl = expandIncludes(file, text, expanded, 0);
   out.sourceFiles = expanded.files;
+  glslang::TProgram program;
+  if (!parseAndLink(shader, program, sources, EShMsgCascadingErrors, 450, ECoreProfile, errors)) return false;
+  program.buildReflection(EShReflectionIntermediateIO | EShReflectionUnwrapIOBlocks);
   out.outputControlPoints = shader.getIntermediate()->getVertices();
   reflectResources(program, sources, false, out.resources);
   reflectGlslInputs(program, out.glsl, sources, out.inputs);
