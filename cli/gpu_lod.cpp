@@ -101,13 +101,17 @@ std::string FactorDiffTally::text(const vf::Scene& scene, const vf::CheckOptions
   if (auto* p = dynamic_cast<const gpulod::GpuLodProvider*>(opt.factors.get())) {
     out += "  GPU LOD        " + p->description() + " on " + p->renderer() + "\n";
     const double per = p->dispatches() > 0 ? p->dispatchSeconds() / static_cast<double>(p->dispatches()) : 0.0;
-    std::snprintf(buf, sizeof buf,
-                  "                 %lld %s, %.3f ms per camera (upload of the patches once: %.1f ms, "
-                  "program build: %.1f ms)\n",
-                  static_cast<long long>(p->dispatches()),
-                  p->description().rfind("hull shader", 0) == 0 ? "draws through the TCS" : "dispatches", per * 1e3,
-                  p->uploadSeconds() * 1e3,
-                  p->compileSeconds() * 1e3);
+    if (p->description().rfind("hull shader", 0) == 0)
+      std::snprintf(buf, sizeof buf,
+                    "                 %lld cameras drawn through the TCS, %.3f ms per camera (program build and the "
+                    "patches' upload once: %.1f ms)\n",
+                    static_cast<long long>(p->dispatches()), per * 1e3, p->compileSeconds() * 1e3);
+    else
+      std::snprintf(buf, sizeof buf,
+                    "                 %lld dispatches, %.3f ms per camera (upload of the patches once: %.1f ms, "
+                    "program build: %.1f ms)\n",
+                    static_cast<long long>(p->dispatches()), per * 1e3, p->uploadSeconds() * 1e3,
+                    p->compileSeconds() * 1e3);
     out += buf;
     if (p->cpuCameras() > 0) {
       std::snprintf(buf, sizeof buf, "                 the C++ build of the same factors: %.3f ms per camera (one thread)\n",
