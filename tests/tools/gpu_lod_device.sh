@@ -4,7 +4,7 @@
 # C++ build) and for the two example shaders (GLSL, HLSL), with and without the pow2 clamp. The binaries and the
 # shared libraries the host lacks come prebuilt in DIST (fftess, glslangValidator, spirv-cross, lib/):
 #   mkdir -p build-gpudev/dist/lib && cp build/fftess /usr/bin/glslangValidator /usr/bin/spirv-cross build-gpudev/dist/
-#   cp -L /usr/lib/x86_64-linux-gnu/{libEGL.so.1,libGLdispatch.so.0,libmpfr.so.6,libgmp.so.10,libtomlplusplus.so.3} \
+#   cp -L /usr/lib/x86_64-linux-gnu/{libEGL.so.1,libGLdispatch.so.0,libmpfr.so.6,libgmp.so.10,libtomlplusplus.so.3,libspirv-cross-c-shared.so.0} \
 #     build-gpudev/dist/lib/
 #   tests/tools/gpu_lod_device.sh OUTDIR [DIST] [EXTRA fftess options, e.g. --gpu-hardware]
 set -u
@@ -28,3 +28,27 @@ for clamp in pow2 none; do
   run "hlsl_$clamp" docs/examples/gpu_sphere_hlsl.toml --set lod.adjacency_clamp=$clamp
 done
 run cpu_terrain docs/examples/terrain.toml
+# Hull shaders as written (docs/examples/hull; docs/gpu_lod.md "Your hull shader as written"): each example's verdict
+# on 200 flyover cameras, and with the nearest built-in scheme as the C++ reference (the factor drift); the TCS /
+# lodMain twin; the negative fixtures' diagnostics on this driver (the columns come from its compiler).
+near() { # EXAMPLE LAYOUT: the --set arguments of the nearest built-in scheme (docs/examples/hull/README.md)
+  local far=120; [ "$2" = rings ] && far=200
+  case $1 in
+    distance) echo "--set lod.scheme=distance_pow2 --set lod.min_distance=4 --set lod.max_distance=$far" ;;
+    terrain_hs) echo "--set lod.scheme=distance_pow2 --set lod.min_distance=4 --set lod.max_distance=$far --set lod.min_tess=0 --set lod.max_tess=6 --set lod.frustum_cull=true" ;;
+    *) echo "--set lod.scheme=screen_sphere --set lod.target_pixels=8 --set lod.min_factor=1 --set lod.max_factor=64" ;;
+  esac
+}
+for ex in distance frustum_heightmap tile_point terrain_hs; do
+  for layout in grid rings; do
+    run "hull_${ex}_${layout}" "docs/examples/hull/${ex}_${layout}.toml"
+    # shellcheck disable=SC2046
+    run "hull_${ex}_${layout}_near" "docs/examples/hull/${ex}_${layout}.toml" $(near $ex $layout)
+  done
+done
+run hull_twin_tcs tests/oracle/data/hull/twin_tcs.toml --flyover 40
+run hull_twin_lodmain tests/oracle/data/hull/twin_lodmain.toml --flyover 40
+for bad in unbound_uniform missing_sampler partitioning_contradicts wrong_entry syntax_error include_error include_missing; do
+  "$dist/fftess" check "tests/oracle/data/hull/$bad.toml" "${extra[@]}" > "$out/hull_bad_$bad.txt" 2>&1
+  echo "exit $?" >> "$out/hull_bad_$bad.txt"
+done
