@@ -18,6 +18,7 @@ run() { # NAME ARGS...
   local name=$1; shift
   { time "$dist/fftess" sweep "$@" "${extra[@]}" > "$out/$name.txt" 2>&1; } 2> "$out/$name.time"
 }
+if [ -z "${HULL_ONLY:-}" ]; then # HULL_ONLY=1: only the hull shaders' part below
 for scheme in screen_sphere distance_pow2 bonaventura clip_diameter constant; do
   run "builtin_${scheme}_rings" docs/examples/rings_small.toml --set lod.evaluate=gpu --set lod.scheme=$scheme
   run "builtin_${scheme}_terrain" docs/examples/terrain.toml --set lod.evaluate=gpu --set lod.scheme=$scheme
@@ -28,6 +29,7 @@ for clamp in pow2 none; do
   run "hlsl_$clamp" docs/examples/gpu_sphere_hlsl.toml --set lod.adjacency_clamp=$clamp
 done
 run cpu_terrain docs/examples/terrain.toml
+fi
 # Hull shaders as written (docs/examples/hull; docs/gpu_lod.md "Your hull shader as written"): each example's verdict
 # on 200 flyover cameras, and with the nearest built-in scheme as the C++ reference (the factor drift); the TCS /
 # lodMain twin; the negative fixtures' diagnostics on this driver (the columns come from its compiler).
