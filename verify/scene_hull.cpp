@@ -151,6 +151,8 @@ void readHullKeys(Reader& r, const toml::table& t, Lod& L, const std::string& ba
   const char* keys[] = {"entry", "evaluation_shader", "uniforms", "inputs", "control_points", "corner_order",
                         "domain_u", "domain_v"};
   if (L.shader.empty()) {
+    // lod.shader = "" (--set lod.shader='' switches a shader scene to the built-in scheme): the keys stay unread.
+    if (t.get("shader")) return;
     for (const char* k : keys)
       if (const toml::node* n = t.get(k))
         r.fail(p + k, n, "needs lod.shader (a hull shader as written: a GLSL tessellation control shader or an HLSL "

@@ -286,4 +286,10 @@ TEST_CASE("hull shader keys: each mistake is refused naming the key", "[verify][
   }
   const SceneResult plain = loadScene(std::string(FFTESS_EXAMPLES_DIR) + "/grid.toml", {"lod.inputs.p='position'"});
   CHECK_THAT(plain.error, Catch::Contains("lod.inputs") && Catch::Contains("needs lod.shader"));
+  // --set lod.shader='' turns a hull shader scene into the built-in scheme: its hull keys stay unread.
+  const SceneResult builtin = loadScene(std::string(FFTESS_EXAMPLES_DIR) + "/hull/distance_grid.toml",
+                                            {"lod.shader=''", "lod.scheme=distance_pow2"});
+  CHECK(builtin);
+  CHECK(builtin.scene.lod.shader.empty());
+  CHECK(builtin.scene.lod.uniforms.empty());
 }
