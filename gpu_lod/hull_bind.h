@@ -54,6 +54,11 @@ bool controlPointData(const HullProgram& program, const verify::LodPatches& patc
 // or by its name; glslName "Block.member" declares an output block Block with the members in program.inputs' order).
 std::string vertexShaderSource(const HullProgram& program);
 
+// The #version line fftess's vertex and evaluation shaders take: "#version 450", or the TCS's own "#version N es"
+// (GLSL ES: every stage of a program must say the same version). tessellation: for the evaluation shader (ES 3.10
+// needs GL_EXT_tessellation_shader).
+std::string generatedVersion(const HullProgram& program, bool tessellation);
+
 // The uniforms of a linked program bound from [lod.uniforms]: found by GL program introspection (every active
 // uniform, block member and sampler; names "x", "Block.x", arrays "x[0]"), each matched to its binding by name.
 class UniformBinder {

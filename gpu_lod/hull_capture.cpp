@@ -166,7 +166,9 @@ std::string withRecordExtensions(const std::string& glsl) {
   const size_t at = code.find("#version");
   if (at == std::string::npos) return glsl;
   int version = 0;
-  if (std::sscanf(code.c_str() + at + 8, "%d", &version) != 1 || version >= 430) return glsl;
+  char profile[8] = "";
+  const int fields = std::sscanf(code.c_str() + at + 8, "%d %7s", &version, profile);
+  if (fields < 1 || version >= 430 || std::string(profile) == "es") return glsl; // ES 3.10+: storage blocks are core
   const size_t eol = glsl.find('\n', at);
   if (eol == std::string::npos) return glsl;
   const long line = 1 + static_cast<long>(std::count(glsl.begin(), glsl.begin() + static_cast<long>(eol), '\n'));
@@ -383,7 +385,7 @@ bool buildProgram(HullCapture::Impl& m, const HullProgram& hull, const verify::S
     return false;
   }
   const Partitioning p = hull.partitioning ? *hull.partitioning : scene.partitioning;
-  const std::string tes = std::string("#version 450\nlayout(quads, ") + spacingOf(p) +
+  const std::string tes = generatedVersion(hull, true) + "layout(quads, " + spacingOf(p) +
                           ", ccw) in;\nvoid main() { gl_Position = vec4(0.0); }\n";
   m.program = gl.glCreateProgram();
   if (!compileStage(gl, m.program, GL_VERTEX_SHADER, vertexShaderSource(hull), hull, false, errors) ||

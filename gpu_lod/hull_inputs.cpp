@@ -4,6 +4,7 @@
 
 #include <cstdio>
 #include <cstring>
+#include <regex>
 #include <sstream>
 
 namespace fftess::gpulod::hull {
@@ -98,6 +99,15 @@ bool controlPointData(const HullProgram& program, const verify::LodPatches& patc
   return true;
 }
 
+std::string generatedVersion(const HullProgram& program, bool tessellation) {
+  std::smatch m;
+  static const std::regex es(R"((?:^|\n)[ \t]*#[ \t]*version[ \t]+(\d+)[ \t]+es\b)");
+  if (program.language != Language::Glsl || !std::regex_search(program.glsl, m, es)) return "#version 450\n";
+  const int version = std::stoi(m[1]);
+  return "#version " + m[1].str() + " es\n" +
+         (tessellation && version < 320 ? "#extension GL_EXT_tessellation_shader : require\n" : "");
+}
+
 std::string vertexShaderSource(const HullProgram& program) {
   std::string decl, body = "  gl_Position = " + std::string(kVertexAttribute) + "0;\n";
   std::string block, blockName;
@@ -131,7 +141,7 @@ std::string vertexShaderSource(const HullProgram& program) {
   closeBlock();
   // Attribute location k = controlPointData's slot k (0: gl_Position).
   const std::string pos = "layout(location = 0) in vec4 " + std::string(kVertexAttribute) + "0;\n";
-  return "#version 450\n" + pos + decl + "void main() {\n" + body + "}\n";
+  return generatedVersion(program, false) + pos + decl + "void main() {\n" + body + "}\n";
 }
 
 } // namespace fftess::gpulod::hull

@@ -6,7 +6,7 @@
 #   CASE=twin      tests/oracle/data/hull/twin.tesc (a TCS whose control points arrive as a loop, its domain's u along
 #                  +z) and twin.glsl (the same rule as a lodMain file, fftess's corner order): the same stats and verdict
 #                  on tile rings, so control points, levels and edges are mapped right (a wrong lod.domain_u gives ten
-#                  times the cracks)
+#                  times the cracks); twin_es.tesc, the same TCS in GLSL ES 3.10, gives the same findings
 #   CASE=bad       the negative fixtures (tests/oracle/data/hull/*.toml): exit 2, every line before the last one
 #                  diagnostic FILE:LINE:COL: error: MESSAGE, the expected ones among them, the last "fftess: error: ..."
 # No OpenGL context: a visible skip ("HULL-SKIPPED"), a failure when CI is set. Variables: FFTESS, SRC, CASE.
@@ -69,6 +69,11 @@ elseif(CASE STREQUAL "twin")
   findings_of("${out}" lodmain)
   if(NOT tcs_rc EQUAL rc OR NOT tcs STREQUAL lodmain OR NOT tcs MATCHES "cracks +[1-9]")
     message(FATAL_ERROR "hull_twin: the TCS and its lodMain twin differ (exit ${tcs_rc} vs ${rc}):\nTCS:${tcs}\nlodMain:${lodmain}")
+  endif()
+  run(sweep ${data}/twin_es.toml --flyover 40 --threads 2)
+  findings_of("${out}" es)
+  if(NOT es STREQUAL lodmain)
+    message(FATAL_ERROR "hull_twin: the GLSL ES 3.10 TCS differs from its lodMain twin (exit ${rc}): ${err}\nES:${es}\nlodMain:${lodmain}")
   endif()
   message("hull_twin: the TCS (corners as a loop, u along +z) and the lodMain twin agree:${tcs}")
 elseif(CASE STREQUAL "bad")
