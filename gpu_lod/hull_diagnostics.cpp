@@ -65,12 +65,46 @@ const std::string* SourceSet::textOf(const std::string& file) const {
   return nullptr;
 }
 
+// The Effects framework's blocks in an .fx file (Luna's Terrain.fx ships with them), which glslang refuses and which
+// describe no hull shader arithmetic: `technique11 NAME { ... }` (also technique, technique10) and the state
+// objects' initialisers `RasterizerState | DepthStencilState | BlendState NAME { ... };` blanked whole,
+// `SamplerState NAME { ... }` keeping `SamplerState NAME` (fftess's heightmap sampling applies). Blanks keep every
+// newline, so lines and columns stay the file's. Such text is never valid GLSL, so every file goes through this.
+std::string blankEffectsBlocks(std::string text) {
+  static const std::regex block(
+      R"(\b(technique(?:10|11)?|RasterizerState|DepthStencilState|BlendState|SamplerState)\s+\w+\s*\{)");
+  std::smatch m;
+  size_t from = 0;
+  std::string rest;
+  while (std::regex_search(rest = text.substr(from), m, block)) {
+    const size_t start = from + static_cast<size_t>(m.position(0));
+    const size_t open = from + static_cast<size_t>(m.position(0) + m.length(0)) - 1;
+    int depth = 0;
+    size_t close = open;
+    for (; close < text.size(); ++close) {
+      if (text[close] == '{') ++depth;
+      if (text[close] == '}' && --depth == 0) break;
+    }
+    if (close >= text.size()) break; // unbalanced: left to glslang's message
+    size_t end = close + 1;
+    const size_t semi = text.find_first_not_of(" \t\r\n", end);
+    if (semi != std::string::npos && text[semi] == ';') end = semi + 1;
+    const size_t blankFrom = m[1] == "SamplerState" ? open : start;
+    for (size_t i = blankFrom; i < end; ++i)
+      if (text[i] != '\n') text[i] = ' ';
+    if (m[1] == "SamplerState") text[end - 1 >= open ? end - 1 : open] = ';';
+    from = end;
+  }
+  return text;
+}
+
 bool MainSource::read(const std::string& path, SourceSet& sources, std::vector<Diagnostic>& errors) {
   file = path;
   if (!readFile(path, text)) {
     errors.push_back(inFile(path, "cannot read the shader"));
     return false;
   }
+  text = blankEffectsBlocks(text);
   sources.add(file, text);
   return true;
 }
@@ -108,6 +142,7 @@ FileIncluder::IncludeResult* FileIncluder::includeLocal(const char* header, cons
   const std::string path = resolveInclude(header, includer ? includer : "");
   auto text = std::make_unique<std::string>();
   if (!readFile(path, *text)) return nullptr; // glslang: "Could not process include directive for header name"
+  *text = blankEffectsBlocks(*text);
   sources_.add(path, *text);
   kept_.push_back(std::move(text));
   return new IncludeResult(path, kept_.back()->data(), kept_.back()->size(), nullptr);

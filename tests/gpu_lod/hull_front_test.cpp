@@ -405,3 +405,17 @@ TEST_CASE("A triangle domain from the evaluation shader is refused for the scene
         std::vector<std::string>{data("tri.tese") + ":3:8: error: the domain is tri: fftess verifies quad patches "
                                                     "(a terrain's tiles)"});
 }
+
+TEST_CASE("An Effects file keeps its lines with the technique and state blocks blanked for glslang") {
+  // effects.fx: hull.hlsl with a SamplerState initialiser, a RasterizerState and a technique11 block (Luna's .fx form)
+  const HullProgram p = compiled("effects.fx");
+  CHECK(p.language == Language::Hlsl);
+  CHECK(p.entry == "HS");
+  CHECK(p.partitioningAt.line == 56);
+  CHECK(resourcesOf(p) == std::vector<std::string>{"member gEyePosW [cbPerFrame] effects.fx:5:10",
+                                                   "member gMinDist [cbPerFrame] effects.fx:6:9",
+                                                   "member gMaxDist [cbPerFrame] effects.fx:7:9",
+                                                   "member gMaxTess [$Global] effects.fx:11:7",
+                                                   "sampler gHeightMap effects.fx:12:11"});
+  CHECK(p.glsl.find("uniform sampler2D gHeightMap;") != std::string::npos);
+}
