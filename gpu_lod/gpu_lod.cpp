@@ -9,6 +9,7 @@
 
 #include <chrono>
 #include <mutex>
+#include <regex>
 #include <string>
 #include <vector>
 
@@ -123,6 +124,45 @@ bool computeSource(const vf::Lod& L, bool sizeJumps, std::string& source, std::s
   return true;
 }
 
+// A lodMain file takes everything as parameters: a uniform it reads (GLSL `uniform float x;`, an HLSL global or cbuffer
+// member) would read 0 on the compute path, so every active uniform of the linked program (fftess's wrapper declares
+// none) is an error at its declaration in the user's file. False with error ("WHAT:\nDIAGNOSTICS").
+bool refuseUniforms(GpuLodProvider::Impl& impl, const std::string& file, bool hlsl, std::string& error) {
+  const GlFunctions& gl = impl.ctx.gl;
+  GLint count = 0;
+  gl.glGetProgramInterfaceiv(impl.program, GL_UNIFORM, GL_ACTIVE_RESOURCES, &count);
+  if (count <= 0) return true;
+  std::string text, lines;
+  readFile(file, text);
+  for (GLint i = 0; i < count; ++i) {
+    char name[256] = {0};
+    gl.glGetProgramResourceName(impl.program, GL_UNIFORM, static_cast<GLuint>(i), sizeof name, nullptr, name);
+    std::string n = name;
+    const size_t dot = n.find_last_of('.'); // "Block.member" (an HLSL cbuffer or global)
+    if (dot != std::string::npos) n = n.substr(dot + 1);
+    if (n.size() > 3 && n.compare(n.size() - 3, 3, "[0]") == 0) n.resize(n.size() - 3);
+    // Its declaration: the first line naming it as a whole word (after "uniform" in GLSL).
+    int line = 0, column = 0, l = 1;
+    const std::regex word("\\b" + n + "\\b");
+    for (size_t start = 0; start <= text.size() && line == 0; ++l) {
+      const size_t end = std::min(text.find('\n', start), text.size());
+      const std::string t = text.substr(start, end - start);
+      std::smatch m;
+      if ((hlsl || t.find("uniform") != std::string::npos) && std::regex_search(t, m, word)) {
+        line = l;
+        column = static_cast<int>(m.position(0)) + 1;
+      }
+      start = end + 1;
+    }
+    lines += "\n" + file + (line > 0 ? ":" + std::to_string(line) + ":" + std::to_string(column) : std::string()) +
+             ": error: " + (hlsl ? "global or cbuffer member '" : "uniform '") + n +
+             "' in a lodMain file: it would read 0 (lodMain takes everything as parameters; make it a constant, or "
+             "check the shader as written: a hull shader with [lod.uniforms], docs/gpu_lod.md)";
+  }
+  error = file + ": the lodMain file uses uniforms fftess does not set:" + lines;
+  return false;
+}
+
 // Compiles and links `source` on the provider's context (current on return, released by the caller). error names
 // the user's file and line where the driver's log does.
 bool buildProgram(GpuLodProvider::Impl& impl, const vf::Lod& L, const std::string& source, std::string& error,
@@ -164,6 +204,7 @@ bool buildProgram(GpuLodProvider::Impl& impl, const vf::Lod& L, const std::strin
             impl.ctx.renderer() + ":\n" + trimLog(log.c_str());
     return false;
   }
+  if (!file.empty() && !refuseUniforms(impl, file, hlsl, error)) return false;
   gl.glGenBuffers(3, impl.buffers);
   if (!gltest::checkGl(gl, "creating the GPU LOD program", error)) {
     kind = GpuLodError::Gl;

@@ -15,7 +15,8 @@
 #                 the same with a view smaller than the finest sub-rectangle is UNDECIDED (exit 1, listed, in the JSON);
 #                 a distance shader without height bounds (height scale 40) shows holes on random cameras
 #   CASE=bad      bad shaders (tests/oracle/data/gpu_lod): compile error -> exit 2 naming FILE:LINE; no lodMain and a
-#                 wrong signature -> exit 2 with a clear message; a shader yielding NaN -> holes (exit 1)
+#                 wrong signature -> exit 2 with a clear message; a uniform or HLSL global in a lodMain file (it would
+#                 read 0) -> exit 2 at its declaration; a shader yielding NaN -> holes (exit 1)
 # No OpenGL context, or (hlsl) no glslangValidator / spirv-cross: a visible skip ("GPU-LOD-SKIPPED"), a failure when
 # CI is set. Variables: FFTESS (the executable), SRC (the source tree), CASE.
 set(examples ${SRC}/docs/examples)
@@ -107,6 +108,10 @@ elseif(CASE STREQUAL "bad")
   if(NOT rc EQUAL 2 OR NOT err MATCHES "lodMain has the wrong signature")
     message(FATAL_ERROR "gpu_lod_bad: signature.glsl: expected exit 2, 'wrong signature'; got ${rc}: ${err}")
   endif()
+  sweep(${scene} --set lod.shader=${data}/uniform.glsl)
+  if(NOT rc EQUAL 2 OR NOT err MATCHES "uniform.glsl:4:15: error: uniform 'uScale' in a lodMain file: it would read 0")
+    message(FATAL_ERROR "gpu_lod_bad: uniform.glsl: expected exit 2 naming uniform.glsl:4:15; got ${rc}: ${err}")
+  endif()
   sweep(${scene} --set lod.shader=${data}/nan.glsl --set lod.scheme=shader)
   if(NOT rc EQUAL 1 OR NOT out MATCHES "HOLES seen from" OR NOT out MATCHES "discarded by the tessellator: Veq0 factor -?nan")
     message(FATAL_ERROR "gpu_lod_bad: nan.glsl: expected holes (exit 1) from a NaN Veq0; got ${rc}: ${err}\n${out}")
@@ -117,6 +122,10 @@ elseif(CASE STREQUAL "bad")
     sweep(${scene} --set lod.shader=${data}/compile.hlsl)
     if(NOT rc EQUAL 2 OR NOT err MATCHES "compile.hlsl:3: error: 'undefinedThing'")
       message(FATAL_ERROR "gpu_lod_bad: compile.hlsl: expected exit 2 naming compile.hlsl:3 (file:line: error:); got ${rc}: ${err}")
+    endif()
+    sweep(${scene} --set lod.shader=${data}/uniform.hlsl)
+    if(NOT rc EQUAL 2 OR NOT err MATCHES "uniform.hlsl:4:7: error: global or cbuffer member 'gScale' in a lodMain file")
+      message(FATAL_ERROR "gpu_lod_bad: uniform.hlsl: expected exit 2 naming uniform.hlsl:4:7; got ${rc}: ${err}")
     endif()
     sweep(${scene} --set lod.shader=${data}/signature.hlsl)
     if(NOT rc EQUAL 2 OR NOT err MATCHES "lodMain has the wrong signature")
