@@ -1,6 +1,6 @@
 # ctest "oracle:hull *": hull shaders as written (docs/gpu_lod.md "Your hull shader as written") through `fftess sweep`
 # and `fftess check` on the local OpenGL driver (llvmpipe in CI).
-#   CASE=examples  every scene of docs/examples/hull (4 shaders x grid and tile rings, 40 flyover cameras): exit < 2,
+#   CASE=example_NAME  the two scenes of docs/examples/hull/NAME.* (grid and tile rings, 40 flyover cameras): exit < 2,
 #                  the GPU LOD section names the hull shader, and the verdict line is the one measured on llvmpipe
 #                  (tests/oracle/data/hull/verdicts.txt: SCENE|VERDICT LINE)
 #   CASE=twin      tests/oracle/data/hull/twin.tesc (a TCS whose control points arrive as a loop, its domain's u along
@@ -37,11 +37,12 @@ function(findings_of text var)
   set(${var} "${lines}" PARENT_SCOPE)
 endfunction()
 
-if(CASE STREQUAL "examples")
-  file(STRINGS ${data}/verdicts.txt expected)
+if(CASE MATCHES "^example_(.*)$")
+  set(example ${CMAKE_MATCH_1})
+  file(STRINGS ${data}/verdicts.txt expected REGEX "^${example}_(grid|rings)\\.toml\\|")
   list(LENGTH expected n)
-  if(n LESS 8)
-    message(FATAL_ERROR "hull_examples: ${data}/verdicts.txt has ${n} lines, expected one per example scene")
+  if(NOT n EQUAL 2)
+    message(FATAL_ERROR "hull_${CASE}: ${data}/verdicts.txt has ${n} lines for ${example}, expected its grid and rings scenes")
   endif()
   foreach(line ${expected})
     string(FIND "${line}" "|" bar)
@@ -52,15 +53,15 @@ if(CASE STREQUAL "examples")
     if(NOT rc LESS 2 OR NOT out MATCHES "GPU LOD +hull shader [^\n]*${scene}")
       string(REGEX REPLACE "_(grid|rings).toml$" "" shader "${scene}")
       if(NOT rc LESS 2 OR NOT out MATCHES "GPU LOD +hull shader [^\n]*${shader}")
-        message(FATAL_ERROR "hull_examples: ${scene}: exit ${rc}, no hull shader section: ${err}\n${out}")
+        message(FATAL_ERROR "hull_${CASE}: ${scene}: exit ${rc}, no hull shader section: ${err}\n${out}")
       endif()
     endif()
     string(REGEX MATCH "verdict: [^\n]*" got "${out}")
     if(NOT got STREQUAL verdict)
-      message(FATAL_ERROR "hull_examples: ${scene}: verdict\n  '${got}'\nexpected (llvmpipe, verdicts.txt)\n  '${verdict}'")
+      message(FATAL_ERROR "hull_${CASE}: ${scene}: verdict\n  '${got}'\nexpected (llvmpipe, verdicts.txt)\n  '${verdict}'")
     endif()
   endforeach()
-  message("hull_examples: ${n} scenes, each with its measured verdict")
+  message("hull_${CASE}: ${n} scenes, each with its measured verdict")
 elseif(CASE STREQUAL "twin")
   run(sweep ${data}/twin_tcs.toml --flyover 40 --threads 2)
   findings_of("${out}" tcs)
