@@ -293,7 +293,8 @@ TEST_CASE("control points reach the shader in lod.corner_order", "[gpu_lod][hull
   SECTION("an input the scene does not bind is an error at its declaration") {
     p.inputs[0].declared = {"user.tesc", 1, 27};
     lod.inputs = {{"gl_Position", "position_flat"}};
-    verify::LodPatches ps(terrain(lod));
+    const verify::Terrain psTerrain = terrain(lod); // the view must not outlive it
+    verify::LodPatches ps(psTerrain);
     std::vector<Diagnostic> errors;
     CHECK_FALSE(HullCapture::create(*gContext, p, ps, errors));
     REQUIRE(errors.size() == 1);
@@ -360,7 +361,8 @@ TEST_CASE("a main that calls barrier gets the record inserted before its closing
   SECTION("an early return with barrier() is refused with a message") {
     HullProgram r = program("void main() {\n  barrier();\n  if (gl_InvocationID != 0) return;\n  " +
                             levels("1.0", "1.0", "1.0", "1.0", "1.0", "1.0") + "\n}\n");
-    verify::LodPatches patches(terrain(lod));
+    const verify::Terrain patchesTerrain = terrain(lod); // the view must not outlive it
+    verify::LodPatches patches(patchesTerrain);
     std::vector<Diagnostic> errors;
     CHECK_FALSE(HullCapture::create(*gContext, r, patches, errors));
     CHECK_THAT(formatDiagnosticsForTest(errors), Catch::Contains("returns early"));
@@ -439,7 +441,8 @@ TEST_CASE("a driver compile error names the user's file and line", "[gpu_lod][hu
   HullProgram p = program("void main() {\n  gl_TessLevelOuter[0] = 1.0;\n#line 7 1\n  float x = undefinedThing;\n}\n");
   p.sourceFiles.push_back("lib/include.glsl");
   verify::Lod lod;
-  verify::LodPatches patches(terrain(lod));
+  const verify::Terrain patchesTerrain = terrain(lod); // the view must not outlive it
+  verify::LodPatches patches(patchesTerrain);
   std::vector<Diagnostic> errors;
   CHECK_FALSE(HullCapture::create(*gContext, p, patches, errors));
   REQUIRE_FALSE(errors.empty());
