@@ -272,7 +272,7 @@ bool createHull(GpuLodProvider::Impl& impl, const vf::LodPatches& patches, const
     return false;
   }
   if (!hull::checkAgainstScene(program, patches.scene(), diags)) {
-    error = diagnosticError(L.shader + ": the scene does not feed what the hull shader uses (" +
+    error = diagnosticError(L.shader + ": the scene and the hull shader disagree (" +
                                 patches.scene().source + ")", diags);
     return false;
   }

@@ -8,7 +8,8 @@
 #                  on tile rings, so control points, levels and edges are mapped right (a wrong lod.domain_u gives ten
 #                  times the cracks); twin_es.tesc, the same TCS in GLSL ES 3.10, gives the same findings
 #   CASE=bad       the negative fixtures (tests/oracle/data/hull/*.toml): exit 2, every line before the last one
-#                  diagnostic FILE:LINE:COL: error: MESSAGE, the expected ones among them, the last "fftess: error: ..."
+#                  diagnostic FILE:LINE:COL: error: MESSAGE, the expected ones among them, the last "fftess: error: ...";
+#                  an evaluation shader whose spacing contradicts the scene, named at its layout
 # No OpenGL context: a visible skip ("HULL-SKIPPED"), a failure when CI is set. Variables: FFTESS, SRC, CASE.
 cmake_policy(SET CMP0054 NEW)
 set(hull_examples ${SRC}/docs/examples/hull)
@@ -115,6 +116,11 @@ elseif(CASE STREQUAL "bad")
       message(FATAL_ERROR "hull_bad: ${scene}: no line matches '${want}' in:\n${err}")
     endif()
   endforeach()
+  # The evaluation shader's spacing against the scene (frustum_heightmap.tese says equal_spacing).
+  run(check ${hull_examples}/frustum_heightmap_grid.toml "--set=tessellation.partitioning='fractional_odd'")
+  if(NOT rc EQUAL 2 OR NOT err MATCHES "frustum_heightmap.tese:6:15: error: layout\\(equal_spacing\\) contradicts the scene's tessellation.partitioning = \"fractional_odd\"")
+    message(FATAL_ERROR "hull_bad: the evaluation shader's spacing against the scene: expected exit 2 at frustum_heightmap.tese:6:15; got ${rc}:\n${err}")
+  endif()
   run(check ${data}/include.toml)
   if(NOT rc EQUAL 0)
     message(FATAL_ERROR "hull_bad: include.toml (the positive control): exit ${rc}: ${err}")
