@@ -280,6 +280,13 @@ bool createHull(GpuLodProvider::Impl& impl, const vf::LodPatches& patches, const
                      (program.language == hull::Language::Hlsl ? " (HLSL " + program.entry + " -> SPIR-V -> GLSL TCS)"
                                                                : std::string(" (GLSL TCS)")) +
                      " on the driver's tessellation control stage";
+  // The one input with a default (docs/gpu_lod.md): said in the summary, so a scene never relies on it unseen.
+  bool readsPosition = false, boundPosition = false;
+  for (const hull::Input& in : program.inputs) readsPosition = readsPosition || in.builtin;
+  for (const vf::InputBinding& b : L.inputs) boundPosition = boundPosition || b.name == "gl_Position";
+  if (readsPosition && !boundPosition)
+    impl.description += std::string(" (gl_in[].gl_Position: the default, lod.inputs.gl_Position = \"position\": ") +
+                        (L.displacedCorners ? "the corners raised to the terrain)" : "the flat corners)");
   gltest::ContextOptions co;
   co.order = options.hardware ? gltest::DeviceOrder::HardwareFirst : gltest::DeviceOrder::SoftwareFirst;
   co.allowSoftware = !options.hardware;
