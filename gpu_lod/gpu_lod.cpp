@@ -300,6 +300,9 @@ bool createHull(GpuLodProvider::Impl& impl, const vf::LodPatches& patches, const
     error = diagnosticError(L.shader + ": the driver (" + impl.ctx.renderer() + ") refused the hull shader", diags);
     return false;
   }
+  if (const int n = impl.hull->levelWritesRewritten())
+    impl.description += " (llvmpipe: " + std::to_string(n) + " write" + (n == 1 ? "" : "s") +
+                        " of gl_TessLevelOuter/Inner at a dynamic index made constant-index: Mesa 22.3 loses them)";
   kind = GpuLodError::None;
   return true;
 }

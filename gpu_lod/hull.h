@@ -59,6 +59,7 @@ struct Resource {
   std::string glslBlock; // BlockMember: the block's name in HullProgram::glsl (GL introspection names the member
                          // "glslBlock.name"): GLSL the block's; HLSL the cbuffer's, "$Global" -> "_Global"
   SourcePos declared; // its declaration in the user's file(s) (line 0 when unknown)
+  bool storage = false; // a member of a shader storage block (GLSL `buffer`, HLSL (RW)StructuredBuffer): refused
 };
 
 // A per-control-point input of the TCS that fftess's vertex shader must feed ([lod.inputs]); built-ins
@@ -132,6 +133,10 @@ public:
   // lod.domain_u / lod.domain_v). out.size() == patches.size(); why.scheme = Shader, metric 0, unclamped = factor.
   bool evaluate(const verify::LodPatches& patches, const lod::Camera& camera, std::vector<lod::PatchLod>& out,
                 std::string& error);
+
+  // On llvmpipe: the statements writing gl_TessLevelOuter / Inner at a dynamic index that were made constant-index
+  // (Mesa 22.3 loses such writes from several invocations; docs/gpu_lod.md); 0 elsewhere.
+  int levelWritesRewritten() const;
 
   struct Impl;
   explicit HullCapture(std::unique_ptr<Impl> impl);

@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <regex>
 #include <sstream>
 
 namespace fftess::gpulod::hull {
@@ -156,6 +157,48 @@ bool tcsWithEpilogue(const std::string& glsl, int binding, int generatedString, 
   out = glsl.substr(0, voidAt) + ssbo + glsl.substr(voidAt, close - voidAt) + " barrier(); " +
         recordStatements() + glsl.substr(close);
   return true;
+}
+
+// llvmpipe (Mesa 22.3) loses writes to gl_TessLevelOuter / gl_TessLevelInner at a dynamic index when several
+// invocations write (measured: invocation i writing gl_TessLevelOuter[gl_InvocationID] = i + 1 left [0, 0, 0, 4]; with
+// constant indices, or through a function that branches to constant-index writes, all four arrive; NVIDIA has no such
+// loss, docs/gpu_lod.md). Each statement `gl_TessLevel{Outer,Inner}[INDEX] = VALUE;` whose INDEX is not a literal
+// becomes `fftessSet{Outer,Inner}(int(INDEX), VALUE);` on its own line, and the two setters go after the #version and
+// #extension lines (a `#line` keeps the user's numbering): the GLSL meaning is the same. count: statements rewritten.
+std::string constantLevelWrites(const std::string& glsl, int& count) {
+  static const std::regex write(R"(gl_TessLevel(Outer|Inner)\s*\[\s*([^\]\[;]+?)\s*\]\s*=(?!=)\s*([^;]+);)");
+  std::string out;
+  count = 0;
+  auto from = glsl.cbegin();
+  for (std::sregex_iterator it(glsl.begin(), glsl.end(), write), end; it != end; ++it) {
+    const std::smatch& m = *it;
+    const std::string index = m[2];
+    out.append(from, m[0].first);
+    if (index.find_first_not_of("0123456789u") == std::string::npos) out += m[0].str();
+    else {
+      out += "fftessSet" + m[1].str() + "(int(" + index + "), " + m[3].str() + ");";
+      ++count;
+    }
+    from = m[0].second;
+  }
+  out.append(from, glsl.cend());
+  if (count == 0) return glsl;
+  // After the last #version / #extension line (directives must come first), numbered back with #line.
+  static const std::regex head(R"((^|\n)[ \t]*#[ \t]*(version|extension)[^\n]*)");
+  size_t at = 0;
+  for (std::sregex_iterator it(out.begin(), out.end(), head), end; it != end; ++it)
+    at = static_cast<size_t>(it->position(0) + it->length(0));
+  if (at == 0 || at >= out.size()) return glsl;
+  const long next = 2 + static_cast<long>(std::count(out.begin(), out.begin() + static_cast<long>(at), '\n'));
+  std::string setters;
+  for (const char* kind : {"Outer", "Inner"}) {
+    setters += std::string("void fftessSet") + kind + "(int i, float v) {";
+    for (int k = 0; k < (kind[0] == 'O' ? 4 : 2); ++k)
+      setters += std::string(k ? " else" : "") + " if (i == " + std::to_string(k) + ") { gl_TessLevel" + kind + "[" +
+                 std::to_string(k) + "] = v; }";
+    setters += " }\n";
+  }
+  return out.substr(0, at + 1) + setters + "#line " + std::to_string(next) + " 0\n" + out.substr(at + 1);
 }
 
 // A shader of #version 400 to 420 (LearnOpenGL's TCS is 410 core) has no storage blocks and no layout(binding): the
@@ -347,6 +390,7 @@ struct HullCapture::Impl {
   std::array<int, 6> targets{};
   std::unique_ptr<UniformBinder> binder;
   std::vector<uint32_t> words;
+  int levelWritesRewritten = 0; // llvmpipe: dynamically indexed level writes made constant-index (constantLevelWrites)
 };
 
 HullCapture::HullCapture(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
@@ -380,7 +424,9 @@ bool buildProgram(HullCapture::Impl& m, const HullProgram& hull, const verify::S
   m.ssboBinding = bindings - 1;
   std::string tcs, error;
   const int generated = static_cast<int>(hull.sourceFiles.size() + 1000);
-  if (!tcsWithEpilogue(encodeLineDirectives(withRecordExtensions(hull.glsl)), m.ssboBinding, generated, tcs, error)) {
+  const std::string user =
+      m.ctx->isLlvmpipe() ? constantLevelWrites(hull.glsl, m.levelWritesRewritten) : hull.glsl;
+  if (!tcsWithEpilogue(encodeLineDirectives(withRecordExtensions(user)), m.ssboBinding, generated, tcs, error)) {
     errors.push_back(diagnostic({hull.file, 0, 0}, error));
     return false;
   }
@@ -446,6 +492,8 @@ std::unique_ptr<HullCapture> HullCapture::create(gltest::GlContext& ctx, const H
   }
   return std::make_unique<HullCapture>(std::move(capture.impl_));
 }
+
+int HullCapture::levelWritesRewritten() const { return impl_->levelWritesRewritten; }
 
 bool HullCapture::evaluate(const verify::LodPatches& patches, const lod::Camera& camera,
                            std::vector<lod::PatchLod>& out, std::string& error) {

@@ -154,6 +154,12 @@ std::string described(const Resource& r, Language lang) {
 void checkResource(const HullProgram& p, const verify::Scene& scene, const Resource& r,
                    std::vector<Diagnostic>& errors) {
   const SourcePos at = r.declared.line > 0 ? r.declared : SourcePos{p.file, 0, 0};
+  if (r.storage) { // a storage buffer would read what nothing wrote: refused, not bound
+    errors.push_back({at, "member '" + r.name + "' of storage buffer '" + r.block + "': fftess binds uniforms, uniform "
+                              "blocks / cbuffers and the heightmap, not storage buffers (the shader would read data "
+                              "fftess does not have; pass it as a uniform array to check this shader)"});
+    return;
+  }
   const verify::UniformBinding* b = bindingOf(scene, r);
   const bool sampler = r.kind == Resource::Kind::Sampler;
   const std::string key = r.block.empty() || r.block == "$Global" ? r.name : r.name + "' or '" + r.block + "." + r.name;
@@ -177,7 +183,7 @@ void checkResource(const HullProgram& p, const verify::Scene& scene, const Resou
 void checkInput(const HullProgram& p, const verify::Scene& scene, const Input& in, std::vector<Diagnostic>& errors) {
   if (in.builtin) return; // gl_Position / SV_Position: the input bound to "gl_Position", else "position"
   for (const verify::InputBinding& b : scene.lod.inputs)
-    if (b.name == in.name || (!in.semantic.empty() && b.name == in.semantic)) return;
+    if (b.name == in.name || b.name == in.glslName || (!in.semantic.empty() && b.name == in.semantic)) return;
   const SourcePos at = in.declared.line > 0 ? in.declared : SourcePos{p.file, 0, 0};
   errors.push_back({at, "input '" + in.name + "'" + (in.semantic.empty() ? "" : " (" + in.semantic + ")") +
                             " is not bound: add it to [lod.inputs] (one of: " + joined(verify::kLodInputValues) + ", or a constant)"});

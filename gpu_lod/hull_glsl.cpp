@@ -113,6 +113,8 @@ void reflectResources(glslang::TProgram& program, const SourceSet& sources, bool
     if (u.index >= 0) {
       r.kind = Resource::Kind::BlockMember;
       r.block = program.getUniformBlock(u.index).name;
+      const glslang::TType* bt = program.getUniformBlock(u.index).getType();
+      r.storage = bt && bt->getQualifier().storage == glslang::EvqBuffer;
       r.glslBlock = r.block;
       for (char& c : r.glslBlock) // SPIRV-Cross's names: [A-Za-z0-9_]
         if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_') c = '_';

@@ -20,7 +20,7 @@ const char* glslType(int components) {
 
 const verify::InputBinding* findInput(const verify::Lod& lod, const Input& in) {
   for (const verify::InputBinding& b : lod.inputs)
-    if (b.name == in.name || (!in.semantic.empty() && b.name == in.semantic)) return &b;
+    if (b.name == in.name || b.name == in.glslName || (!in.semantic.empty() && b.name == in.semantic)) return &b;
   return nullptr;
 }
 

@@ -419,3 +419,16 @@ TEST_CASE("An Effects file keeps its lines with the technique and state blocks b
                                                    "sampler gHeightMap effects.fx:12:11"});
   CHECK(p.glsl.find("uniform sampler2D gHeightMap;") != std::string::npos);
 }
+
+TEST_CASE("A storage buffer the shader reads is refused and a block input binds as Block.member") {
+  // storage_buffer.tesc: `buffer LodData { float bias[]; }` (fftess would have nothing to put there) and the input
+  // block VS_OUT, bound by "VS_OUT.pos"
+  const HullProgram p = compiled("storage_buffer.tesc");
+  verify::Scene scene;
+  scene.lod.inputs = {input("VS_OUT.pos", "position"), input("VS_OUT.uv", "uv")};
+  CHECK(sceneErrors(p, scene) ==
+        std::vector<std::string>{data("storage_buffer.tesc") +
+                                 ":3:61: error: member 'bias' of storage buffer 'LodData': fftess binds uniforms, "
+                                 "uniform blocks / cbuffers and the heightmap, not storage buffers (the shader would "
+                                 "read data fftess does not have; pass it as a uniform array to check this shader)"});
+}

@@ -6,7 +6,9 @@
 #   CASE=twin      tests/oracle/data/hull/twin.tesc (a TCS whose control points arrive as a loop, its domain's u along
 #                  +z) and twin.glsl (the same rule as a lodMain file, fftess's corner order): the same stats and verdict
 #                  on tile rings, so control points, levels and edges are mapped right (a wrong lod.domain_u gives ten
-#                  times the cracks); twin_es.tesc, the same TCS in GLSL ES 3.10, gives the same findings
+#                  times the cracks); twin_es.tesc, the same TCS in GLSL ES 3.10, and
+#                  twin_per_invocation.tesc (each invocation writes gl_TessLevelOuter[gl_InvocationID]) give the same
+#                  findings
 #   CASE=bad       the negative fixtures (tests/oracle/data/hull/*.toml): exit 2, every line before the last one
 #                  diagnostic FILE:LINE:COL: error: MESSAGE, the expected ones among them, the last "fftess: error: ...";
 #                  an evaluation shader whose spacing contradicts the scene, named at its layout
@@ -89,6 +91,11 @@ elseif(CASE STREQUAL "twin")
   findings_of("${out}" es)
   if(NOT es STREQUAL lodmain)
     message(FATAL_ERROR "hull_twin: the GLSL ES 3.10 TCS differs from its lodMain twin (exit ${rc}): ${err}\nES:${es}\nlodMain:${lodmain}")
+  endif()
+  run(sweep ${data}/twin_per_invocation.toml --flyover 40 --threads 2)
+  findings_of("${out}" per_invocation)
+  if(NOT per_invocation STREQUAL lodmain)
+    message(FATAL_ERROR "hull_twin: the TCS writing gl_TessLevelOuter[gl_InvocationID] differs from its lodMain twin (exit ${rc}): ${err}\nTCS:${per_invocation}\nlodMain:${lodmain}")
   endif()
   message("hull_twin: the TCS (corners as a loop, u along +z) and the lodMain twin agree:${tcs}")
 elseif(CASE STREQUAL "bad")
