@@ -384,22 +384,24 @@ bool checkEdgePair(const CameraCheck& c, EdgeScratch& s, size_t ia, int e, size_
   part.eb = kOpposite[e];
   const EdgePoints& pa = *c.cache.ep[ia][e];
   const EdgePoints& pbp = *c.cache.ep[ib][part.eb];
-  // The part of A's edge that B covers, in A's edge parameter.
-  if (B.size != A.size) {
-    const bool alongX = e == Veq0 || e == Veq1;
-    const int64_t off = alongX ? B.ux - A.ux : B.uz - A.uz;
-    part.lo = off == 0 ? 0.0f : 0.5f;
-    part.hi = part.lo + 0.5f;
-  }
+  // The part of A's edge that B covers: [off, off + B.size] of A's [0, A.size] in base units. A point of A at edge
+  // parameter t (a float) lies in it when off <= t * A.size <= off + B.size, decided exactly (t has 24 bits and the
+  // sizes fewer than 29, so the products are exact in double).
+  const bool alongX = e == Veq0 || e == Veq1;
+  const int64_t off = B.size != A.size ? (alongX ? B.ux - A.ux : B.uz - A.uz) : 0;
+  const double sizeA = static_cast<double>(A.size), lo = static_cast<double>(off);
+  const double hi = static_cast<double>(off + std::min(B.size, A.size));
+  part.lo = static_cast<float>(lo / sizeA);
+  part.hi = static_cast<float>(hi / sizeA);
   part.first = 0;
   part.last = pa.count; // [first, last)
-  // The parameters the points were taken at (MirrorEdge changes them).
-  auto paramA = [&](int j) {
+  // The parameters the points were taken at (MirrorEdge changes them), in base units along A's edge.
+  auto unitsA = [&](int j) {
     const DomainPoint& d = s.domA[static_cast<size_t>(j)];
-    return e == Ueq0 || e == Ueq1 ? d.v : d.u;
+    return static_cast<double>(e == Ueq0 || e == Ueq1 ? d.v : d.u) * sizeA;
   };
-  while (part.first < pa.count && paramA(part.first) < part.lo) ++part.first;
-  while (part.last > part.first && paramA(part.last - 1) > part.hi) --part.last;
+  while (part.first < pa.count && unitsA(part.first) < lo) ++part.first;
+  while (part.last > part.first && unitsA(part.last - 1) > hi) --part.last;
   const int na = part.last - part.first;
   const glm::vec3* a = s.fullA.data() + part.first;
   edgeWorld(c, ib, part.eb, pbp, s.pb, &s.domB, s.shareHeights ? a : nullptr, na);
@@ -427,7 +429,7 @@ bool checkEdgePair(const CameraCheck& c, EdgeScratch& s, size_t ia, int e, size_
   return true;
 }
 
-// Stage 5: every shared edge, once: edge e of patch ia with its partners across it (two half-size neighbours, or one
+// Stage 5: every shared edge, once: edge e of patch ia with its partners across it (the smaller neighbours, or one
 // of the same size with a higher index; the bigger side or the lower index handles an edge). Pairs with a side not
 // drawn are skipped (Stats::skippedCulled). False when checkEdgePair ended the check.
 bool checkSharedEdges(const CameraCheck& c) {
@@ -444,21 +446,15 @@ bool checkSharedEdges(const CameraCheck& c) {
   for (size_t ia = 0; ia < t.patches.size(); ++ia) {
     const TerrainPatch& A = t.patches[ia];
     for (int e = 0; e < 4; ++e) {
-      int partners[2] = {-1, -1};
-      const int n0 = A.nb[e][0], n1 = A.nb[e][1];
-      if (n0 < 0) continue;
-      if (n1 >= 0) {
-        partners[0] = n0; // two half-size neighbours
-        partners[1] = n1;
-      } else if (t.patches[n0].size == A.size && n0 > static_cast<int>(ia)) {
-        partners[0] = n0;
-      } else {
+      const int32_t* first = t.neighboursBegin(A, e);
+      const int32_t* last = t.neighboursEnd(A, e);
+      if (first == last) continue;
+      const TerrainPatch& B0 = t.patches[static_cast<size_t>(*first)];
+      if (B0.size > A.size || (B0.size == A.size && *first < static_cast<int>(ia)))
         continue; // the bigger side or the lower index handles this edge
-      }
       bool fullDone = false;
-      for (int k = 0; k < 2; ++k) {
-        const int ib = partners[k];
-        if (ib < 0) continue;
+      for (const int32_t* k = first; k != last; ++k) {
+        const int ib = *k;
         if (culled[ia] || culled[ib]) {
           ++c.rep.stats.skippedCulled;
           continue;
@@ -476,10 +472,16 @@ bool checkSharedEdges(const CameraCheck& c) {
 
 } // namespace
 
-Report checkTerrain(const TerrainData& t, const Camera& camera, const CheckOptions& options, EdgeCache& cache) {
+Report checkTerrain(const TerrainData& prepared, const Camera& camera, const CheckOptions& options, EdgeCache& cache) {
   Report rep;
   cache.newCamera(); // no EdgePoints reference outlives a camera
   if (!validateCamera(camera, rep.error)) return rep;
+  // A camera-dependent layout (quadtree): this camera's patches, selected into the per-thread scratch.
+  if (prepared.quadtree) {
+    if (!cache.layout) cache.layout = std::make_unique<TerrainData>();
+    cameraLayout(prepared, camera, *cache.layout, rep.work);
+  }
+  const TerrainData& t = prepared.quadtree ? *cache.layout : prepared;
   rep.stats.patches = static_cast<int64_t>(t.patches.size());
   if (!evaluateFactors(t, camera, options, cache, rep)) return rep;
   const lod::Camera lodCamera = toLodCamera(camera);

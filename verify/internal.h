@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <string>
 #include <deque>
+#include <memory>
 #include <vector>
 
 namespace fftess::verify::detail {
@@ -51,14 +52,21 @@ std::vector<MipLevel> buildMipChain(const std::vector<float>& texels, int width,
 // ---------------------------------------------------------------------------------------------------------------
 // layout.cpp: the prepared terrain.
 
+struct QuadtreeNodes; // layout_quadtree.cpp
+
 struct TerrainPatch {
   PatchRef ref;
   int64_t ux = 0, uz = 0;       // lower corner in base units (smallest patch size) from the terrain's min corner
   int64_t size = 1;             // in base units (2^level)
   glm::vec3 corners[4];         // flat corners (y = 0), corners[u + 2v] (lod.h's convention)
   float tex[4][2];              // corner texture coordinates (domain.height_uv = interpolated)
-  // Neighbours across each edge (FactorIndex order): up to two patch indices, -1 where none.
+  // Neighbours across each edge (FactorIndex order): the patch just across the edge's start and the one just across
+  // its end (-1 where none; [1] is -1 when the same patch holds both ends).
   std::array<std::array<int, 2>, 4> nb{{{-1, -1}, {-1, -1}, {-1, -1}, {-1, -1}}};
+  // Every neighbour across each edge, in order along the edge: TerrainData::neighbourList[nbFirst[e] ..
+  // nbFirst[e] + nbCount[e]) (one of the same or a larger size, or several smaller ones; layouts nest edges).
+  std::array<int32_t, 4> nbFirst{{0, 0, 0, 0}};
+  std::array<int32_t, 4> nbCount{{0, 0, 0, 0}};
   lod::Patch lod;               // what lod/ sees: corners raised to their heights (lod.displaced_corners), bounds
   // Bounds of the true displaced surface's y (the texels the footprint samples, times height_scale, padded for
   // float rounding): the hole check's visibility box (visibility.h, Hole). [0, 0] on flat terrain.
@@ -68,6 +76,14 @@ struct TerrainPatch {
 
 // The scene key that sets the patch size of its layout ("layout.base_patch_size", ...), for messages.
 const char* patchSizeKey(const Scene& s);
+// lod.height_bounds = "per_patch": the lowest and highest texel any bilinear sample of p's footprint can read, on
+// every level the scene samples (0..1, before height_scale). Displacement must not be None.
+void patchTexelRange(const Displacement& d, const TerrainPatch& p, float& lo, float& hi);
+// What lod/ sees of every patch (corner heights sampled into t.geometry and p.lod, height bounds) and, with
+// t.adjacency, prepareNeighbours. Needs the patches' corners, tex and links.
+void prepareLod(TerrainData& t);
+// Every patch's surfaceMinY / surfaceMaxY (the hole check's box).
+void prepareSurfaceBounds(TerrainData& t);
 
 struct TerrainData {
   Scene scene;
@@ -77,9 +93,56 @@ struct TerrainData {
   float invSizeX = 1, invSizeZ = 1; // 1 / extent size, float
   int64_t unitsX = 0, unitsZ = 0;   // extent in base units
   double unit = 1;                  // world size of a base unit
-  bool adjacency = false;           // patches of different sizes exist (tile rings with rings > 1)
+  bool adjacency = false;           // patches of different sizes may meet (tile rings with rings > 1, quadtree,
+                                    // patches with sizes that differ): the LOD's neighbour rule runs
+  std::vector<int32_t> neighbourList; // TerrainPatch::nbFirst / nbCount index it
+  // layout.kind = "quadtree": the camera-independent node pyramid (layout_quadtree.cpp), shared by every camera's
+  // layout; patches then hold one camera's leaves (prepareTerrain: the scene camera's; cameraLayout: any camera's).
+  std::shared_ptr<const QuadtreeNodes> quadtree;
   WorkStats work;                   // the build's work
+  // The neighbours across edge e of p, in order along the edge.
+  const int32_t* neighboursBegin(const TerrainPatch& p, int e) const { return neighbourList.data() + p.nbFirst[e]; }
+  const int32_t* neighboursEnd(const TerrainPatch& p, int e) const {
+    return neighbourList.data() + p.nbFirst[e] + p.nbCount[e];
+  }
 };
+
+// ---------------------------------------------------------------------------------------------------------------
+// layout_links.cpp: neighbours from the integer lattice (any layout whose patches are squares at integer base-unit
+// positions with nesting edges: an edge meets one patch of the same or a larger size, or several smaller ones).
+
+// Fills every patch's nb, nbFirst / nbCount and t.neighbourList from ux, uz and size (patches sorted along each
+// grid line; O(n log n)). False with error naming the two patches when edges overlap without nesting or patches
+// overlap (a "patches" layout refuses that; quadtree leaves never do).
+bool linkLattice(TerrainData& t, std::string& error);
+// Fills neighbourList / nbFirst / nbCount from nb (the end neighbours), for layouts whose edges meet at most two
+// patches (grid, tile rings, heightmap grid).
+void listEndNeighbours(TerrainData& t);
+// The LOD's neighbour inputs of every patch from the links (TerrainPatch::tile: the size across each edge relative to
+// the patch, 0.5 / 2 with the parity, far corner and rebuilt height lod/ reads, or the true ratio (4, 0.25, ...) where
+// a jump exceeds 2x, which lod/ treats as 1: its neighbour rule handles 2x jumps). Samples rebuilt heights into
+// t.work (lod.reconstruction = "resampled").
+void prepareNeighbours(TerrainData& t);
+
+// ---------------------------------------------------------------------------------------------------------------
+// layout_quadtree.cpp: layout.kind = "quadtree".
+
+// Builds the node pyramid (t.quadtree: every node's corners, heights, LOD bounds and surface bounds, sampled once)
+// and selects the scene camera's leaves into t (cameraLayout). False with error naming the layout key.
+bool prepareQuadtree(TerrainData& t, std::string& error);
+// The layout camera `camera` sees: out becomes a copy of prepared's camera-independent state (scene, extent, node
+// pyramid: shared, not copied once out holds them) with the camera's leaves as patches, linked, with their
+// neighbour inputs. out is a scratch reused from camera to camera (no allocation once warm). Adds the selection's
+// work to work (WorkStats::layoutNodes). prepared: a quadtree terrain.
+void cameraLayout(const TerrainData& prepared, const Camera& camera, TerrainData& out, WorkStats& work);
+
+// ---------------------------------------------------------------------------------------------------------------
+// layout_patches.cpp: layout.kind = "patches".
+
+// The patches of scene.layout.patchList on their integer lattice (the coordinates' common dyadic step), linked
+// (linkLattice). False with error "FILE:LINE: what is wrong" for a patch that is not an axis-aligned square, patches
+// that overlap or leave a gap inside their bounding rectangle, edges that meet without nesting.
+bool buildPatchesLayout(const Scene& s, TerrainData& t, std::string& error);
 
 // The same point, compared with == per component (+0 equals -0, NaN equals nothing): the check's "same bits" for
 // points that are never NaN once finite() holds. finite: every component finite.
@@ -172,6 +235,7 @@ public:
   size_t size() const { return used_; }
 
   // Scratch of checkTerrain (contents meaningless between calls).
+  std::unique_ptr<TerrainData> layout; // layout.kind = "quadtree": the camera's layout (cameraLayout)
   std::vector<lod::PatchLod> factors;
   std::vector<std::array<const EdgePoints*, 4>> ep;
   std::vector<char> culled;

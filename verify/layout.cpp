@@ -48,9 +48,14 @@ struct Builder {
 } // namespace
 
 const char* patchSizeKey(const Scene& s) {
-  return s.layout.kind == LayoutKind::TileRings ? "layout.base_patch_size"
-         : s.layout.kind == LayoutKind::Grid    ? "layout.patch_size"
-                                                : "layout.cell_size";
+  switch (s.layout.kind) {
+  case LayoutKind::TileRings: return "layout.base_patch_size";
+  case LayoutKind::Grid: return "layout.patch_size";
+  case LayoutKind::HeightmapGrid: return "layout.cell_size";
+  case LayoutKind::Quadtree: return "layout.root_size";
+  case LayoutKind::Patches: return "layout.file";
+  }
+  return "layout";
 }
 
 namespace {
@@ -160,6 +165,7 @@ bool buildLayout(const Scene& s, TerrainData& t, std::string& error) {
     error = "displacement: texture not loaded (use loadScene / parseScene)";
     return false;
   }
+  if (L.kind == LayoutKind::Patches) return buildPatchesLayout(s, t, error);
   Builder b{s, t, 1, 1, 1, 0, {}, 0, 0};
   const bool reconstructed = L.corners == CornerMode::Reconstructed;
 
@@ -243,11 +249,12 @@ bool buildLayout(const Scene& s, TerrainData& t, std::string& error) {
   }
 
   linkNeighbours(b, t);
+  listEndNeighbours(t);
   return true;
 }
 
 
-void prepareNeighbours(TerrainData& t);
+} // namespace
 
 // lod.height_bounds = "per_patch" (Luna's BoundsY): the lowest and highest texel value any bilinear sample of the
 // patch can blend, on every level the scene samples. The patch's texture coordinates span [a, b] (its corners',
@@ -335,42 +342,7 @@ void prepareSurfaceBounds(TerrainData& t) {
   }
 }
 
-// Tile rings with size jumps: the neighbour sizes, parity and far corners lod::nvidiaTile needs.
-void prepareNeighbours(TerrainData& t) {
-  const Scene& s = t.scene;
-  const bool raise = s.lod.displacedCorners && s.displacement.kind != DisplacementKind::None;
-  const bool resample = raise && s.lod.screenSphere.reconstruction == lod::Reconstruction::Resampled;
-  for (TerrainPatch& p : t.patches) {
-    lod::TileNeighbours& tn = p.tile;
-    tn.oddU = ((p.ux / p.size) & 1) != 0;
-    tn.oddV = ((p.uz / p.size) & 1) != 0;
-    for (int e = 0; e < 4; ++e) {
-      const int n0 = p.nb[e][0];
-      if (n0 < 0) continue; // outer border
-      const TerrainPatch& q = t.patches[static_cast<size_t>(n0)];
-      if (p.nb[e][1] >= 0 || q.size < p.size) {
-        tn.size[e] = 0.5f;
-      } else if (q.size > p.size) {
-        tn.size[e] = 2.0f;
-        // The far end of the larger neighbour's edge: its corner on the shared edge not shared with us.
-        const int oe = kOpposite[e];
-        const bool alongX = e == Veq0 || e == Veq1;
-        const int64_t lo = alongX ? p.ux : p.uz;
-        const int64_t qlo = alongX ? q.ux : q.uz;
-        const int farIdx = (qlo == lo) ? kEdgeCorners[oe][1] : kEdgeCorners[oe][0];
-        tn.farCorner[e] = q.lod.corners[farIdx];
-        // lod.reconstruction = "resampled": the height the vertex shader would sample at the corner the small side
-        // rebuilds by the edge vector (lod::rebuiltCorner, the shader's own function, so the x/z bits agree).
-        if (resample) {
-          const bool odd = alongX ? tn.oddU : tn.oddV;
-          const glm::vec3 c =
-              lod::rebuiltCorner(p.lod.corners[kEdgeCorners[e][0]], p.lod.corners[kEdgeCorners[e][1]], odd);
-          tn.rebuiltHeight[e] = heightAt(t, c.x, c.z, t.work);
-        }
-      }
-    }
-  }
-}
+namespace {
 
 std::atomic<int64_t> gTerrainBuilds{0};
 
@@ -388,6 +360,8 @@ WorkStats& WorkStats::operator+=(const WorkStats& o) {
   fullTessellations += o.fullTessellations;
   sharedEdgePoints += o.sharedEdgePoints;
   visibilityEvaluations += o.visibilityEvaluations;
+  layoutSelections += o.layoutSelections;
+  layoutNodes += o.layoutNodes;
   return *this;
 }
 
@@ -397,6 +371,14 @@ TerrainResult prepareTerrain(const Scene& scene) {
   TerrainResult r;
   auto data = std::make_shared<detail::TerrainData>();
   data->scene = scene;
+  if (scene.layout.kind == LayoutKind::Quadtree) {
+    if (!detail::prepareQuadtree(*data, r.error)) return r;
+    data->work.terrainBuilds = 1;
+    ++detail::gTerrainBuilds;
+    r.terrain.data_ = std::move(data);
+    r.ok = true;
+    return r;
+  }
   if (!detail::buildLayout(data->scene, *data, r.error)) return r;
   for (const detail::TerrainPatch& p : data->patches)
     for (const glm::vec3& c : p.corners)
@@ -435,5 +417,17 @@ int Terrain::patchCount() const { return data_ ? static_cast<int>(data_->patches
 const std::vector<PatchGeometry>& Terrain::patches() const { return data_->geometry; }
 const Extent& Terrain::extent() const { return data_->extent; }
 const WorkStats& Terrain::stats() const { return data_->work; }
+bool Terrain::cameraDependent() const { return data_ && data_->quadtree != nullptr; }
+
+Terrain layoutFor(const Terrain& terrain, const Camera& camera) {
+  if (!terrain.cameraDependent()) return terrain;
+  auto data = std::make_shared<detail::TerrainData>();
+  WorkStats work;
+  detail::cameraLayout(terrain.data(), camera, *data, work);
+  data->work = work;
+  Terrain out;
+  out.data_ = std::move(data);
+  return out;
+}
 
 } // namespace fftess::verify

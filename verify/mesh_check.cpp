@@ -48,7 +48,9 @@ unsigned edgeMask(const DomainPoint& d) {
 
 MeshReport checkSceneMesh(const Terrain& terrain, const Camera& camera, const CheckOptions& options) {
   MeshReport rep;
-  const detail::TerrainData& t = terrain.data();
+  if (!detail::validateCamera(camera, rep.error)) return rep;
+  const Terrain view = layoutFor(terrain, camera); // the camera's own patches for a quadtree
+  const detail::TerrainData& t = view.data();
   const Scene& scene = t.scene;
   if (!detail::validateCamera(camera, rep.error)) return rep;
   std::vector<lod::PatchLod> factors;

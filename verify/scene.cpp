@@ -36,7 +36,7 @@ const detail::Enum kKernels[] = {
 void readScene(detail::Reader& r, const toml::table& root, Scene& s, const std::string& baseDir) {
   r.unknownKeys(root, "", {"name", "layout", "displacement", "lod", "tessellation", "domain", "camera", "camera_path"});
   r.string(root, "", "name", s.name);
-  detail::readLayout(r, root, s);
+  detail::readLayout(r, root, s, baseDir);
   detail::readDisplacement(r, root, s, baseDir);
   detail::readLod(r, root, s, baseDir);
   detail::readTessellation(r, root, s);
@@ -185,6 +185,9 @@ const char* toString(Classification c) {
   return "?";
 }
 const char* toString(LayoutKind k) { return detail::nameOf(kLayoutKinds, int(k)); }
+const char* toString(QuadtreeSplit s) { return detail::nameOf(detail::kQuadtreeSplits, int(s)); }
+const char* toString(QuadtreeBalance b) { return detail::nameOf(detail::kQuadtreeBalances, int(b)); }
+const char* toString(CameraConvention c) { return detail::nameOf(detail::kCameraConventions, int(c)); }
 const char* toString(DisplacementKind k) { return detail::nameOf(kDisplacementKinds, int(k)); }
 const char* toString(LodScheme s) { return detail::nameOf(kSchemes, int(s)); }
 const char* toString(AdjacencyClamp c) { return detail::nameOf(kClamps, int(c)); }

@@ -29,6 +29,24 @@ enum class LayoutKind : uint8_t {
   TileRings,     // "tile_rings": NVIDIA sample: ring 0 is tiles_per_ring_edge^2 tiles; each further ring is the same
                  // count of tiles of twice the size with the inner half (the previous ring) cut out
   HeightmapGrid, // "heightmap_grid": Luna/Richards: one patch per cells_per_patch heightmap cells
+  Quadtree,      // "quadtree": a restricted quadtree over roots_x * roots_z roots, rebuilt per camera (CDLOD's
+                 // distance ranges or a screen-space error bound; balance 2:1 or none): docs/verify.md, "Quadtree"
+  Patches,       // "patches": the user's own static layout, one square patch per face of an OBJ of quads or per
+                 // row of a CSV of corners (layout.file); adjacency derived exactly from the coordinates
+};
+
+// How a quadtree node decides to split (layout.split).
+enum class QuadtreeSplit : uint8_t {
+  Distance,    // "distance" (default): CDLOD (Strugar 2009): a node of level L > 0 (leaves are level 0) splits when
+               // its bounding box comes within lod_distance * lod_distance_ratio^(L - 1) of the eye
+  ScreenError, // "screen_error": chunked LOD (Ulrich 2002): splits while its projected geometric error
+               // geometric_error * node size * (viewport height / 2) / tan(fov_y / 2) / distance exceeds
+               // max_pixel_error
+};
+// Whether the selected leaves are balanced (layout.balance).
+enum class QuadtreeBalance : uint8_t {
+  TwoToOne, // "2to1" (default): restricted quadtree: leaves that share an edge differ by at most one level
+  None,     // "none": as selected (a leaf may meet a neighbour 4x, 8x ... its size)
 };
 
 // How the four corners of a patch are obtained (layout.corners).
@@ -36,6 +54,13 @@ enum class CornerMode : uint8_t {
   Reconstructed, // "reconstructed": tile origin + (i / patches_per_tile_edge) * tile_size, in float, per tile, as the
                  // NVIDIA sample rebuilds them from the vertex id (neighbouring tiles may disagree in the last bit)
   Shared,        // "shared": every corner computed once (double, rounded to float) in a shared vertex buffer
+};
+
+// layout.kind = "patches": one patch of layout.file as the loader read it: its four corners in fftess's corner order
+// (corners[u + 2v]: [0] the -x-z corner, [1] +x-z, [2] -x+z, [3] +x+z; y ignored) and the line it came from.
+struct LayoutPatch {
+  glm::vec2 corners[4]; // (x, z)
+  int line = 0;         // 1-based line of layout.file (the OBJ face or the CSV row)
 };
 
 // [layout]: which patches make the terrain. Defaults as initialised (docs/verify.md, the scene format).
@@ -54,6 +79,21 @@ struct Layout {
   // heightmap_grid (needs displacement.kind = "raw" or a generator; texture size = cells_per_patch * k + 1)
   int cellsPerPatch = 64;                  // layout.cells_per_patch (>= 1)
   float cellSize = 1;                      // layout.cell_size (> 0): world size of one heightmap cell
+  // quadtree (centred on layout.center; corners: layout.corners, "reconstructed" = node origin + i * leaf size in
+  // float per root, "shared" = from the integer lattice in double)
+  float rootSize = 64;                     // layout.root_size (> 0): world size of a root node
+  int rootsX = 1, rootsZ = 1;              // layout.roots_x, layout.roots_z (1..64)
+  int maxDepth = 5;                        // layout.max_depth (0..10): leaves are root_size / 2^max_depth
+  QuadtreeSplit split = QuadtreeSplit::Distance; // layout.split
+  float lodDistance = 16;                  // layout.lod_distance (> 0): CDLOD's finest range (split = distance)
+  float lodDistanceRatio = 2;              // layout.lod_distance_ratio (>= 1): range growth per level
+  float maxPixelError = 4;                 // layout.max_pixel_error (> 0): split = screen_error
+  float geometricError = 0.0625f;          // layout.geometric_error (> 0): a node's world error per unit of size
+  QuadtreeBalance balance = QuadtreeBalance::TwoToOne; // layout.balance
+  // patches
+  std::shared_ptr<const std::vector<struct LayoutPatch>> patchList; // layout.file as read by the loader
+  std::string file;                        // layout.file: the OBJ (.obj) or CSV (.csv) of patches, resolved
+                                           // against the scene file's folder (docs/verify.md, "Patches")
 };
 
 enum class DisplacementKind : uint8_t {
@@ -283,6 +323,14 @@ struct DomainShader {
   HeightUv heightUv = HeightUv::World;       // domain.height_uv
 };
 
+// Clip-space convention of a camera (camera.convention): what the LOD's inputs (lod::Camera's projection and
+// frustum planes, a hull shader's projection / frustum_planes uniforms) are built in. The frustum itself, and so every
+// verdict, is the same in both.
+enum class CameraConvention : uint8_t {
+  Gl,  // "gl" (default): right-handed view (looking down -z), depth in [-w, w]
+  D3d, // "d3d": left-handed view (looking down +z, D3DXMatrixLookAtLH / PerspectiveFovLH), depth in [0, w]
+};
+
 // A camera. fovY in degrees, viewport in pixels.
 struct Camera {
   glm::vec3 eye{0, 40, -60}; // camera.eye (finite)
@@ -293,6 +341,7 @@ struct Camera {
   float farZ = 10000;        // camera.far (> near)
   int width = 1920;          // camera.width (>= 1)
   int height = 1200;         // camera.height (>= 1)
+  CameraConvention convention = CameraConvention::Gl; // camera.convention
 };
 
 // A whole scene: what loadScene / parseScene return, valid (every key checked). Defaults as initialised.
@@ -331,6 +380,9 @@ SceneResult parseScene(const std::string& text, const std::string& sourceName = 
 
 // Names as the scene format spells them (the TOML values above; "?" for a value out of range).
 const char* toString(LayoutKind k);
+const char* toString(QuadtreeSplit s);    // "distance", "screen_error"
+const char* toString(QuadtreeBalance b);  // "2to1", "none"
+const char* toString(CameraConvention c); // "gl", "d3d"
 const char* toString(DisplacementKind k);
 const char* toString(LodScheme s);
 const char* toString(AdjacencyClamp c);

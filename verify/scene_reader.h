@@ -23,7 +23,13 @@ struct Enum {
 
 inline const Enum kLayoutKinds[] = {{"grid", int(LayoutKind::Grid)},
                              {"tile_rings", int(LayoutKind::TileRings)},
-                             {"heightmap_grid", int(LayoutKind::HeightmapGrid)}};
+                             {"heightmap_grid", int(LayoutKind::HeightmapGrid)},
+                             {"quadtree", int(LayoutKind::Quadtree)},
+                             {"patches", int(LayoutKind::Patches)}};
+inline const Enum kQuadtreeSplits[] = {{"distance", int(QuadtreeSplit::Distance)},
+                                       {"screen_error", int(QuadtreeSplit::ScreenError)}};
+inline const Enum kQuadtreeBalances[] = {{"2to1", int(QuadtreeBalance::TwoToOne)}, {"none", int(QuadtreeBalance::None)}};
+inline const Enum kCameraConventions[] = {{"gl", int(CameraConvention::Gl)}, {"d3d", int(CameraConvention::D3d)}};
 inline const Enum kCornerModes[] = {{"reconstructed", int(CornerMode::Reconstructed)}, {"shared", int(CornerMode::Shared)}};
 inline const Enum kDisplacementKinds[] = {{"none", int(DisplacementKind::None)},
                                    {"raw", int(DisplacementKind::Raw)},
@@ -234,7 +240,14 @@ private:
 
 // The sections of a scene file, read in this order by readScene (scene.cpp); each throws Failed (r.error set) at the
 // first bad key. root: the whole document, overrides applied. baseDir: the folder relative file names resolve against.
-void readLayout(Reader& r, const toml::table& root, Scene& s);
+// scene_layout.cpp
+// Patches of different sizes can meet: tile_rings with rings >= 2, a quadtree with max_depth >= 1, a patches file
+// whose squares differ in size.
+bool layoutHasSizeJumps(const Layout& L);
+void readLayout(Reader& r, const toml::table& root, Scene& s, const std::string& baseDir);
+// scene_patches.cpp: layout.file (L.file, resolved and readable) read into L.patchList: an OBJ of quads or a CSV of
+// corners; a bad file fails at "layout.file" with the file's own line (file:line: what is wrong).
+void readPatchesFile(Reader& r, const toml::table& t, Layout& L);
 void readDisplacement(Reader& r, const toml::table& root, Scene& s, const std::string& baseDir);
 void readLod(Reader& r, const toml::table& root, Scene& s, const std::string& baseDir);
 // scene_hull.cpp: a hull shader as written (lod.entry, lod.evaluation_shader, [lod.uniforms], [lod.inputs],

@@ -15,44 +15,6 @@
 
 namespace fftess::verify::detail {
 
-void readLayout(Reader& r, const toml::table& root, Scene& s) {
-  const toml::table& t = *r.table(root, "", "layout", true);
-  const std::string p = "layout.";
-  Layout& L = s.layout;
-  r.unknownKeys(t, p,
-                {"kind", "corners", "center", "patches_x", "patches_z", "patch_size", "rings",
-                 "tiles_per_ring_edge", "patches_per_tile_edge", "base_patch_size", "cells_per_patch",
-                 "cell_size"});
-  r.enumeration(t, p, "kind", kLayoutKinds, L.kind, true);
-  r.enumeration(t, p, "corners", kCornerModes, L.corners);
-  float c[2] = {L.centerX, L.centerZ};
-  if (r.vector(t, p, "center", c, 2)) {
-    L.centerX = c[0];
-    L.centerZ = c[1];
-  }
-  r.integer(t, p, "patches_x", L.patchesX, 1, 4096);
-  r.integer(t, p, "patches_z", L.patchesZ, 1, 4096);
-  if (r.number(t, p, "patch_size", L.patchSize) && !(L.patchSize > 0)) r.fail(p + "patch_size", t.get("patch_size"), "must be > 0");
-  r.integer(t, p, "rings", L.rings, 1, 16);
-  r.integer(t, p, "tiles_per_ring_edge", L.tilesPerRingEdge, 2, 256);
-  r.integer(t, p, "patches_per_tile_edge", L.patchesPerTileEdge, 1, 64);
-  if (r.number(t, p, "base_patch_size", L.basePatchSize) && !(L.basePatchSize > 0))
-    r.fail(p + "base_patch_size", t.get("base_patch_size"), "must be > 0");
-  r.integer(t, p, "cells_per_patch", L.cellsPerPatch, 1, 4096);
-  if (r.number(t, p, "cell_size", L.cellSize) && !(L.cellSize > 0)) r.fail(p + "cell_size", t.get("cell_size"), "must be > 0");
-  if (L.kind == LayoutKind::TileRings) {
-    const toml::node* at = t.get("tiles_per_ring_edge") ? t.get("tiles_per_ring_edge") : &t;
-    if (L.tilesPerRingEdge % 2 != 0) r.fail(p + "tiles_per_ring_edge", at, "must be even");
-    if (L.rings > 1 && L.tilesPerRingEdge % 4 != 0)
-      r.fail(p + "tiles_per_ring_edge", at, "must be a multiple of 4 with more than one ring (the hole is centred)");
-    const double patches = double(L.tilesPerRingEdge) * L.tilesPerRingEdge * L.patchesPerTileEdge *
-                           L.patchesPerTileEdge * (1 + 0.75 * (L.rings - 1));
-    if (patches > 4.0e6) r.fail(p + "rings", t.get("rings") ? t.get("rings") : &t, "more than 4 million patches");
-  }
-  if (L.kind == LayoutKind::Grid && double(L.patchesX) * L.patchesZ > 4.0e6)
-    r.fail(p + "patches_x", t.get("patches_x") ? t.get("patches_x") : &t, "more than 4 million patches");
-}
-
 namespace {
 
 // heightmap_grid: the same cap as the other layouts, from the texture size before the texture is read or made.
@@ -261,11 +223,11 @@ void refuseNeighbourRuleKeys(Reader& r, const toml::table& t, const Scene& s) {
   for (const char* key : {"adjacency_clamp", "reconstruction"}) {
     const toml::node* at = t.get(key);
     if (!at) continue;
-    if (s.layout.kind != LayoutKind::TileRings || s.layout.rings < 2)
+    if (!layoutHasSizeJumps(s.layout))
       r.fail(p + key, at,
              std::string("cannot apply: the layout has no size jumps (layout.kind = \"") + toString(s.layout.kind) +
                  "\"" + (s.layout.kind == LayoutKind::TileRings ? " with layout.rings = 1" : "") +
-                 "); the neighbour rule runs only on tile_rings with rings >= 2");
+                 "); the neighbour rule runs only where patches of different sizes meet: tile_rings with rings >= 2, quadtree with max_depth >= 1, patches of several sizes");
     if (s.lod.scheme == LodScheme::PatchCenter)
       r.fail(p + key, at, "cannot apply: lod.scheme = \"patch_center\" (a negative control) never gets the neighbour rule");
   }
@@ -309,9 +271,10 @@ void checkSchemeEffects(Reader& r, const toml::table& root, const Scene& s) {
              std::string("lod.scheme = \"geomorph\" draws at 2^(floor(L) + 1) segments with integer partitioning; "
                          "got \"") + nameOf(kPartitionings, int(s.partitioning)) + "\" (set it to \"integer\")");
     }
-    if (s.layout.kind == LayoutKind::TileRings && s.layout.rings > 1)
+    if (layoutHasSizeJumps(s.layout))
       r.fail("lod.scheme", lt.get("scheme"),
-             "\"geomorph\" needs patches of one size (tile_rings with more than one ring has size jumps)");
+             std::string("\"geomorph\" needs patches of one size (layout.kind = \"") + toString(s.layout.kind) +
+                 "\" has size jumps)");
   }
   if (s.displacement.mip != MipMode::None && !s.lod.shader.empty()) {
     const toml::table& dt = *root.get("displacement")->as_table();

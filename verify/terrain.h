@@ -33,6 +33,9 @@ struct WorkStats {
                                  // evaluation nor a height sample
   int64_t visibilityEvaluations = 0; // domain evaluations of the hole check's grid (part of domainEvaluations):
                                  // culled or discarded patches whose box touches the view frustum (visibility.h, Hole)
+  int64_t layoutSelections = 0; // camera-dependent layouts selected (layout.kind = "quadtree": one per camera
+                                 // checked; 0 for static layouts)
+  int64_t layoutNodes = 0;      // quadtree nodes visited by those selections (split tests and balance passes)
   WorkStats& operator+=(const WorkStats& o);
 };
 
@@ -90,6 +93,9 @@ public:
   // displaced, else 0; plus one per rebuilt corner with lod.reconstruction = "resampled" and raised corners).
   // Checking never adds to it.
   const WorkStats& stats() const;
+  // The layout depends on the camera (layout.kind = "quadtree"): patches() are the scene camera's; layoutFor gives
+  // any other camera's, and checkScene / sweep check each camera's own.
+  bool cameraDependent() const;
   // Default-constructed (no patches): not to be checked.
   bool empty() const { return !data_; }
   // The prepared data itself (verify/internal.h): for verify's .cpp files, bench/ and cli/accuracy.cpp. Not empty().
@@ -97,6 +103,7 @@ public:
 
 private:
   friend TerrainResult prepareTerrain(const Scene& scene);
+  friend Terrain layoutFor(const Terrain& terrain, const Camera& camera);
   std::shared_ptr<const detail::TerrainData> data_;
 };
 
@@ -113,6 +120,13 @@ struct TerrainResult {
 // of its larger neighbours), samples every corner height once and fixes the LOD's height bounds.
 // scene: from loadScene/parseScene (or built by hand: displacement.texels must be set unless kind is None).
 TerrainResult prepareTerrain(const Scene& scene);
+
+// The terrain as `camera` sees it: for a camera-dependent layout (Terrain::cameraDependent) a terrain that shares
+// this one's prepared data (scene, texture, node pyramid) and holds the camera's patches, their corners, heights and
+// neighbours (stats(): the selection's work, terrainBuilds = 0); for any other layout `terrain` itself. Patch
+// indices in a report of checkScene(terrain, camera) are indices into layoutFor(terrain, camera).patches().
+// terrain: built (not empty); camera: valid (validateCamera).
+Terrain layoutFor(const Terrain& terrain, const Camera& camera);
 
 // World position of domain point (u, v) of patch `patchIndex` as the scene's domain shader computes it.
 // patchIndex: 0 .. terrain.patchCount() - 1 (else (0, 0, 0)). u, v in [0, 1].
