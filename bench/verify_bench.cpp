@@ -1,11 +1,14 @@
 // What accuracy costs in time, verifier side: one camera of the bundled scene with the exact-predicate kernel
 // (Epick), the exact-construction kernel (Epeck) and naive float predicates; the edge check vs the whole-mesh check.
+#include "verify/internal.h"
 #include "verify/verify.h"
 
 #include <benchmark/benchmark.h>
 
 #include <cstdio>
 #include <cstdlib>
+#include <algorithm>
+#include <string>
 
 namespace {
 
@@ -51,5 +54,63 @@ void BM_CheckSceneMesh(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(vf::checkSceneMesh(t, s.camera).innerBorderEdges);
 }
 BENCHMARK(BM_CheckSceneMesh)->Unit(benchmark::kMillisecond);
+
+// Per-camera cost of a camera-dependent layout beside a static one (docs/verify.md, "Quadtree"): the quadtree's
+// selection alone (cameraLayout into a warm per-thread scratch), and selection + check per camera for the CDLOD
+// example against the check alone for tile_rings (terrain.toml), both over the same kind of random cameras, each
+// camera with a warm EdgeCache as a sweep's thread has.
+namespace layouts {
+
+const vf::Terrain& terrain(int which) {
+  static vf::Terrain t[2];
+  static const char* const files[2] = {"terrain.toml", "quadtree_cdlod.toml"};
+  if (t[which].empty()) {
+    const std::string path = std::string(FFTESS_SOURCE_ROOT) + "/docs/examples/" + files[which];
+    vf::SceneResult s = vf::loadScene(path);
+    vf::TerrainResult r = s ? vf::prepareTerrain(s.scene) : vf::TerrainResult{};
+    if (!r) {
+      std::fprintf(stderr, "cannot prepare %s: %s%s\n", path.c_str(), s.error.c_str(), r.error.c_str());
+      std::exit(2);
+    }
+    t[which] = r.terrain;
+  }
+  return t[which];
+}
+
+void BM_QuadtreeSelect(benchmark::State& state) {
+  const vf::Terrain& t = terrain(1);
+  const vf::CameraSet cams = vf::CameraSet::random(t, 64, 1);
+  vf::detail::TerrainData scratch;
+  vf::WorkStats work;
+  size_t i = 0, leaves = 0;
+  for (auto _ : state) {
+    vf::detail::cameraLayout(t.data(), cams.at(i++ % cams.size()), scratch, work);
+    leaves += scratch.patches.size();
+  }
+  state.SetItemsProcessed(static_cast<int64_t>(leaves));
+  state.SetLabel("leaves/s; nodes visited per camera " +
+                 std::to_string(work.layoutNodes / std::max<int64_t>(1, work.layoutSelections)));
+}
+BENCHMARK(BM_QuadtreeSelect)->Unit(benchmark::kMicrosecond);
+
+void BM_LayoutCheck(benchmark::State& state) {
+  const vf::Terrain& t = terrain(static_cast<int>(state.range(0)));
+  const vf::Scene& s = t.scene();
+  const vf::CameraSet cams = vf::CameraSet::random(t, 64, 1);
+  vf::detail::EdgeCache cache(s.partitioning, s.stage, vf::detail::tessellatorOptions(s, {}));
+  size_t i = 0;
+  int64_t patches = 0;
+  for (auto _ : state) {
+    const vf::Report r = vf::detail::checkTerrain(t.data(), cams.at(i++ % cams.size()), {}, cache);
+    patches += r.stats.patches;
+    benchmark::DoNotOptimize(r.stats.cracks);
+  }
+  state.SetItemsProcessed(patches);
+  state.SetLabel(state.range(0) ? "quadtree_cdlod (selection + check), patches/s" : "tile_rings terrain.toml (check), patches/s");
+}
+// arg: 0 tile_rings (terrain.toml), 1 quadtree (quadtree_cdlod.toml)
+BENCHMARK(BM_LayoutCheck)->Arg(0)->Arg(1)->ArgName("quadtree")->Unit(benchmark::kMillisecond);
+
+} // namespace layouts
 
 } // namespace

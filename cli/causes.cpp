@@ -48,6 +48,16 @@ static std::string fixWords(const vf::EdgeSide& s) {
   return out.empty() ? "-" : out;
 }
 
+// A jump beyond 2x (an unbalanced quadtree, a patches layout): lod/'s neighbour rule handles 2x jumps only, so
+// neither side adapted its factor to the other (EdgeLod::neighbourSize carries the ratio).
+static Cause largeJumpCause(int jump, const std::string& record) {
+  const std::string ratio = std::to_string(int64_t(1) << jump) + "x";
+  const std::string fix = "fix: balance the quadtree 2:1 (layout.balance = \"2to1\") or keep neighbours within 2x";
+  return {"size jump " + ratio + ": lod/'s neighbour rule handles 2x jumps only",
+          "neighbour " + ratio + ": lod/'s neighbour rule handles 2x jumps only, no side adapted its factor (" +
+              record + "); " + fix};
+}
+
 Cause findingCause(const vf::Finding& f) {
   const vf::EdgeSide& big = f.a.patch.level >= f.b.patch.level ? f.a : f.b;
   const vf::EdgeSide& small = f.a.patch.level >= f.b.patch.level ? f.b : f.a;
@@ -66,8 +76,7 @@ Cause findingCause(const vf::Finding& f) {
     return {"same factor, different positions (domain shader / corners)",
             "both sides use factor " + formatFloat(B) + " but compute different positions (domain shader or corners)"};
   }
-  if (jump > 1)
-    return {"size jump larger than 2x", "patch sizes differ by 2^" + std::to_string(jump) + " (" + pair + record + ")"};
+  if (jump > 1) return largeJumpCause(jump, pair + record);
   const std::string rule = " (" + jumpRule(small) + ")";
   if (B != 2 * S) {
     const float minimum = f.partitioning == Partitioning::FractionalEven ? 2.0f : 1.0f;

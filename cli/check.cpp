@@ -220,12 +220,13 @@ void writeCheckReports(const CheckArgs& a, ReportFiles& reports, const vf::Terra
   if (!a.json.empty()) {
     json j = checkJson(a, terrain, cam, r, mesh ? &mesh->mesh : nullptr);
     if (mesh) {
-      const json d = meshDiffJson(terrain, mesh->diff);
+      const json d = meshDiffJson(vf::layoutFor(terrain, cam), mesh->diff);
       for (auto it = d.begin(); it != d.end(); ++it) j["mesh"][it.key()] = it.value();
     }
     reports.setJson(j.dump(2) + "\n");
   }
-  if (!a.svg.empty()) reports.setSvg(checkSvg(terrain, r, "fftess check " + a.scene, a.offscreen));
+  if (!a.svg.empty()) // the camera's own patches (a quadtree's differ per camera): the report's indices
+    reports.setSvg(checkSvg(vf::layoutFor(terrain, cam), r, "fftess check " + a.scene, a.offscreen));
   reports.commit(); // all or nothing
 }
 
@@ -248,7 +249,7 @@ int runCheck(const CheckArgs& a) {
   MeshRun mesh;
   if (a.mesh) {
     mesh = runMesh(terrain, cam, opt, full);
-    if (talk) text += meshText(terrain, full, mesh, a.show);
+    if (talk) text += meshText(vf::layoutFor(terrain, cam), full, mesh, a.show);
   }
   const vf::Verdict verdict = vf::verdictOf(r.stats, a.offscreen);
   // A disagreement of the two checks is a finding (exit 1), reported with both sides, never a clean verdict.

@@ -138,13 +138,15 @@ void svgInset(std::string& o, const vf::Scene& scene, const vf::Finding& f, doub
 }
 
 // A hole: the patch filled.
-void svgHole(std::string& o, const vf::Terrain& terrain, const MapView& v, const vf::Hole& h, const std::string& title) {
-  if (h.patch.index < 0 || h.patch.index >= terrain.patchCount()) return;
-  const glm::vec3* c = terrain.patches()[static_cast<size_t>(h.patch.index)].corners;
+void svgQuad(std::string& o, const MapView& v, const glm::vec3* c, const std::string& title) {
   char buf[256];
   std::snprintf(buf, sizeof buf, "<path class=\"hole\" d=\"M%.2f %.2fL%.2f %.2fL%.2f %.2fL%.2f %.2fZ\">", v.x(c[0].x),
                 v.y(c[0].z), v.x(c[1].x), v.y(c[1].z), v.x(c[3].x), v.y(c[3].z), v.x(c[2].x), v.y(c[2].z));
   o += buf + std::string("<title>") + xmlEscape(title) + "</title></path>\n";
+}
+void svgHole(std::string& o, const vf::Terrain& terrain, const MapView& v, const vf::Hole& h, const std::string& title) {
+  if (h.patch.index < 0 || h.patch.index >= terrain.patchCount()) return;
+  svgQuad(o, v, terrain.patches()[static_cast<size_t>(h.patch.index)].corners, title);
 }
 
 } // namespace
@@ -241,6 +243,10 @@ std::string sweepSvg(const vf::Terrain& terrain, const std::vector<vf::Camera>& 
   }
   o += "<g id=\"holes\">\n"; // the first hole of each camera
   for (const SvgHole& h : holes) {
+    if (h.hasCorners) { // a camera-dependent layout: the patch of that camera's layout
+      svgQuad(o, v, h.corners, h.title);
+      continue;
+    }
     vf::Hole hole;
     hole.patch.index = h.patch;
     svgHole(o, terrain, v, hole, h.title);

@@ -29,6 +29,8 @@ struct SvgCamera {
 struct SvgHole {
   int patch = -1;
   std::string title;
+  bool hasCorners = false; // a camera-dependent layout (quadtree): the patch's corners in its camera's layout
+  glm::vec3 corners[4]{};
 };
 // countOffScreen (--offscreen): the camera's off-screen findings count for its colour and mark.
 SvgCamera svgCamera(size_t globalIndex, const vf::Camera& cam, const vf::CameraResult& c, bool countOffScreen);

@@ -287,6 +287,17 @@ void SweepRun::flushPending(bool all) {
   }
 }
 
+// A camera's first hole for the picture; a camera-dependent layout's patch index is into that camera's layout.
+static SvgHole svgHoleOf(const vf::Terrain& terrain, const vf::Camera& cam, const vf::Hole& h, std::string title) {
+  SvgHole out{h.patch.index, std::move(title)};
+  if (!terrain.cameraDependent()) return out;
+  const vf::Terrain view = vf::layoutFor(terrain, cam);
+  if (h.patch.index < 0 || h.patch.index >= view.patchCount()) return out;
+  out.hasCorners = true;
+  for (int k = 0; k < 4; ++k) out.corners[k] = view.patches()[size_t(h.patch.index)].corners[k];
+  return out;
+}
+
 void SweepRun::onCamera(const vf::CameraResult& c) {
   const size_t g = plan_.global(c.cameraIndex);
   endChecked_ = std::max(endChecked_, g + 1);
@@ -298,7 +309,7 @@ void SweepRun::onCamera(const vf::CameraResult& c) {
     else if ((all ? c.stats.tJunctions : c.stats.tJunctionsOnScreen()) > 0) ++tjCameras_;
     if (!a_.svg.empty()) {
       dots_.push_back(svgCamera(g, cams_.at(g), c, all));
-      if (c.hasHole) holes_.push_back({c.firstHole.patch.index, "camera " + std::to_string(g) + ": " + holeCause(c.firstHole).detail});
+      if (c.hasHole) holes_.push_back(svgHoleOf(terrain_, cams_.at(g), c.firstHole, "camera " + std::to_string(g) + ": " + holeCause(c.firstHole).detail));
     }
   }
   if (!jsonFile_) return;

@@ -29,6 +29,7 @@ struct GpuLodProvider::Impl {
   GLuint program = 0;
   GLuint buffers[3] = {0, 0, 0}; // in, out, camera
   const void* inputKey = nullptr;
+  uint64_t inputGeneration = 0; // LodPatches::generation() of the uploaded inputs (a quadtree reselects per camera)
   size_t inputCount = static_cast<size_t>(-1);
   size_t outCapacity = 0;
   std::string description;
@@ -452,7 +453,7 @@ bool GpuLodProvider::evaluate(const vf::LodPatches& patches, const lod::Camera& 
     return true;
   }
   // The patches' inputs: once per terrain.
-  if (m.inputKey != patches.key() || m.inputCount != n) {
+  if (m.inputKey != patches.key() || m.inputGeneration != patches.generation() || m.inputCount != n) {
     const auto t0 = Clock::now();
     inputWords(patches, m.words);
     gl.glBindBuffer(GL_SHADER_STORAGE_BUFFER, m.buffers[0]);
@@ -465,6 +466,7 @@ bool GpuLodProvider::evaluate(const vf::LodPatches& patches, const lod::Camera& 
       m.outCapacity = n;
     }
     m.inputKey = patches.key();
+    m.inputGeneration = patches.generation();
     m.inputCount = n;
     m.uploadSeconds += std::chrono::duration<double>(Clock::now() - t0).count();
   }

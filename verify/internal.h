@@ -84,6 +84,18 @@ void patchTexelRange(const Displacement& d, const TerrainPatch& p, float& lo, fl
 void prepareLod(TerrainData& t);
 // Every patch's surfaceMinY / surfaceMaxY (the hole check's box).
 void prepareSurfaceBounds(TerrainData& t);
+// The same for one patch (p.tex set): prepareLod's height bounds (p.lod.useHeightBounds, minHeight, maxHeight, per
+// lod.height_bounds; nothing on flat terrain) and prepareSurfaceBounds' box.
+void patchHeightBounds(const Scene& s, TerrainPatch& p);
+void patchSurfaceBounds(const Displacement& d, TerrainPatch& p);
+// prepareTerrain's refusals of one patch's float corners: a non-finite corner (patchCornersFinite), or that and zero
+// area (patchCornersFit, the error naming patchSizeKey).
+bool patchCornersFinite(const TerrainPatch& p, std::string& error);
+bool patchCornersFit(const Scene& s, const TerrainPatch& p, std::string& error);
+// The terrain's float geometry must be finite and resolve every patch (patchWorld: a base unit's world size; minX,
+// minZ: the extent's lower corner in double; t.extent, invSize*, units* set). False with error naming patchSizeKey.
+bool geometryFits(const Scene& s, double patchWorld, double minX, double minZ, const TerrainData& t,
+                  std::string& error);
 
 struct TerrainData {
   Scene scene;
@@ -99,6 +111,11 @@ struct TerrainData {
   // layout.kind = "quadtree": the camera-independent node pyramid (layout_quadtree.cpp), shared by every camera's
   // layout; patches then hold one camera's leaves (prepareTerrain: the scene camera's; cameraLayout: any camera's).
   std::shared_ptr<const QuadtreeNodes> quadtree;
+  // cameraLayout's scratch (a per-thread layout reused from camera to camera: the selection's marks and lists).
+  std::shared_ptr<struct QuadtreeSelection> selection;
+  // Changes whenever cameraLayout puts another camera's patches here (0: a static layout), so that a consumer that
+  // keeps something per terrain (gpu_lod's uploaded patch inputs, LodPatches::generation) sees the new patches.
+  uint64_t layoutGeneration = 0;
   WorkStats work;                   // the build's work
   // The neighbours across edge e of p, in order along the edge.
   const int32_t* neighboursBegin(const TerrainPatch& p, int e) const { return neighbourList.data() + p.nbFirst[e]; }
@@ -122,7 +139,8 @@ void listEndNeighbours(TerrainData& t);
 // the patch, 0.5 / 2 with the parity, far corner and rebuilt height lod/ reads, or the true ratio (4, 0.25, ...) where
 // a jump exceeds 2x, which lod/ treats as 1: its neighbour rule handles 2x jumps). Samples rebuilt heights into
 // t.work (lod.reconstruction = "resampled").
-void prepareNeighbours(TerrainData& t);
+// sampleRebuilt false: rebuiltHeight is left 0 (the caller fills it from heights it sampled before: the quadtree).
+void prepareNeighbours(TerrainData& t, bool sampleRebuilt = true);
 
 // ---------------------------------------------------------------------------------------------------------------
 // layout_quadtree.cpp: layout.kind = "quadtree".

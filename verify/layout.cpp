@@ -58,8 +58,6 @@ const char* patchSizeKey(const Scene& s) {
   return "layout";
 }
 
-namespace {
-
 // The terrain's float geometry must be finite and resolve every patch: a patch size that vanishes at the scene's
 // coordinates (denormal, or below 2^-20 of the largest coordinate) or an extent that overflows float is bad input.
 // Non-finite geometry would otherwise reach the LOD and CGAL (whose exact predicates cannot take inf or nan).
@@ -69,6 +67,7 @@ bool geometryFits(const Scene& s, double patchWorld, double minX, double minZ, c
   const char* key = patchSizeKey(s);
   const double given = L.kind == LayoutKind::TileRings ? L.basePatchSize
                        : L.kind == LayoutKind::Grid    ? L.patchSize
+                       : L.kind == LayoutKind::Quadtree ? L.rootSize
                                                        : L.cellSize;
   char buf[320];
   const bool finiteExtent = std::isfinite(t.extent.minX) && std::isfinite(t.extent.maxX) &&
@@ -105,6 +104,8 @@ bool geometryFits(const Scene& s, double patchWorld, double minX, double minZ, c
   }
   return true;
 }
+
+namespace {
 
 // The layout's size: its extent in base units (the smallest patch size), the builder's counts (tile rings: rings,
 // tiles per ring edge, patches per tile edge, half extent; grids: patches per side), whether sizes jump; returns the
@@ -306,22 +307,25 @@ void prepareLod(TerrainData& t) {
       g.heights[c] = displaced ? heightAt(t, p.corners[c].x, p.corners[c].z, t.work) : 0.0f;
       p.lod.corners[c] = glm::vec3(p.corners[c].x, raise ? g.heights[c] : 0.0f, p.corners[c].z);
     }
-    if (displaced) {
-      p.lod.useHeightBounds = true;
-      if (s.lod.heightBounds == HeightBounds::PerPatch) {
-        float lo, hi;
-        patchTexelRange(s.displacement, p, lo, hi);
-        const float a = s.displacement.heightScale * lo, b = s.displacement.heightScale * hi;
-        p.lod.minHeight = std::fmin(a, b);
-        p.lod.maxHeight = std::fmax(a, b);
-      } else {
-        p.lod.minHeight = std::fmin(0.0f, s.displacement.heightScale);
-        p.lod.maxHeight = std::fmax(0.0f, s.displacement.heightScale);
-      }
-    }
+    patchHeightBounds(s, p);
   }
   if (!t.adjacency) return;
   prepareNeighbours(t);
+}
+
+void patchHeightBounds(const Scene& s, TerrainPatch& p) {
+  if (s.displacement.kind == DisplacementKind::None) return;
+  p.lod.useHeightBounds = true;
+  if (s.lod.heightBounds == HeightBounds::PerPatch) {
+    float lo, hi;
+    patchTexelRange(s.displacement, p, lo, hi);
+    const float a = s.displacement.heightScale * lo, b = s.displacement.heightScale * hi;
+    p.lod.minHeight = std::fmin(a, b);
+    p.lod.maxHeight = std::fmax(a, b);
+  } else {
+    p.lod.minHeight = std::fmin(0.0f, s.displacement.heightScale);
+    p.lod.maxHeight = std::fmax(0.0f, s.displacement.heightScale);
+  }
 }
 
 // The hole check's box (TerrainPatch::surfaceMinY/MaxY): the texels a patch's footprint can sample on every level
@@ -329,17 +333,44 @@ void prepareLod(TerrainData& t) {
 // texture coordinate), times height_scale, padded by 2^-10 of height_scale (filter-weight rounding; any sampled
 // height lies between its texels).
 void prepareSurfaceBounds(TerrainData& t) {
-  const Displacement& d = t.scene.displacement;
+  if (t.scene.displacement.kind == DisplacementKind::None) return;
+  for (TerrainPatch& p : t.patches) patchSurfaceBounds(t.scene.displacement, p);
+}
+
+void patchSurfaceBounds(const Displacement& d, TerrainPatch& p) {
   if (d.kind == DisplacementKind::None) return;
   const double hs = d.heightScale;
   const double pad = std::fabs(hs) * 0x1p-10;
-  for (TerrainPatch& p : t.patches) {
-    float lo, hi;
-    patchTexelRange(d, p, lo, hi);
-    const double a = hs * lo, b = hs * hi;
-    p.surfaceMinY = static_cast<float>(std::fmin(a, b) - pad);
-    p.surfaceMaxY = static_cast<float>(std::fmax(a, b) + pad);
+  float lo, hi;
+  patchTexelRange(d, p, lo, hi);
+  const double a = hs * lo, b = hs * hi;
+  p.surfaceMinY = static_cast<float>(std::fmin(a, b) - pad);
+  p.surfaceMaxY = static_cast<float>(std::fmax(a, b) + pad);
+}
+
+bool patchCornersFinite(const TerrainPatch& p, std::string& error) {
+  for (const glm::vec3& c : p.corners)
+    if (!std::isfinite(c.x) || !std::isfinite(c.z)) {
+      error = "layout: patch " + std::to_string(p.ref.index) + " has a non-finite corner (the layout overflows float)";
+      return false;
+    }
+  return true;
+}
+
+bool patchCornersFit(const Scene& s, const TerrainPatch& p, std::string& error) {
+  if (!patchCornersFinite(p, error)) return false;
+  if (!(p.corners[1].x > p.corners[0].x) || !(p.corners[3].x > p.corners[2].x) ||
+      !(p.corners[2].z > p.corners[0].z) || !(p.corners[3].z > p.corners[1].z)) {
+    char buf[300];
+    std::snprintf(buf, sizeof buf,
+                  "%s: patch %d has zero area in float (corners x %.9g .. %.9g, z %.9g .. %.9g): the patch size "
+                  "vanishes at the scene's coordinates",
+                  patchSizeKey(s), p.ref.index, double(p.corners[0].x), double(p.corners[1].x),
+                  double(p.corners[0].z), double(p.corners[2].z));
+    error = buf;
+    return false;
   }
+  return true;
 }
 
 namespace {
@@ -381,23 +412,9 @@ TerrainResult prepareTerrain(const Scene& scene) {
   }
   if (!detail::buildLayout(data->scene, *data, r.error)) return r;
   for (const detail::TerrainPatch& p : data->patches)
-    for (const glm::vec3& c : p.corners)
-      if (!std::isfinite(c.x) || !std::isfinite(c.z)) {
-        r.error = "layout: patch " + std::to_string(p.ref.index) + " has a non-finite corner (the layout overflows float)";
-        return r;
-      }
+    if (!detail::patchCornersFinite(p, r.error)) return r;
   for (const detail::TerrainPatch& p : data->patches)
-    if (!(p.corners[1].x > p.corners[0].x) || !(p.corners[3].x > p.corners[2].x) ||
-        !(p.corners[2].z > p.corners[0].z) || !(p.corners[3].z > p.corners[1].z)) {
-      char buf[300];
-      std::snprintf(buf, sizeof buf,
-                    "%s: patch %d has zero area in float (corners x %.9g .. %.9g, z %.9g .. %.9g): the patch size "
-                    "vanishes at the scene's coordinates",
-                    detail::patchSizeKey(data->scene), p.ref.index, double(p.corners[0].x), double(p.corners[1].x),
-                    double(p.corners[0].z), double(p.corners[2].z));
-      r.error = buf;
-      return r;
-    }
+    if (!detail::patchCornersFit(data->scene, p, r.error)) return r;
   data->geometry.resize(data->patches.size());
   for (size_t i = 0; i < data->patches.size(); ++i) {
     data->geometry[i].ref = data->patches[i].ref;

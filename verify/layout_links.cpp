@@ -121,10 +121,11 @@ void listEndNeighbours(TerrainData& t) {
 // one: 0.5, 0.25, ...); several (all smaller): the smallest one's. Parity from the lattice (ux / size), or, where a
 // neighbour twice the size lies across an edge, from where the patch sits on that neighbour's edge. 2x neighbours
 // also get the far corner and (lod.reconstruction = "resampled" with raised corners) the rebuilt corner's height.
-void prepareNeighbours(TerrainData& t) {
+void prepareNeighbours(TerrainData& t, bool sampleRebuilt) {
   const Scene& s = t.scene;
   const bool raise = s.lod.displacedCorners && s.displacement.kind != DisplacementKind::None;
-  const bool resample = raise && s.lod.screenSphere.reconstruction == lod::Reconstruction::Resampled;
+  const bool resample =
+      sampleRebuilt && raise && s.lod.screenSphere.reconstruction == lod::Reconstruction::Resampled;
   for (TerrainPatch& p : t.patches) {
     lod::TileNeighbours& tn = p.tile;
     tn = lod::TileNeighbours{};

@@ -3,6 +3,8 @@
 #include "verify/lod_bridge.h"
 #include "verify/internal.h"
 
+#include <cstdio>
+
 #include <chrono>
 #include <cstring>
 
@@ -165,7 +167,9 @@ void neighbourRule(const TerrainData& t, const TerrainPatch& p, int e, EdgeLod& 
   out.scheme = t.scene.lod.shader.empty() ? t.scene.lod.scheme : LodScheme::Shader;
   const bool tileCode = t.adjacency && out.scheme != LodScheme::PatchCenter;
   out.neighbourSize = tileCode ? p.tile.size[e] : 1.0f;
-  out.clamp = tileCode && out.neighbourSize != 1.0f ? t.scene.lod.screenSphere.clamp : AdjacencyClamp::None;
+  // lod/ applies its rule (and the clamp) at 2x jumps only; a larger jump (4, 0.25, ...) it treats as none.
+  const bool rule = out.neighbourSize == 2.0f || out.neighbourSize == 0.5f;
+  out.clamp = tileCode && rule ? t.scene.lod.screenSphere.clamp : AdjacencyClamp::None;
   out.reconstruction = t.scene.lod.screenSphere.reconstruction;
 }
 
@@ -208,6 +212,7 @@ LodInput LodPatches::operator[](size_t i) const {
   return LodInput{p.lod, p.tile};
 }
 bool LodPatches::sizeJumps() const { return t_->adjacency; }
+uint64_t LodPatches::generation() const { return t_->layoutGeneration; }
 LodPatches::Corner LodPatches::corner(size_t i, int c) const {
   const detail::TerrainPatch& p = t_->patches[i];
   return Corner{p.corners[c], t_->geometry[i].heights[c], glm::vec2(p.tex[c][0], p.tex[c][1])};
@@ -226,8 +231,13 @@ std::string lodWords(const EdgeSide& side) {
   if (l.scheme == LodScheme::Constant && l.neighbourSize == 1.0f) return out; // lod/ did not run
   for (uint32_t bit = 1; bit <= lod::FixLiteralSource; bit <<= 1)
     if (l.why.fixes & bit) add(lod::fixName(static_cast<lod::Fix>(bit)));
+  char ratio[48];
+  std::snprintf(ratio, sizeof ratio, "neighbour %gx", double(l.neighbourSize));
+  const bool beyond2x = l.neighbourSize != 1.0f && l.neighbourSize != 2.0f && l.neighbourSize != 0.5f;
   if (l.scheme == LodScheme::Shader && l.neighbourSize != 1.0f) // the shader's own rule: fftess states no clamp
-    add(l.neighbourSize == 2.0f ? "neighbour 2x" : "neighbour 0.5x");
+    add(ratio);
+  else if (beyond2x) // a jump beyond 2x (an unbalanced quadtree, a patches layout): lod/ ran no neighbour rule
+    add(std::string(ratio) + ": lod/'s neighbour rule handles 2x jumps only");
   else if (l.neighbourSize == 2.0f)
     add(std::string("neighbour 2x: rebuilt ") + toString(l.reconstruction) + ", " + toString(l.clamp) + " clamp");
   else if (l.neighbourSize == 0.5f)

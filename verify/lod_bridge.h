@@ -39,6 +39,9 @@ public:
   LodInput operator[](size_t i) const;
   // The same for every view of one prepared terrain (a provider keys its uploaded inputs by it).
   const void* key() const { return t_; }
+  // Changes whenever the terrain behind key() holds other patches (a camera-dependent layout reselected into the same
+  // per-thread scratch, layout.kind = "quadtree"); 0 for a static layout. A provider keys its inputs by both.
+  uint64_t generation() const;
   // Patches of different sizes meet (tile rings with rings > 1): the built-in schemes run their *Tile variant.
   bool sizeJumps() const;
   // The terrain's scene (lod.scheme and its parameters, lod.shader).
@@ -109,8 +112,9 @@ struct EdgeLod {
   bool culled = false;         // lod/ culled the patch (lod::Why::culled)
   // The neighbour rule: the neighbour's size relative to this patch as handed to lod::nvidiaTile / lod::*Tile (0.5:
   // this is the larger side, 2: the smaller side, which rebuilt the larger edge; 1: same size, or no adjacency code
-  // ran),
-  // the clamp applied at the jump and how the larger edge was rebuilt (both meaningful only when size != 1).
+  // ran; 4, 8, ... or 0.25, 0.125, ...: a jump beyond 2x, where lod/ runs no neighbour rule, since it handles 2x jumps
+  // only: an unbalanced quadtree, a patches layout), the clamp applied at the jump (None beyond 2x) and how the
+  // larger edge was rebuilt (both meaningful only when size is 2 or 0.5).
   float neighbourSize = 1;
   AdjacencyClamp clamp = AdjacencyClamp::None;
   lod::Reconstruction reconstruction = lod::Reconstruction::EdgeVector;

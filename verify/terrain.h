@@ -46,6 +46,10 @@ int64_t terrainBuildCount();
 // ---------------------------------------------------------------------------------------------------------------
 // The prepared terrain: everything about the scene that does not depend on the camera, computed once.
 
+// layout.kind = "quadtree": index is the leaf's place in this camera's list (depth first from the roots in row-major
+// order, children -x-z, +x-z, -x+z, +x+z), ring 0, tile the root (row-major over roots_x x roots_z), patch the node's
+// id in the prepared pyramid (the same node has the same id for every camera: root * nodes per root + the nodes of
+// the coarser levels + row-major position on its level), level log2 of its size in leaves (0: a leaf of max_depth).
 struct PatchRef {
   int index = -1;              // patch number in the layout's order
   int ring = 0;                // tile ring (0 for grids)
