@@ -80,25 +80,32 @@ SweepResult sweepRandom(const Terrain& terrain, size_t count, uint64_t seed, Swe
 
 TEST_CASE("quadtree: every camera's leaves tile the extent once, balance 2 to 1 and link symmetrically",
           "[verify][quadtree]") {
-  for (const char* split : {"distance", "screen_error"})
+  // Ratio 1: every level splits within the same distance, so the selection alone leaves jumps beyond 2x.
+  for (const char* split : {"distance", "distance_ratio_1", "screen_error"})
     for (const char* balance : {"2to1", "none"}) {
       INFO(split << " " << balance);
-      const Scene s = loadExample(kExample, {std::string("layout.split=") + split,
+      const bool ratio1 = std::string(split) == "distance_ratio_1";
+      const Scene s = loadExample(kExample, {ratio1 ? "layout.split=distance" : std::string("layout.split=") + split,
+                                             ratio1 ? "layout.lod_distance_ratio=1" : "layout.lod_distance_ratio=2",
                                              std::string("layout.balance=") + balance, "displacement.resolution=129"});
       const Terrain terrain = prepared(s);
       REQUIRE(terrain.cameraDependent());
       const CameraSet cams = CameraSet::random(terrain, 150, 11);
       TerrainData scratch; // reused from camera to camera, as a sweep's threads do
-      size_t sizes = 0;
+      size_t sizes = 0, largeJumps = 0;
       for (size_t i = 0; i < cams.size(); ++i) {
         WorkStats w;
         fftess::verify::detail::cameraLayout(terrain.data(), cams.at(i), scratch, w);
         checkStructure(scratch, std::string(balance) == "2to1");
         std::map<int, int> levels;
-        for (const TerrainPatch& p : scratch.patches) ++levels[p.ref.level];
+        for (const TerrainPatch& p : scratch.patches) {
+          ++levels[p.ref.level];
+          for (int e = 0; e < 4; ++e) largeJumps += p.tile.size[e] > 2.0f;
+        }
         sizes += levels.size();
       }
       CHECK(sizes > 2 * cams.size()); // the cameras do see several sizes
+      if (ratio1 && std::string(balance) == "none") CHECK(largeJumps > 0); // what the balance must remove
       checkStructure(terrain.data(), std::string(balance) == "2to1");
     }
 }
@@ -179,6 +186,16 @@ TEST_CASE("quadtree: heights are sampled once at prepare, never per camera", "[v
     CHECK(w.heightSamples == 0);
     CHECK(w.layoutSelections == 1);
     CHECK(w.layoutNodes >= 16);
+    // The prepared rebuilt-corner heights are the ones prepareNeighbours would sample for these leaves.
+    TerrainData again = scratch;
+    fftess::verify::detail::prepareNeighbours(again, true);
+    int rebuilt = 0;
+    for (size_t k = 0; k < scratch.patches.size(); ++k)
+      for (int e = 0; e < 4; ++e) {
+        CHECK(scratch.patches[k].tile.rebuiltHeight[e] == again.patches[k].tile.rebuiltHeight[e]);
+        rebuilt += scratch.patches[k].tile.size[e] == 2.0f;
+      }
+    CHECK(rebuilt > 0);
     // The leaves' corner heights are the prepared lattice's: those a static layout would sample at the same x/z.
     for (size_t k = 0; k < scratch.patches.size(); k += 37)
       for (int c = 0; c < 4; ++c) {
