@@ -123,15 +123,15 @@ max_depth = 3
 lod_distance = 1.0
 lod_distance_ratio = 1.0
 corners = "shared"
-[displacement]
-kind = "none"
-[lod]
-scheme = "constant"
-[tessellation]
-partitioning = "integer"
 [camera]
 eye = [-2.1, 0.1, -3.9]
 target = [0.0, 0.0, 0.0]
+[tessellation]
+partitioning = "integer"
+[lod]
+scheme = "constant"
+[displacement]
+kind = "none"
 )";
   using Leaf = std::tuple<int64_t, int64_t, int64_t>; // ux, uz, size
   const std::vector<Leaf> unbalanced = {{0, 0, 1}, {1, 0, 1}, {0, 1, 1}, {1, 1, 1}, {2, 0, 1}, {3, 0, 1}, {2, 1, 1},
