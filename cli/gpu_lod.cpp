@@ -108,10 +108,11 @@ std::string FactorDiffTally::text(const vf::Scene& scene, const vf::CheckOptions
                     static_cast<long long>(p->dispatches()), per * 1e3, p->compileSeconds() * 1e3);
     else
       std::snprintf(buf, sizeof buf,
-                    "                 %lld dispatches, %.3f ms per camera (upload of the patches once: %.1f ms, "
+                    "                 %lld dispatches, %.3f ms per camera (upload of the patches %s: %.1f ms, "
                     "program build: %.1f ms)\n",
-                    static_cast<long long>(p->dispatches()), per * 1e3, p->uploadSeconds() * 1e3,
-                    p->compileSeconds() * 1e3);
+                    static_cast<long long>(p->dispatches()), per * 1e3,
+                    scene.layout.kind == vf::LayoutKind::Quadtree ? "of each camera's layout, in all" : "once",
+                    p->uploadSeconds() * 1e3, p->compileSeconds() * 1e3);
     out += buf;
     if (p->cpuCameras() > 0) {
       std::snprintf(buf, sizeof buf, "                 the C++ build of the same factors: %.3f ms per camera (one thread)\n",

@@ -390,6 +390,12 @@ struct HullCapture::Impl {
   std::array<int, 6> targets{};
   std::unique_ptr<UniformBinder> binder;
   std::vector<uint32_t> words;
+  // The patches the control points were uploaded for (LodPatches::key, generation): a camera-dependent layout
+  // (quadtree) puts each camera's leaves in the same per-thread terrain, so evaluate uploads them again on a change.
+  HullProgram source;
+  int slots = 0;
+  const void* key = nullptr;
+  uint64_t generation = 0;
   int levelWritesRewritten = 0; // llvmpipe: dynamically indexed level writes made constant-index (constantLevelWrites)
 };
 
@@ -484,6 +490,10 @@ std::unique_ptr<HullCapture> HullCapture::create(gltest::GlContext& ctx, const H
   }
   gl.glBindBuffer(GL_SHADER_STORAGE_BUFFER, m.levels);
   gl.glBufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(m.patchCount * 7 * 4), nullptr, GL_DYNAMIC_READ);
+  m.source = program;
+  m.slots = slots;
+  m.key = patches.key();
+  m.generation = patches.generation();
   m.binder = std::make_unique<UniformBinder>(gl, m.program);
   if (!m.binder->create(program, patches, errors)) return nullptr;
   if (!gltest::checkGl(gl, "setting up the hull shader's draw", error)) {
@@ -499,10 +509,22 @@ bool HullCapture::evaluate(const verify::LodPatches& patches, const lod::Camera&
                            std::vector<lod::PatchLod>& out, std::string& error) {
   Impl& m = *impl_;
   const gltest::GlFunctions& gl = m.ctx->gl;
-  if (patches.size() != m.patchCount) {
-    error = "the hull shader's capture was built for " + std::to_string(m.patchCount) + " patches, not " +
-            std::to_string(patches.size());
-    return false;
+  if (patches.key() != m.key || patches.generation() != m.generation || patches.size() != m.patchCount) {
+    // Other patches (a quadtree's next camera): their control points, in the same layout of vertex attributes.
+    std::vector<float> data;
+    int slots = 0;
+    std::vector<Diagnostic> errors;
+    if (!controlPointData(m.source, patches, data, slots, errors) || slots != m.slots) {
+      error = "the hull shader's control points of the camera's patches: " + formatDiagnostics(errors);
+      return false;
+    }
+    gl.glBindBuffer(GL_ARRAY_BUFFER, m.vertices);
+    gl.glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(data.size() * sizeof(float)), data.data(), GL_STATIC_DRAW);
+    gl.glBindBuffer(GL_SHADER_STORAGE_BUFFER, m.levels);
+    gl.glBufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(patches.size() * 7 * 4), nullptr, GL_DYNAMIC_READ);
+    m.patchCount = patches.size();
+    m.key = patches.key();
+    m.generation = patches.generation();
   }
   const size_t n = m.patchCount;
   gl.glUseProgram(m.program);

@@ -14,6 +14,8 @@
 #                 full-screen culled patch between the old visibility grid's points is a hole (exit 1, the patch named),
 #                 the same with a view smaller than the finest sub-rectangle is UNDECIDED (exit 1, listed, in the JSON);
 #                 a distance shader without height bounds (height scale 40) shows holes on random cameras
+#   CASE=quadtree tests/oracle/data/gpu_lod/quadtree_mirror.toml on one thread, built-in and lod.shader: each camera's
+#                 leaves uploaded (none of the factors differs from the C++ build)
 #   CASE=bad      bad shaders (tests/oracle/data/gpu_lod): compile error -> exit 2 naming FILE:LINE; no lodMain and a
 #                 wrong signature -> exit 2 with a clear message; a uniform or HLSL global in a lodMain file (it would
 #                 read 0) -> exit 2 at its declaration; a shader yielding NaN -> holes (exit 1)
@@ -198,6 +200,22 @@ elseif(CASE STREQUAL "visibility")
     message(FATAL_ERROR "gpu_lod_visibility: no height bounds: expected holes (exit 1); got ${rc}: ${err}\n${out}")
   endif()
   message("gpu_lod_visibility: full-screen hole, undecided below the finest sub-rectangle, no height bounds -> holes: as expected")
+elseif(CASE STREQUAL "quadtree")
+  # One thread: its terrain scratch holds both cameras' leaves in turn (the same count, mirrored), so the GPU inputs
+  # must be uploaded again for the second camera (LodPatches::generation); stale inputs would differ from the C++ build.
+  foreach(shader "")
+    set(cams --threads 1)
+    if(shader STREQUAL "")
+      sweep(${data}/quadtree_mirror.toml --set lod.evaluate=gpu)
+    else()
+      sweep(${data}/quadtree_mirror.toml --set lod.scheme=distance_pow2 --set lod.shader=${shader})
+    endif()
+    string(REGEX MATCH "factor differs from the GPU build \\(C\\+\\+ [a-z_0-9]+\\): ([0-9]+) of ([0-9]+) factors" line "${out}")
+    if(NOT rc EQUAL 0 OR NOT line OR NOT CMAKE_MATCH_1 EQUAL 0 OR NOT CMAKE_MATCH_2 EQUAL 948)
+      message(FATAL_ERROR "gpu_lod_quadtree: ${shader}: expected 0 of 948 factors (2 cameras x 79 leaves x 6) to differ, exit 0; got ${rc}: ${err}\n${out}")
+    endif()
+    message("gpu_lod_quadtree: ${line}")
+  endforeach()
 else()
   message(FATAL_ERROR "gpu_lod_test.cmake: unknown CASE '${CASE}'")
 endif()
