@@ -79,8 +79,8 @@ struct Layout {
   // heightmap_grid (needs displacement.kind = "raw" or a generator; texture size = cells_per_patch * k + 1)
   int cellsPerPatch = 64;                  // layout.cells_per_patch (>= 1)
   float cellSize = 1;                      // layout.cell_size (> 0): world size of one heightmap cell
-  // quadtree (centred on layout.center; corners: layout.corners, "reconstructed" = node origin + i * leaf size in
-  // float per root, "shared" = from the integer lattice in double)
+  // quadtree (centred on layout.center; corners: layout.corners, "reconstructed" = per root, root origin +
+  // (i / 2^max_depth) * root_size in float, "shared" = from the integer lattice in double; docs/verify.md, "Quadtree")
   float rootSize = 64;                     // layout.root_size (> 0): world size of a root node
   int rootsX = 1, rootsZ = 1;              // layout.roots_x, layout.roots_z (1..64)
   int maxDepth = 5;                        // layout.max_depth (0..10): leaves are root_size / 2^max_depth

@@ -283,3 +283,17 @@ TEST_CASE("quadtree: unbalanced, the jumps beyond 2x are found and reported with
   CHECK(large > 0);
   CHECK(r.total.cracks > 0);
 }
+
+TEST_CASE("quadtree: float geometry that cannot hold the leaves is refused naming layout.root_size",
+          "[verify][quadtree]") {
+  for (const char* size : {"1e-30", "1e30", "1e-5"}) {
+    INFO(size);
+    const Scene s = loadExample(kExample, {std::string("layout.root_size=") + size, "layout.center=[1000000.0, 0.0]",
+                                           "displacement.resolution=65"});
+    const TerrainResult r = prepareTerrain(s);
+    CHECK_FALSE(r.ok);
+    CHECK(r.error.find("layout.root_size") == 0);
+  }
+  // The same root size near the origin fits.
+  CHECK(prepareTerrain(loadExample(kExample, {"layout.root_size=1e-5", "displacement.resolution=65"})).ok);
+}
