@@ -45,8 +45,8 @@ int readBounded(const std::string& path, size_t limit, std::string& out) {
   return f.bad() ? 0 : 1;
 }
 
-// Scene::contentHash: the text, each override, the raw heightmap's texels (after displacement.format) and the
-// lod.shader file, each part after a tag byte and its size (Fnv1a64::tag). False with error: the shader cannot be
+// Scene::contentHash: the text, each override, the raw heightmap's texels (after displacement.format), the
+// lod.shader file and (layout.kind = "patches") layout.file, each part after a tag byte and its size (Fnv1a64::tag). False with error: the shader cannot be
 // read (it was there when the key was read) or is larger than kMaxSceneBytes.
 // The files a shader #includes ("..." and <...>, relative to the including file), depth first, each hashed with
 // its name as written; one that cannot be read is left to the shader's compiler to report.
@@ -113,6 +113,17 @@ bool hashSceneContent(const std::string& text, const std::vector<std::string>& o
     h.tag(4, bytes.size());
     h.add(bytes);
     hashIncludes(h, s.lod.evaluationShader, bytes, 0);
+  }
+  if (s.layout.kind == LayoutKind::Patches && !s.layout.file.empty()) { // layout.file's bytes, as read
+    std::string bytes;
+    const int rc = readBounded(s.layout.file, kMaxSceneBytes, bytes);
+    if (rc <= 0) {
+      error = "layout.file: " + s.layout.file +
+              (rc < 0 ? ": larger than " + std::to_string(kMaxSceneBytes) + " bytes" : std::string(": cannot read it"));
+      return false;
+    }
+    h.tag(7, bytes.size());
+    h.add(bytes);
   }
   s.contentHash = h.h;
   return true;
