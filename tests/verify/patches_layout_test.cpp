@@ -197,8 +197,8 @@ TEST_CASE("patches layout: a big square beside two small ones gets exact sizes, 
   CHECK(d.patches[2].tile.size[Ueq0] == 2.0f);
   CHECK_FALSE(d.patches[1].tile.oddV);
   CHECK(d.patches[2].tile.oddV);
-  CHECK(d.patches[1].tile.farCorner[Ueq0] == d.patches[0].lod.corners[2]);
-  CHECK(d.patches[2].tile.farCorner[Ueq0] == d.patches[0].lod.corners[0]);
+  CHECK(d.patches[1].tile.farCorner[Ueq0] == d.patches[0].lod.corners[3]); // (2, 2): the big edge's other end
+  CHECK(d.patches[2].tile.farCorner[Ueq0] == d.patches[0].lod.corners[1]); // (2, 0)
 }
 
 TEST_CASE("patches layout: the lattice step is the coordinates' common power of two, sizes any integer",
@@ -239,7 +239,7 @@ TEST_CASE("patches layout: each bad file is refused naming the file, the line an
       {"empty.obj", "empty.obj:1:", "no patches: the file holds no face"},
       {"line_element.obj", "line_element.obj:3:", "OBJ statement 'l' is not read"},
       {"missing_column.csv", "missing_column.csv:2:", "header: missing column 'z2'"},
-      {"bad_number.csv", "bad_number.csv:3:", "column x1 (field 3): '1,5' is not a number"},
+      {"bad_number.csv", "bad_number.csv:3:", "column x1 (field 3): 'two' is not a number"},
       {"header_only.csv", "header_only.csv:1:", "no patches: a header without rows"},
       {"short_row.csv", "short_row.csv:3:", "a row of 7 fields (the header has 8)"},
   };
