@@ -262,3 +262,20 @@ TEST_CASE("patches layout: the file's bytes are part of the scene's content hash
   writeFile(file, "x0,z0,x1,z1,x2,z2,x3,z3\n0,0,1,0,0,1,1,1\n\n");
   CHECK(loadExample("grid.toml", o).contentHash != a);
 }
+
+TEST_CASE("patches layout: the example scene's own layout is watertight with the pow2 clamp and cracks without",
+          "[verify][patches]") {
+  // docs/examples/patches.toml: patches.obj, a 2:1 balanced refinement of 136 squares of 1 to 16 world units.
+  const Terrain t = prepared(loadExample("patches.toml"));
+  REQUIRE(t.patchCount() == 136);
+  CHECK(t.data().adjacency);
+  const Report clamped = checkScene(t, t.scene().camera);
+  CHECK(verdictOf(clamped.stats) == Verdict::Watertight);
+  CHECK(clamped.stats.edgesChecked == 284);
+  const Terrain none = prepared(loadExample("patches.toml", {"lod.adjacency_clamp=none"}));
+  const Report cracked = checkScene(none, none.scene().camera);
+  CHECK(verdictOf(cracked.stats) == Verdict::Cracks);
+  CHECK(cracked.stats.cracks == 70);
+  for (const Finding& f : cracked.findings) // every crack at a size jump: side a the larger patch
+    CHECK(f.a.patch.level == f.b.patch.level + 1);
+}
