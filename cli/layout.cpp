@@ -60,13 +60,13 @@ int runLayout(const LayoutArgs& a) {
   commitAll(files, n);
 
   if (!a.scene.quiet && a.obj != "-" && a.csv != "-") {
-    std::set<float> sizes;
-    for (const vf::PatchGeometry& p : layout.patches()) sizes.insert(p.corners[1].x - p.corners[0].x);
+    std::set<int> levels;
+    for (const vf::PatchGeometry& p : layout.patches()) levels.insert(p.ref.level);
     std::string to;
     for (const std::string* f : {&a.obj, &a.csv})
       if (!f->empty()) to += (to.empty() ? "" : " and ") + quotePath(*f);
-    writeStdout("layout: " + std::to_string(layout.patchCount()) + " patches (" + std::to_string(sizes.size()) +
-                (sizes.size() == 1 ? " size" : " sizes") + ") written to " + to + "\n");
+    writeStdout("layout: " + std::to_string(layout.patchCount()) + " patches (" + std::to_string(levels.size()) +
+                (levels.size() == 1 ? " level" : " levels") + ") written to " + to + "\n");
   }
   return kExitClean;
 }

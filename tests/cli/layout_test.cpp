@@ -43,7 +43,7 @@ TEST_CASE("layout: the default scene written as OBJ and CSV checks like tile rin
   const std::string obj = dir + "/terrain_layout.obj", csv = dir + "/terrain_layout.csv";
   clitest::Result r = run({"layout", kTerrain, "--obj", obj, "--csv", csv});
   REQUIRE(r.status == 0);
-  CHECK(r.out == "layout: 10240 patches (3 sizes) written to '" + obj + "' and '" + csv + "'\n");
+  CHECK(r.out == "layout: 10240 patches (3 levels) written to '" + obj + "' and '" + csv + "'\n");
   CHECK(clitest::readFile(csv).rfind("x0,z0,x1,z1,x2,z2,x3,z3\n", 0) == 0);
   const std::string noClamp = "lod.adjacency_clamp=none"; // so that there are findings to compare
   const std::string a = dir + "/layout_rings.json";
