@@ -160,8 +160,10 @@ TEST_CASE("patches layout: a grid scene read back gives the grid's reports, with
 TEST_CASE("patches layout: a big square beside two small ones gets exact sizes, levels and neighbour lists",
           "[verify][patches]") {
   const std::string file = tmpFile("big_and_two_small.csv");
-  // Patch 0: [0, 2] x [0, 2]; patch 1: [2, 3] x [0, 1]; patch 2: [2, 3] x [1, 2] (corners in any order).
-  writeFile(file, "x0,z0,x1,z1,x2,z2,x3,z3\n0,0,2,0,0,2,2,2\n3,1,2,0,3,0,2,1\n2,1,3,1,2,2,3,2\n");
+  // Patch 0: [0, 2] x [0, 2]; patch 1: [2, 3] x [0, 1]; patch 2: [2, 3] x [1, 2] (corners in any order). Also read:
+  // a byte order mark, CRLF, a quoted column name, y columns (ignored), spaces, a comment and a blank line.
+  writeFile(file, "\xEF\xBB\xBF\"x0\",y0,z0,x1,z1,x2,z2,x3,z3\r\n# big first\r\n0,9,0,2,0,0,2,2,2\r\n\r\n"
+                  "3, 9, 1, 2,0,3,0,2,1\n2,9,1,3,1,2,2,3,2\n");
   const Terrain t = prepared(loadExample("grid.toml", {"layout.kind=\"patches\"", "layout.file=\"" + file + "\""}));
   const detail::TerrainData& d = t.data();
   REQUIRE(d.patches.size() == 3);
