@@ -98,6 +98,15 @@ int runSweep(const SweepArgs& a);
 CLI::App* addMerge(CLI::App& app, MergeArgs& a);
 int runMerge(const MergeArgs& a);
 
+// ---- layout (cli/layout.cpp): a scene's patches written as a layout.kind = "patches" file.
+struct LayoutArgs {
+  SceneArgs scene;  // SCENE, --set, --eye, --target, -q (the other scene options are not registered)
+  std::string obj;  // --obj FILE
+  std::string csv;  // --csv FILE
+};
+CLI::App* addLayout(CLI::App& app, LayoutArgs& a);
+int runLayout(const LayoutArgs& a);
+
 // ---- compare, driver-check (cli/compare.cpp, cli/driver_check.cpp; their report: cli/compare_report.h). Exit 0
 // same, 1 differs, 2 bad input, 3 internal.
 struct CompareArgs {

@@ -1,5 +1,5 @@
-// fftess: the command-line tool. Subcommands: tessellate, explain, check, sweep, compare, driver-check, bench
-// (docs/cli.md).
+// fftess: the command-line tool. Subcommands: tessellate, explain, check, sweep, compare, driver-check, bench,
+// merge, layout (docs/cli.md).
 // Exit statuses: 0 clean, 1 cracks found, 2 bad usage or input, 3 internal error. Errors go to stderr.
 #include "commands.h"
 #include "common.h"
@@ -59,6 +59,8 @@ int main(int argc, char** argv) {
   CLI::App* compare = addCompare(app, compareArgs);
   DriverCheckArgs driverArgs;
   CLI::App* driver = addDriverCheck(app, driverArgs);
+  LayoutArgs layoutArgs;
+  CLI::App* layout = addLayout(app, layoutArgs);
 
   std::string names;
   bool known = false;
@@ -92,6 +94,7 @@ int main(int argc, char** argv) {
     if (merge->parsed()) return runMerge(mergeArgs);
     if (compare->parsed()) return runCompare(compareArgs);
     if (driver->parsed()) return runDriverCheck(driverArgs);
+    if (layout->parsed()) return runLayout(layoutArgs);
     if (bench->parsed()) {
       benchArgs.passThrough = bench->remaining();
       return runBench(benchArgs, argv[0]);

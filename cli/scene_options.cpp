@@ -90,6 +90,7 @@ std::vector<FileArg> sceneInputs(const SceneArgs& a, const vf::Scene* scene) {
     const std::string dir = slash == std::string::npos ? "." : a.scene.substr(0, slash + 1);
     in.push_back({"(the scene's displacement.file)", raw.front() == '/' ? raw : dir + "/" + raw});
   }
+  if (scene->layout.kind == vf::LayoutKind::Patches) in.push_back({"(the scene's layout.file)", scene->layout.file});
   return in;
 }
 

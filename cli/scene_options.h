@@ -34,7 +34,7 @@ int verdictStatus(vf::Verdict v, bool failOnTJunctions);
 int sweepStatus(const vf::SweepResult& res, vf::Verdict v, bool failOnTJunctions);
 
 // --json and --svg as refuseSameFiles outputs; the inputs of a scene: SCENE, and with the loaded scene the files it
-// reads (lod.shader, displacement.file). load() refuses reports that are one of those.
+// reads (lod.shader, displacement.file, layout.file). load() refuses reports that are one of those.
 std::vector<FileArg> reportArgs(const SceneArgs& a);
 std::vector<FileArg> sceneInputs(const SceneArgs& a, const vf::Scene* scene);
 

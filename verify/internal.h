@@ -161,6 +161,9 @@ void cameraLayout(const TerrainData& prepared, const Camera& camera, TerrainData
 // (linkLattice). False with error "FILE:LINE: what is wrong" for a patch that is not an axis-aligned square, patches
 // that overlap or leave a gap inside their bounding rectangle, edges that meet without nesting.
 bool buildPatchesLayout(const Scene& s, TerrainData& t, std::string& error);
+// d = a - b in double, true when that is exact (TwoSum's error term is 0; false only for floats of magnitudes more
+// than 2^28 apart). The patches file's sides and lattice are decided with it.
+bool exactDifference(float a, float b, double& d);
 
 // The same point, compared with == per component (+0 equals -0, NaN equals nothing): the check's "same bits" for
 // points that are never NaN once finite() holds. finite: every component finite.

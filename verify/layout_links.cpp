@@ -31,12 +31,18 @@ struct Link {
 std::string overlapMessage(const TerrainData& t, int32_t a, int32_t b, const char* what) {
   const TerrainPatch& A = t.patches[static_cast<size_t>(a)];
   const TerrainPatch& B = t.patches[static_cast<size_t>(b)];
+  // layout.kind = "patches": the file's lines first (patch i is the file's i-th patch).
+  const Layout& L = t.scene.layout;
+  std::string where;
+  if (L.kind == LayoutKind::Patches && L.patchList && size_t(std::max(a, b)) < L.patchList->size())
+    where = L.file + ":" + std::to_string((*L.patchList)[size_t(a)].line) + " and line " +
+            std::to_string((*L.patchList)[size_t(b)].line) + ": ";
   char buf[320];
   std::snprintf(buf, sizeof buf,
                 "patches %d (x %.9g, z %.9g, size %.9g) and %d (x %.9g, z %.9g, size %.9g) %s", a,
                 double(A.corners[0].x), double(A.corners[0].z), double(A.corners[1].x - A.corners[0].x), b,
                 double(B.corners[0].x), double(B.corners[0].z), double(B.corners[1].x - B.corners[0].x), what);
-  return buf;
+  return where + buf;
 }
 
 // The links across the lines of one axis: low holds the edges whose patch lies below the line (its +x or +z edge,

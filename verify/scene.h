@@ -357,7 +357,8 @@ struct Scene {
   Camera camera;               // [camera]
   std::vector<Camera> cameraPath; // [[camera_path]]: each entry a full camera table (missing keys from [camera])
   // What the verdict depends on, hashed by the loader (sceneContentHash): FNV-1a 64 over the scene text, each
-  // override, the heightmap's texels and the lod.shader file's bytes. Shards of one sweep must agree (fftess merge).
+  // override, the heightmap's texels, the lod.shader file's bytes and (layout.kind = "patches") layout.file's bytes.
+  // Shards of one sweep must agree (fftess merge).
   uint64_t contentHash = 0;
 };
 

@@ -45,8 +45,8 @@ int readBounded(const std::string& path, size_t limit, std::string& out) {
   return f.bad() ? 0 : 1;
 }
 
-// Scene::contentHash: the text, each override, the raw heightmap's texels (after displacement.format) and the
-// lod.shader file, each part after a tag byte and its size (Fnv1a64::tag). False with error: the shader cannot be
+// Scene::contentHash: the text, each override, the raw heightmap's texels (after displacement.format), the
+// lod.shader file and (layout.kind = "patches") layout.file, each part after a tag byte and its size (Fnv1a64::tag). False with error: the shader cannot be
 // read (it was there when the key was read) or is larger than kMaxSceneBytes.
 // The files a shader #includes ("..." and <...>, relative to the including file), depth first, each hashed with
 // its name as written; one that cannot be read is left to the shader's compiler to report.
@@ -73,6 +73,21 @@ static void hashIncludes(Fnv1a64& h, const std::string& file, const std::string&
   }
 }
 
+// One file the scene names: its bytes after the tag and their size. False with error "KEY: PATH: why" when it cannot
+// be read (`unreadable`) or holds more than kMaxSceneBytes.
+static bool hashFile(Fnv1a64& h, unsigned char tag, const char* key, const std::string& path, const char* unreadable,
+                     std::string& bytes, std::string& error) {
+  const int rc = readBounded(path, kMaxSceneBytes, bytes);
+  if (rc <= 0) {
+    error = std::string(key) + ": " + path +
+            (rc < 0 ? ": larger than " + std::to_string(kMaxSceneBytes) + " bytes" : ": " + std::string(unreadable));
+    return false;
+  }
+  h.tag(tag, bytes.size());
+  h.add(bytes);
+  return true;
+}
+
 bool hashSceneContent(const std::string& text, const std::vector<std::string>& overrides, Scene& s, std::string& error) {
   Fnv1a64 h;
   h.tag(0, text.size());
@@ -90,30 +105,18 @@ bool hashSceneContent(const std::string& text, const std::vector<std::string>& o
       h.add(&b, sizeof b); // host order (little endian on every target fftess builds for)
     }
   }
+  std::string bytes;
   if (!s.lod.shader.empty()) {
-    std::string bytes;
-    const int rc = readBounded(s.lod.shader, kMaxSceneBytes, bytes);
-    if (rc <= 0) {
-      error = "lod.shader: " + s.lod.shader + (rc < 0 ? ": larger than " + std::to_string(kMaxSceneBytes) + " bytes"
-                                                       : std::string(": cannot read the shader"));
-      return false;
-    }
-    h.tag(3, bytes.size());
-    h.add(bytes);
+    if (!hashFile(h, 3, "lod.shader", s.lod.shader, "cannot read the shader", bytes, error)) return false;
     hashIncludes(h, s.lod.shader, bytes, 0);
   }
   if (!s.lod.evaluationShader.empty()) {
-    std::string bytes;
-    const int rc = readBounded(s.lod.evaluationShader, kMaxSceneBytes, bytes);
-    if (rc <= 0) {
-      error = "lod.evaluation_shader: " + s.lod.evaluationShader +
-              (rc < 0 ? ": larger than " + std::to_string(kMaxSceneBytes) + " bytes" : std::string(": cannot read it"));
-      return false;
-    }
-    h.tag(4, bytes.size());
-    h.add(bytes);
+    if (!hashFile(h, 4, "lod.evaluation_shader", s.lod.evaluationShader, "cannot read it", bytes, error)) return false;
     hashIncludes(h, s.lod.evaluationShader, bytes, 0);
   }
+  if (s.layout.kind == LayoutKind::Patches && !s.layout.file.empty() && // layout.file's bytes, as read
+      !hashFile(h, 7, "layout.file", s.layout.file, "cannot read it", bytes, error))
+    return false;
   s.contentHash = h.h;
   return true;
 }

@@ -88,6 +88,21 @@ public:
   std::string error;
 
   [[noreturn]] void fail(const std::string& key, const toml::node* at, const std::string& msg) {
+    error = position(key, at) + ": " + msg;
+    throw Failed{};
+  }
+
+  // A file the key names is bad (layout.file): "WHERE: msg (POSITION)", the data file's own position (FILE:LINE)
+  // first, then where the key was given as fail() names it.
+  [[noreturn]] void failInFile(const std::string& where, const std::string& key, const toml::node* at,
+                               const std::string& msg) {
+    error = where + ": " + msg + " (" + position(key, at) + ")";
+    throw Failed{};
+  }
+
+  // Where a key was given: "FILE:LINE:COL: key", "--set key", or "--set KEY=VALUE: key" (an override that made or
+  // holds it).
+  std::string position(const std::string& key, const toml::node* at) const {
     std::ostringstream os;
     const std::string* by = nullptr; // an override that made or holds this key: "--set a.b.c=5" for a key "a"
     for (const auto& [k, given] : overridden_) {
@@ -96,16 +111,15 @@ public:
       if (below || above) by = &given;
     }
     if (overridden_.count(key)) {
-      os << "--set " << key << ": " << msg;
+      os << "--set " << key;
     } else if (by) {
-      os << "--set " << *by << ": " << key << ": " << msg;
+      os << "--set " << *by << ": " << key;
     } else {
       os << file_;
       if (at && at->source().begin) os << ":" << at->source().begin.line << ":" << at->source().begin.column;
-      os << ": " << key << ": " << msg;
+      os << ": " << key;
     }
-    error = os.str();
-    throw Failed{};
+    return os.str();
   }
 
   // Checks that every key of tbl is in `known`.

@@ -136,4 +136,14 @@ Terrain layoutFor(const Terrain& terrain, const Camera& camera);
 // patchIndex: 0 .. terrain.patchCount() - 1 (else (0, 0, 0)). u, v in [0, 1].
 glm::vec3 domainPosition(const Terrain& terrain, int patchIndex, float u, float v);
 
+// A terrain's patches as a layout.kind = "patches" file (docs/verify.md, "Patches"; verify/layout_export.cpp), read
+// back to the same patches in the same order with the same corner bits. Every number is the shortest decimal that
+// reads back to the same float. layout: a static layout, or layoutFor's for a camera-dependent one.
+// OBJ: a comment line per entry of `comments`, then "v x height z" once per distinct corner (its bits; the height
+// the vertex shader samples there, ignored when read), then "f a b c d" per patch: corners[0], [2], [3], [1]
+// (counter-clockwise seen from +y).
+std::string layoutObj(const Terrain& layout, const std::vector<std::string>& comments = {});
+// CSV: the header x0,z0,x1,z1,x2,z2,x3,z3, then one row per patch, corners[u + 2v] in that order.
+std::string layoutCsv(const Terrain& layout);
+
 } // namespace fftess::verify
