@@ -17,6 +17,24 @@ Camera makeCamera(glm::vec3 eye, glm::vec3 target, glm::vec3 up, float fovyRadia
   return c;
 }
 
+Camera makeCameraD3d(glm::vec3 eye, glm::vec3 target, glm::vec3 up, float fovyRadians, float zNear, float zFar,
+                     glm::vec2 viewport) {
+  Camera c;
+  c.view = glm::lookAtLH(eye, target, up);
+  c.projection = glm::perspectiveLH_ZO(fovyRadians, viewport.x / viewport.y, zNear, zFar);
+  c.viewport = viewport;
+  c.eye = eye;
+  c.depthZeroToOne = true;
+  return c;
+}
+
+FrustumPlanes frustumPlanes(const Camera& camera) {
+  const glsl::LodFrustum f = glsl::lodFrustumPlanes(detail::toGlsl(camera));
+  FrustumPlanes out;
+  for (int k = 0; k < 6; ++k) out.planes[k] = f.p[k];
+  return out;
+}
+
 const char* schemeName(Scheme scheme) {
   switch (scheme) {
   case Scheme::ScreenSphere:
