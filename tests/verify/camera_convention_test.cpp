@@ -12,6 +12,8 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <fstream>
+#include <iterator>
 
 using namespace fftess;
 using namespace fftess::verify;
@@ -168,31 +170,19 @@ TEST_CASE("camera: the d3d view's x and z rows are the gl view's negated bit for
 
 TEST_CASE("camera: path cameras take the scene camera's convention unless they set their own, bad values are refused",
           "[verify][camera]") {
-  const std::string text = R"(
-[layout]
-kind = "grid"
-[lod]
-scheme = "constant"
-[tessellation]
-partitioning = "integer"
-[camera]
-eye = [0.0, 10.0, -10.0]
-target = [0.0, 0.0, 0.0]
-convention = "d3d"
-[[camera_path]]
-eye = [1.0, 10.0, -10.0]
-[[camera_path]]
-eye = [2.0, 10.0, -10.0]
-convention = "gl"
-)";
-  SceneResult r = parseScene(text);
+  // grid.toml's [camera] set to d3d by an override (applied before the path entries inherit it), two path entries.
+  std::ifstream in(examplePath("grid.toml"));
+  const std::string text = std::string(std::istreambuf_iterator<char>(in), {}) +
+                           "\n[[camera_path]]\neye = [1.0, 10.0, -10.0]\n"
+                           "\n[[camera_path]]\neye = [2.0, 10.0, -10.0]\nconvention = \"gl\"\n";
+  SceneResult r = parseScene(text, "grid_path.toml", {"camera.convention=d3d"}, FFTESS_EXAMPLES_DIR);
   INFO(r.error);
   REQUIRE(r.ok);
   CHECK(r.scene.camera.convention == CameraConvention::D3d);
   REQUIRE(r.scene.cameraPath.size() == 2);
   CHECK(r.scene.cameraPath[0].convention == CameraConvention::D3d);
   CHECK(r.scene.cameraPath[1].convention == CameraConvention::Gl);
-  SceneResult bad = parseScene(text, "<string>", {"camera.convention=vulkan"});
+  SceneResult bad = parseScene(text, "grid_path.toml", {"camera.convention=vulkan"}, FFTESS_EXAMPLES_DIR);
   CHECK_FALSE(bad.ok);
   CHECK(bad.error.find("camera.convention") != std::string::npos);
   CHECK(bad.error.find("\"gl\" | \"d3d\"") != std::string::npos);
