@@ -14,7 +14,8 @@ namespace fftess::cli {
 struct CameraFile {
   std::string path;                   // as given
   std::vector<verify::Camera> cameras; // in file order (at least one)
-  std::vector<int> lines;             // the line each camera starts on
+  std::vector<int> lines;             // the line each camera starts on (one per camera: the count, also after the
+                                      // cameras were moved away)
   uint64_t hash = 0;                  // FNV-1a 64 over the file's bytes (shards of one sweep must agree)
   std::string hashText() const;       // "fnv1a64:%016x"
 };

@@ -138,8 +138,8 @@ static uint64_t parseSeed(const std::string& text) {
 
 // The cameras of a sweep by index (vf::CameraSet): the generator option given, else the scene's camera path, else a
 // flyover of kDefaultFlyover.
-static vf::CameraSet cameraSet(const SweepArgs& a, const vf::Terrain& terrain, uint64_t seed, const CameraFile* file) {
-  if (file) return vf::CameraSet::list(terrain, file->cameras);
+static vf::CameraSet cameraSet(const SweepArgs& a, const vf::Terrain& terrain, uint64_t seed, CameraFile* file) {
+  if (file) return vf::CameraSet::list(terrain, std::move(file->cameras)); // moved: held once
   if (a.orbit > 0) return vf::CameraSet::orbit(terrain, size_t(a.orbit));
   if (a.flyover > 0) return vf::CameraSet::flyover(terrain, size_t(a.flyover));
   if (a.random > 0) return vf::CameraSet::random(terrain, size_t(a.random), seed);
@@ -148,7 +148,7 @@ static vf::CameraSet cameraSet(const SweepArgs& a, const vf::Terrain& terrain, u
 }
 
 static std::string cameraWords(const SweepArgs& a, const vf::Terrain& terrain, uint64_t seed, const CameraFile* file) {
-  if (file) return "cameras file " + file->path + ", " + std::to_string(file->cameras.size()) + " cameras";
+  if (file) return "cameras file " + file->path + ", " + std::to_string(file->lines.size()) + " cameras";
   if (a.orbit > 0) return "orbit of " + std::to_string(a.orbit);
   if (a.flyover > 0) return "flyover of " + std::to_string(a.flyover);
   if (a.random > 0) return std::to_string(a.random) + " random, seed " + std::to_string(seed);
@@ -219,11 +219,11 @@ namespace {
 class SweepRun {
 public:
   SweepRun(const SweepArgs& a, const SweepPlan& plan, const vf::Terrain& terrain, const vf::CheckOptions& opt,
-           AtomicFile* jsonFile, AtomicFile* svgFile, const CameraFile* file)
+           AtomicFile* jsonFile, AtomicFile* svgFile, CameraFile* file)
       : a_(a), plan_(plan), terrain_(terrain), opt_(opt), cams_(cameraSet(a, terrain, plan.seed, file)),
         how_(cameraWords(a, terrain, plan.seed, file)), requested_(plan.shareOf(cams_.size())), jsonFile_(jsonFile),
         svgFile_(svgFile) {
-    if (file) camerasFile_ = {{"path", file->path}, {"hash", file->hashText()}, {"cameras", file->cameras.size()}};
+    if (file) camerasFile_ = {{"path", file->path}, {"hash", file->hashText()}, {"cameras", file->lines.size()}};
     tally_.countOffScreen = a.offscreen;
   }
   void beginJson();
@@ -435,7 +435,7 @@ int runSweep(const SweepArgs& a) {
   std::unique_ptr<CameraFile> file;
   if (!a.cameras.empty()) file = std::make_unique<CameraFile>(readCameraFile(a.cameras, terrain.scene().camera));
   SweepRun sweep(a, plan, terrain, opt, reports.json(), reports.svg(), file.get());
-  file.reset(); // the sweep's CameraSet holds the cameras
+  file.reset(); // its cameras were moved into the sweep's CameraSet
   const bool talk = !a.quiet && a.json != "-";
   const std::string& sceneName = terrain.scene().name;
   const std::string label = a.label.empty() ? (sceneName.empty() ? a.scene : sceneName) : a.label;
