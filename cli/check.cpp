@@ -182,10 +182,14 @@ std::string checkText(const CheckArgs& a, const vf::Scene& scene, const vf::Came
   std::string text = "fftess check " + a.scene + (scene.name.empty() ? "" : " (" + scene.name + ")") + "\n";
   for (const std::string& s : overridesOf(a)) text += "  --set " + s + "\n";
   char buf[200];
-  std::snprintf(buf, sizeof buf, "  camera eye (%g, %g, %g) target (%g, %g, %g), %dx%d\n", static_cast<double>(cam.eye.x),
+  std::snprintf(buf, sizeof buf, "  camera eye (%g, %g, %g) target (%g, %g, %g), %dx%d", static_cast<double>(cam.eye.x),
                 static_cast<double>(cam.eye.y), static_cast<double>(cam.eye.z), static_cast<double>(cam.target.x),
                 static_cast<double>(cam.target.y), static_cast<double>(cam.target.z), cam.width, cam.height);
   text += buf;
+  if (cam.convention != vf::CameraConvention::Gl) text += std::string(", ") + vf::toString(cam.convention) + " convention";
+  if (!a.cameras.empty())
+    text += " (camera " + std::to_string(a.cameraIndexGiven ? a.cameraIndex : 0) + " of " + a.cameras + ")";
+  text += "\n";
   text += statsText(r.stats, a.offscreen);
   FactorDiffTally gpuDiffs; // lod.evaluate = "gpu" / lod.shader (cli/gpu_lod.h)
   gpuDiffs.add(0, full);
