@@ -1,5 +1,6 @@
 // fftess check SCENE: run verify/ on one camera, print a summary and one line per finding, write the JSON / SVG
 // reports atomically, and turn the verdict into an exit status.
+#include "camera_file.h"
 #include "causes.h"
 #include "commands.h"
 #include "common.h"
@@ -85,6 +86,9 @@ CLI::App* addCheck(CLI::App& app, CheckArgs& a) {
   sub->add_option_function<int>(
       "--path-camera", [&a](const int& n) { a.pathCamera = n, a.pathCameraGiven = true; },
       "Use camera N of the scene's [[camera_path]] instead of [camera] (0 is the first)");
+  sub->add_option_function<int>(
+      "--camera-index", [&a](const int& n) { a.cameraIndex = n, a.cameraIndexGiven = true; },
+      "With --cameras FILE: check camera N of the file (0 is the first); without it the file must hold one camera");
   sub->add_option("--show", a.show, "Finding lines to print (default 20; all are in --json)")->capture_default_str();
   sub->add_flag("--mesh", a.mesh, "Also run the whole-mesh check (full tessellation) and compare the two verdicts");
   return sub;
@@ -97,10 +101,33 @@ void checkCheckArgs(const CheckArgs& a) {
   if (a.show < 0) throw UsageError("--show " + std::to_string(a.show) + ": must be >= 0");
   if (a.pathCameraGiven && a.pathCamera < 0)
     throw UsageError("--path-camera " + std::to_string(a.pathCamera) + ": must be >= 0 (0 is the path's first camera)");
+  if (a.cameraIndexGiven && a.cameras.empty())
+    throw UsageError("--camera-index " + std::to_string(a.cameraIndex) + ": needs --cameras FILE");
+  if (a.cameraIndexGiven && a.cameraIndex < 0)
+    throw UsageError("--camera-index " + std::to_string(a.cameraIndex) + ": must be >= 0 (0 is the file's first camera)");
+  if (a.pathCameraGiven && !a.cameras.empty())
+    throw UsageError("--path-camera and --cameras: give only one camera source");
 }
 
-// The scene's [camera], or with --path-camera N its camera path's camera N.
-vf::Camera checkCamera(const CheckArgs& a, const vf::Scene& scene) {
+// --cameras FILE: its one camera, or camera --camera-index N. source: the report's "cameras_file".
+vf::Camera fileCamera(const CheckArgs& a, const vf::Scene& scene, json& source) {
+  const CameraFile f = readCameraFile(a.cameras, scene.camera);
+  const size_t n = f.cameras.size();
+  if (!a.cameraIndexGiven && n != 1)
+    throw UsageError("--cameras " + quotePath(a.cameras) + ": holds " + std::to_string(n) +
+                     " cameras; check takes one: pick it with --camera-index N (0 is the first), or run fftess sweep "
+                     "--cameras");
+  const size_t i = a.cameraIndexGiven ? static_cast<size_t>(a.cameraIndex) : 0;
+  if (i >= n)
+    throw UsageError("--camera-index " + std::to_string(a.cameraIndex) + ": " + quotePath(a.cameras) + " holds " +
+                     std::to_string(n) + " cameras");
+  source = {{"path", a.cameras}, {"hash", f.hashText()}, {"cameras", n}, {"index", i}, {"line", f.lines[i]}};
+  return f.cameras[i];
+}
+
+// The scene's [camera], or with --path-camera N its camera path's camera N, or with --cameras FILE the file's.
+vf::Camera checkCamera(const CheckArgs& a, const vf::Scene& scene, json& source) {
+  if (!a.cameras.empty()) return fileCamera(a, scene, source);
   if (!a.pathCameraGiven) return scene.camera;
   if (static_cast<size_t>(a.pathCamera) >= scene.cameraPath.size())
     throw UsageError("--path-camera " + std::to_string(a.pathCamera) + ": the scene's camera path has " +
@@ -155,10 +182,14 @@ std::string checkText(const CheckArgs& a, const vf::Scene& scene, const vf::Came
   std::string text = "fftess check " + a.scene + (scene.name.empty() ? "" : " (" + scene.name + ")") + "\n";
   for (const std::string& s : overridesOf(a)) text += "  --set " + s + "\n";
   char buf[200];
-  std::snprintf(buf, sizeof buf, "  camera eye (%g, %g, %g) target (%g, %g, %g), %dx%d\n", static_cast<double>(cam.eye.x),
+  std::snprintf(buf, sizeof buf, "  camera eye (%g, %g, %g) target (%g, %g, %g), %dx%d", static_cast<double>(cam.eye.x),
                 static_cast<double>(cam.eye.y), static_cast<double>(cam.eye.z), static_cast<double>(cam.target.x),
                 static_cast<double>(cam.target.y), static_cast<double>(cam.target.z), cam.width, cam.height);
   text += buf;
+  if (cam.convention != vf::CameraConvention::Gl) text += std::string(", ") + vf::toString(cam.convention) + " convention";
+  if (!a.cameras.empty())
+    text += " (camera " + std::to_string(a.cameraIndexGiven ? a.cameraIndex : 0) + " of " + a.cameras + ")";
+  text += "\n";
   text += statsText(r.stats, a.offscreen);
   FactorDiffTally gpuDiffs; // lod.evaluate = "gpu" / lod.shader (cli/gpu_lod.h)
   gpuDiffs.add(0, full);
@@ -216,9 +247,10 @@ std::string checkVerdictLine(vf::Verdict verdict, const vf::Stats& stats, bool c
 
 // The --json and --svg reports, written all or nothing.
 void writeCheckReports(const CheckArgs& a, ReportFiles& reports, const vf::Terrain& terrain, const vf::Camera& cam,
-                       const vf::Report& r, const MeshRun* mesh) {
+                       const vf::Report& r, const MeshRun* mesh, const json& camerasFile) {
   if (!a.json.empty()) {
     json j = checkJson(a, terrain, cam, r, mesh ? &mesh->mesh : nullptr);
+    if (!camerasFile.is_null()) j["cameras_file"] = camerasFile; // --cameras: the file, its hash, the camera's index
     if (mesh) {
       const json d = meshDiffJson(vf::layoutFor(terrain, cam), mesh->diff);
       for (auto it = d.begin(); it != d.end(); ++it) j["mesh"][it.key()] = it.value();
@@ -237,7 +269,8 @@ int runCheck(const CheckArgs& a) {
   ReportFiles reports(a); // output paths are checked before the work
   const vf::Terrain terrain = load(a); // the one terrain build of this command
   const vf::Scene& scene = terrain.scene();
-  const vf::Camera cam = checkCamera(a, scene);
+  json camerasFile; // null unless --cameras
+  const vf::Camera cam = checkCamera(a, scene, camerasFile);
   vf::CheckOptions opt = checkOptions(a, terrain);
   const size_t keep = opt.maxFindings;
   if (a.mesh) opt.maxFindings = static_cast<size_t>(-1); // the mesh comparison needs every finding
@@ -256,7 +289,7 @@ int runCheck(const CheckArgs& a) {
   const int status = mesh.diff.agree() ? verdictStatus(verdict, a.failOnTJunctions) : kExitFindings;
   if (talk) text += checkVerdictLine(verdict, r.stats, a.offscreen, mesh.diff.agree());
   // Reports first (atomically), then the text: a failure writing a report leaves no partial file.
-  writeCheckReports(a, reports, terrain, cam, r, a.mesh ? &mesh : nullptr);
+  writeCheckReports(a, reports, terrain, cam, r, a.mesh ? &mesh : nullptr, camerasFile);
   writeStdout(text);
   flushStdout();
   return status;

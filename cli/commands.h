@@ -66,6 +66,7 @@ struct SceneArgs {
   bool failOnTJunctions = false;
   bool gpuHardware = false; // --gpu-hardware: the GPU LOD path on a GPU's EGL device instead of llvmpipe
   bool offscreen = false;   // --offscreen: findings outside the view frustum count too (vf::CheckOptions::countOffScreen)
+  std::string cameras;      // --cameras FILE: cameras from a CSV / JSON file (cli/camera_file.h)
 };
 
 struct CheckArgs : SceneArgs {
@@ -73,6 +74,8 @@ struct CheckArgs : SceneArgs {
   bool pathCameraGiven = false; // --path-camera was given (any value, negative ones refused)
   int show = 20;       // finding lines printed
   bool mesh = false;   // also run the whole-mesh check and compare
+  int cameraIndex = -1; // --camera-index N: camera N of --cameras FILE
+  bool cameraIndexGiven = false;
 };
 
 struct SweepArgs : SceneArgs {

@@ -140,7 +140,8 @@ json denormalJson(const vf::DenormalFactor& d) {
 
 json cameraJson(const vf::Camera& c) {
   return {{"eye", vec3Json(c.eye)}, {"target", vec3Json(c.target)}, {"up", vec3Json(c.up)},       {"fov_y", c.fovY},
-          {"near", c.nearZ},      {"far", c.farZ},            {"width", c.width},       {"height", c.height}};
+          {"near", c.nearZ},      {"far", c.farZ},            {"width", c.width},       {"height", c.height},
+          {"convention", vf::toString(c.convention)}};
 }
 
 json sceneJson(const SceneArgs& a, const vf::Scene& s) {

@@ -81,7 +81,7 @@ vf::CheckOptions checkOptions(const SceneArgs& a, const vf::Terrain& terrain) {
 std::vector<FileArg> reportArgs(const SceneArgs& a) { return {{"--json", a.json}, {"--svg", a.svg}}; }
 
 std::vector<FileArg> sceneInputs(const SceneArgs& a, const vf::Scene* scene) {
-  std::vector<FileArg> in{{"SCENE", a.scene}};
+  std::vector<FileArg> in{{"SCENE", a.scene}, {"--cameras", a.cameras}};
   if (!scene) return in;
   in.push_back({"(the scene's lod.shader)", scene->lod.shader});
   const std::string& raw = scene->displacement.file; // relative to the scene file's folder
@@ -139,6 +139,11 @@ void addSceneOptions(CLI::App* sub, SceneArgs& a) {
   sub->add_flag("--offscreen", a.offscreen,
                 "Count cracks and T-junctions outside the view frustum too (whole-mesh comparisons, strict CI); "
                 "default: only what the camera sees counts");
+  sub->add_option("--cameras", a.cameras,
+                  "Cameras from FILE: CSV with a header (eye_x,eye_y,eye_z,target_x,target_y,target_z; optional up_x,"
+                  "up_y,up_z,fov_y,near,far,width,height,convention) or, for FILE.json, a JSON array of objects with "
+                  "those fields; what a camera leaves out comes from the scene's [camera] (docs/cli.md)")
+      ->type_name("FILE");
   sub->add_flag("--gpu-hardware", a.gpuHardware,
                 "lod.shader / lod.evaluate = \"gpu\": use a GPU's EGL device (default: Mesa's llvmpipe first)");
 }

@@ -1,5 +1,6 @@
 // fftess sweep SCENE: check a scene from many cameras (the scene's path, an orbit, a flyover, random), with
 // progress and Ctrl-C, tally the findings by cause, print the summary, write the JSON / SVG reports atomically.
+#include "camera_file.h"
 #include "causes.h"
 #include "commands.h"
 #include "common.h"
@@ -96,7 +97,8 @@ CLI::App* addSweep(CLI::App& app, SweepArgs& a) {
               "  fftess sweep docs/examples/terrain.toml\n"
               "  fftess sweep docs/examples/terrain.toml --set lod.adjacency_clamp=none --random 500 --seed 3 "
               "--json sweep.json --svg sweep.svg\n"
-              "Cameras: the scene's [[camera_path]] (or its [camera]) unless --orbit, --flyover or --random is given.\n"
+              "Cameras: the scene's [[camera_path]] (or its [camera]) unless --orbit, --flyover, --random or --cameras "
+              "FILE is given.\n"
               "Ctrl-C stops early and still prints the summary and writes the reports (exit 130 if no crack was found).\n"
               "Exit status: 0 watertight, 1 cracks or holes found, nothing checked or a camera that could not be checked, "
               "2 bad usage or scene, 3 internal error.");
@@ -136,7 +138,8 @@ static uint64_t parseSeed(const std::string& text) {
 
 // The cameras of a sweep by index (vf::CameraSet): the generator option given, else the scene's camera path, else a
 // flyover of kDefaultFlyover.
-static vf::CameraSet cameraSet(const SweepArgs& a, const vf::Terrain& terrain, uint64_t seed) {
+static vf::CameraSet cameraSet(const SweepArgs& a, const vf::Terrain& terrain, uint64_t seed, CameraFile* file) {
+  if (file) return vf::CameraSet::list(terrain, std::move(file->cameras)); // moved: held once
   if (a.orbit > 0) return vf::CameraSet::orbit(terrain, size_t(a.orbit));
   if (a.flyover > 0) return vf::CameraSet::flyover(terrain, size_t(a.flyover));
   if (a.random > 0) return vf::CameraSet::random(terrain, size_t(a.random), seed);
@@ -144,7 +147,8 @@ static vf::CameraSet cameraSet(const SweepArgs& a, const vf::Terrain& terrain, u
   return vf::CameraSet::flyover(terrain, kDefaultFlyover);
 }
 
-static std::string cameraWords(const SweepArgs& a, const vf::Terrain& terrain, uint64_t seed) {
+static std::string cameraWords(const SweepArgs& a, const vf::Terrain& terrain, uint64_t seed, const CameraFile* file) {
+  if (file) return "cameras file " + file->path + ", " + std::to_string(file->lines.size()) + " cameras";
   if (a.orbit > 0) return "orbit of " + std::to_string(a.orbit);
   if (a.flyover > 0) return "flyover of " + std::to_string(a.flyover);
   if (a.random > 0) return std::to_string(a.random) + " random, seed " + std::to_string(seed);
@@ -194,6 +198,8 @@ struct SweepPlan {
 static SweepPlan sweepPlan(const SweepArgs& a) {
   const int generators = a.orbitGiven + a.flyoverGiven + a.randomGiven;
   if (generators > 1) throw UsageError("sweep: give only one of --orbit, --flyover, --random");
+  if (generators > 0 && !a.cameras.empty())
+    throw UsageError("sweep: --cameras FILE is a camera source like --orbit, --flyover and --random: give only one");
   if (a.orbitGiven && a.orbit < 1) throw UsageError("--orbit " + std::to_string(a.orbit) + ": must be >= 1");
   if (a.flyoverGiven && a.flyover < 1) throw UsageError("--flyover " + std::to_string(a.flyover) + ": must be >= 1");
   if (a.randomGiven && a.random < 1) throw UsageError("--random " + std::to_string(a.random) + ": must be >= 1");
@@ -213,10 +219,11 @@ namespace {
 class SweepRun {
 public:
   SweepRun(const SweepArgs& a, const SweepPlan& plan, const vf::Terrain& terrain, const vf::CheckOptions& opt,
-           AtomicFile* jsonFile, AtomicFile* svgFile)
-      : a_(a), plan_(plan), terrain_(terrain), opt_(opt), cams_(cameraSet(a, terrain, plan.seed)),
-        how_(cameraWords(a, terrain, plan.seed)), requested_(plan.shareOf(cams_.size())), jsonFile_(jsonFile),
+           AtomicFile* jsonFile, AtomicFile* svgFile, CameraFile* file)
+      : a_(a), plan_(plan), terrain_(terrain), opt_(opt), cams_(cameraSet(a, terrain, plan.seed, file)),
+        how_(cameraWords(a, terrain, plan.seed, file)), requested_(plan.shareOf(cams_.size())), jsonFile_(jsonFile),
         svgFile_(svgFile) {
+    if (file) camerasFile_ = {{"path", file->path}, {"hash", file->hashText()}, {"cameras", file->lines.size()}};
     tally_.countOffScreen = a.offscreen;
   }
   void beginJson();
@@ -256,6 +263,7 @@ private:
   std::string firstInvalidError_;
   CauseTally tally_;
   FactorDiffTally gpuDiffs_; // lod.evaluate = "gpu" / lod.shader: GPU vs C++ factors (cli/gpu_lod.h)
+  json camerasFile_;         // --cameras: the file, its hash (shards must agree), its camera count; null otherwise
 };
 
 // Into the temporary file (or stdout) now; a FIFO or device is opened only when the report is complete (it would
@@ -268,6 +276,7 @@ void SweepRun::emitJson(const std::string& text) {
 void SweepRun::beginJson() {
   if (!jsonFile_) return;
   json header = sweepHeaderJson(a_, terrain_.scene(), how_);
+  if (!camerasFile_.is_null()) header["cameras_file"] = camerasFile_;
   if (plan_.sharded) header["shard"] = {{"index", plan_.shardK + 1}, {"count", plan_.shardN}};
   header["denormals_flushed"] = vf::denormalRule(terrain_.scene(), opt_).flush; // the rule every camera ran with
   emitJson(sweepJsonBegin(header));
@@ -433,7 +442,11 @@ int runSweep(const SweepArgs& a) {
   // written. A second Ctrl-C kills the process (temporary files removed). Once the work is done, a first Ctrl-C while a
   // report waits for a FIFO's reader ends that wait (AtomicFile: Interrupted, exit 130).
   InterruptGuard interrupts;
-  SweepRun sweep(a, plan, terrain, opt, reports.json(), reports.svg());
+  // --cameras FILE: read whole (each camera validated; a bad file is a usage error before any work).
+  std::unique_ptr<CameraFile> file;
+  if (!a.cameras.empty()) file = std::make_unique<CameraFile>(readCameraFile(a.cameras, terrain.scene().camera));
+  SweepRun sweep(a, plan, terrain, opt, reports.json(), reports.svg(), file.get());
+  file.reset(); // its cameras were moved into the sweep's CameraSet
   const bool talk = !a.quiet && a.json != "-";
   const std::string& sceneName = terrain.scene().name;
   const std::string label = a.label.empty() ? (sceneName.empty() ? a.scene : sceneName) : a.label;

@@ -41,7 +41,12 @@ CameraValues cameraValues(const lod::Camera& camera) {
   v.viewProjectionVulkan = v.projectionVulkan * camera.view;
   v.eye = camera.eye;
   v.viewport = camera.viewport;
-  v.planesGl = gribbHartmann(v.viewProjection, false);
+  // The GL planes of a camera whose projection is already 0..1 (camera.convention = "d3d") come from its depth
+  // [-w, w] twin: third row 2 * row2 - row3 (the inverse of the D3D map above).
+  glm::mat4 projectionGl = camera.projection;
+  if (camera.depthZeroToOne)
+    for (int c = 0; c < 4; ++c) projectionGl[c][2] = 2.0f * camera.projection[c][2] - camera.projection[c][3];
+  v.planesGl = gribbHartmann(camera.depthZeroToOne ? projectionGl * camera.view : v.viewProjection, false);
   v.planesD3d = gribbHartmann(v.viewProjectionD3d, true);
   v.planes = camera.depthZeroToOne ? v.planesD3d : v.planesGl;
   for (glm::vec4& p : v.planes) {
@@ -50,8 +55,12 @@ CameraValues cameraValues(const lod::Camera& camera) {
   }
   const glm::mat4& P = camera.projection;
   v.fovY = 2.0f * std::atan(1.0f / P[1][1]);
-  v.nearPlane = camera.depthZeroToOne ? P[3][2] / P[2][2] : P[3][2] / (P[2][2] - 1.0f);
-  v.farPlane = P[3][2] / (P[2][2] + 1.0f);
+  // s = P[2][3]: -1 for a right-handed view (w = -z_view), +1 for a left-handed one (D3D, w = z_view). Depth 0..1:
+  // near = -s * P[3][2] / P[2][2], far = s * P[3][2] / (s - P[2][2]); depth -1..1: near = -s * P[3][2] /
+  // (P[2][2] + s), far = -s * P[3][2] / (P[2][2] - s) (for s = -1 the same bits as P[3][2] / P[2][2] etc.).
+  const float s = P[2][3] > 0.0f ? 1.0f : -1.0f;
+  v.nearPlane = camera.depthZeroToOne ? -s * P[3][2] / P[2][2] : -s * P[3][2] / (P[2][2] + s);
+  v.farPlane = camera.depthZeroToOne ? s * P[3][2] / (s - P[2][2]) : -s * P[3][2] / (P[2][2] - s);
   return v;
 }
 

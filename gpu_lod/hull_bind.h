@@ -28,11 +28,15 @@ inline Diagnostic diagnostic(SourcePos at, std::string message) {
 //   viewProjectionD3d = projectionD3d * view.
 //   planesGl / planesD3d (left right bottom top near far; Gribb-Hartmann, inward): with r0..r3 the rows of the GL /
 //   D3D view-projection: r3 + r0, r3 - r0, r3 + r1, r3 - r1, near r3 + r2 (GL) / r2 (D3D), far r3 - r2; component
-//   by component, not normalised.
+//   by component, not normalised. The GL view-projection of a camera with depthZeroToOne (camera.convention =
+//   "d3d"): the projection's third row replaced by 2.0f * row2 - row3, times view.
 //   planes: the camera's own convention (planesD3d when depthZeroToOne, else planesGl), each divided component-wise
 //   by its normal's length sqrt((x * x + y * y) + z * z) (float).
-//   fovY = 2 * atan(1 / P[1][1]); near = P[3][2] / (P[2][2] - 1), far = P[3][2] / (P[2][2] + 1) (GL depth) or
-//   near = P[3][2] / P[2][2], far = P[3][2] / (P[2][2] + 1) (depth 0..1); P = the projection, glm's [column][row].
+//   fovY = 2 * atan(1 / P[1][1]); with s = P[2][3] (-1: right-handed view, +1: left-handed, D3D): near =
+//   -s * P[3][2] / (P[2][2] + s), far = -s * P[3][2] / (P[2][2] - s) (GL depth) or near = -s * P[3][2] / P[2][2],
+//   far = s * P[3][2] / (s - P[2][2]) (depth 0..1); P = the projection, glm's [column][row]. The named values
+//   view, projection, view_projection and frustum_planes are the camera's own convention (lod::Camera as toLodCamera
+//   builds it); the *_d3d, *_vulkan and *_gl values have their fixed clip space, from the camera's own view.
 struct CameraValues {
   glm::mat4 view{1.0f}, projection{1.0f}, viewProjection{1.0f}, projectionD3d{1.0f}, viewProjectionD3d{1.0f};
   glm::mat4 projectionVulkan{1.0f}, viewProjectionVulkan{1.0f}; // D3D's depth range and y flipped (Vulkan clip space)

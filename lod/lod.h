@@ -19,7 +19,8 @@
 //   * Camera: view = glm::lookAt (right-handed, the camera looks down -z in view space), projection =
 //     glm::perspective (GLM's default OpenGL clip space: after the divide x, y, z are in [-1, 1], w = -z_view > 0
 //     in front of the camera). Set Camera::depthZeroToOne when the projection came from glm::perspectiveZO
-//     (D3D / Vulkan clip space, z in [0, w]); it changes only the near plane of frustum culling.
+//     (D3D / Vulkan clip space, z in [0, w]); it changes only the near plane of frustum culling. makeCameraD3d
+//     builds D3D's camera (lookAtLH, perspectiveLH_ZO: w = +z_view): every scheme takes it as it is.
 //     Pixels: a clip-space x difference dx/w maps to dx/w * viewport.x / 2 pixels (NDC spans 2 units).
 //   * Matrix-vector products are evaluated as m[0]*x + m[1]*y + m[2]*z + m[3]*w, left to right, column by column
 //     (not GLM's operator*, whose pairing differs); every other expression in the order docs/lod.md states.
@@ -58,6 +59,25 @@ struct Camera {
 // zNear, zFar). fovyRadians in (0, pi); 0 < zNear < zFar; viewport components > 0.
 Camera makeCamera(glm::vec3 eye, glm::vec3 target, glm::vec3 up, float fovyRadians, float zNear, float zFar,
                   glm::vec2 viewport);
+
+// The same camera as a D3D engine builds it: view = glm::lookAtLH(eye, target, up) (D3DXMatrixLookAtLH: left-handed,
+// the camera looks down +z in view space), projection = glm::perspectiveLH_ZO(fovyRadians, viewport.x / viewport.y,
+// zNear, zFar) (D3DXMatrixPerspectiveFovLH's matrix: w = z_view, clip z in [0, w]), depthZeroToOne = true. The same
+// frustum as makeCamera's: in float, the view's x and z rows are makeCamera's negated (bit for bit) and its y row is
+// makeCamera's; the projection's x and y scales are makeCamera's; only the depth row and w's sign differ. Arguments
+// as makeCamera.
+Camera makeCameraD3d(glm::vec3 eye, glm::vec3 target, glm::vec3 up, float fovyRadians, float zNear, float zFar,
+                     glm::vec2 viewport);
+
+// The six frustum planes every scheme culls with (lod/shaders/common.glsl lodFrustumPlanes): the rows of
+// projection * view (Gribb-Hartmann, inward, unnormalised; a point p is inside plane k when
+// dot(planes[k].xyz, p) + planes[k].w >= 0), in D3D's order left (w + x), right (w - x), bottom (w + y), top
+// (w - y), near (w + z, or z alone with depthZeroToOne), far (w - z). Each component is one float sum or difference
+// of the product's rows (the product in lod's column order, common.glsl mulMat).
+struct FrustumPlanes {
+  glm::vec4 planes[6]{};
+};
+FrustumPlanes frustumPlanes(const Camera& camera);
 
 struct Patch {
   glm::vec3 corners[4]{}; // world positions (displaced heights allowed), corners[u + 2v]

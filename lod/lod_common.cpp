@@ -6,15 +6,37 @@
 
 namespace fftess::lod {
 
-Camera makeCamera(glm::vec3 eye, glm::vec3 target, glm::vec3 up, float fovyRadians, float zNear, float zFar,
-                  glm::vec2 viewport) {
+namespace {
+
+Camera cameraOf(const glm::mat4& view, const glm::mat4& projection, glm::vec2 viewport, glm::vec3 eye, bool zeroToOne) {
   Camera c;
-  c.view = glm::lookAt(eye, target, up);
-  c.projection = glm::perspective(fovyRadians, viewport.x / viewport.y, zNear, zFar);
+  c.view = view;
+  c.projection = projection;
   c.viewport = viewport;
   c.eye = eye;
-  c.depthZeroToOne = false;
+  c.depthZeroToOne = zeroToOne;
   return c;
+}
+
+} // namespace
+
+Camera makeCamera(glm::vec3 eye, glm::vec3 target, glm::vec3 up, float fovyRadians, float zNear, float zFar,
+                  glm::vec2 viewport) {
+  return cameraOf(glm::lookAt(eye, target, up), glm::perspective(fovyRadians, viewport.x / viewport.y, zNear, zFar),
+                  viewport, eye, false);
+}
+
+Camera makeCameraD3d(glm::vec3 eye, glm::vec3 target, glm::vec3 up, float fovyRadians, float zNear, float zFar,
+                     glm::vec2 viewport) {
+  return cameraOf(glm::lookAtLH(eye, target, up),
+                  glm::perspectiveLH_ZO(fovyRadians, viewport.x / viewport.y, zNear, zFar), viewport, eye, true);
+}
+
+FrustumPlanes frustumPlanes(const Camera& camera) {
+  const glsl::LodFrustum f = glsl::lodFrustumPlanes(detail::toGlsl(camera));
+  FrustumPlanes out;
+  for (int k = 0; k < 6; ++k) out.planes[k] = f.p[k];
+  return out;
 }
 
 const char* schemeName(Scheme scheme) {

@@ -44,6 +44,9 @@ class CameraSet {
 public:
   // pathCameras (the scene's list is copied); terrain: built (not empty).
   static CameraSet path(const Terrain& terrain);
+  // A list of cameras as given (e.g. read from a camera file; each already valid or reported per camera by the
+  // check): at(i) = cameras[i]. Holds the list (about 64 bytes a camera). terrain: built (not empty).
+  static CameraSet list(const Terrain& terrain, std::vector<Camera> cameras);
   // orbitCameras: radius, height as there (<= 0: the defaults).
   static CameraSet orbit(const Terrain& terrain, size_t count, float radius = 0, float height = 0);
   // flyoverCameras: height as there (<= 0: the default).
@@ -65,7 +68,7 @@ private:
   double cx_ = 0, cz_ = 0, size_ = 0; // the extent's centre and larger side
   double radius_ = 0, height_ = 0;    // orbit radius; orbit / flyover height
   uint64_t seed_ = 0;
-  std::vector<Camera> list_;    // path()
+  std::vector<Camera> list_;    // path(), list()
 };
 
 } // namespace fftess::verify

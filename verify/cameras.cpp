@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
 
 namespace fftess::verify {
 
@@ -46,6 +47,12 @@ CameraSet CameraSet::path(const Terrain& terrain) {
   const Scene& scene = terrain.scene();
   s.list_ = scene.cameraPath.empty() ? std::vector<Camera>{scene.camera} : scene.cameraPath;
   s.count_ = s.list_.size();
+  return s;
+}
+
+CameraSet CameraSet::list(const Terrain& terrain, std::vector<Camera> cameras) {
+  CameraSet s(Kind::List, terrain, cameras.size());
+  s.list_ = std::move(cameras);
   return s;
 }
 

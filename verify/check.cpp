@@ -47,7 +47,8 @@ float perturbFactor(const Fault& f, float x) {
 }
 
 // w = -z of the edge's midpoint (lod's corners) in view space, in float as lod computes a view position:
-// mid = (a + b) * 0.5, view = V[0]*x + V[1]*y + V[2]*z + V[3].
+// mid = (a + b) * 0.5, view = V[0]*x + V[1]*y + V[2]*z + V[3]. cam: the GL view (viewCamera); a D3D camera's w
+// (+z of its left-handed view, whose z row is the GL one negated) has the same bits.
 float midpointW(const lod::Camera& cam, const TerrainPatch& p, int e) {
   const glm::vec3 mid = (p.lod.corners[kEdgeCorners[e][0]] + p.lod.corners[kEdgeCorners[e][1]]) * 0.5f;
   const glm::mat4& v = cam.view;
@@ -79,7 +80,7 @@ void noteDenormals(const TerrainData& t, const std::vector<lod::PatchLod>& facto
 // drawn (lod/'s cull, or the first edge whose factor made the tessellator discard it: discardEdge, -1 if none),
 // its factors, lod/'s record, the projection's w at that edge's midpoint, lod/'s box y range and the decision.
 Hole holeRecord(const TerrainData& t, const TerrainPatch& P, const lod::PatchLod& l, int discardEdge,
-                const VisibilityDecision& vis, const lod::Camera& lodCamera) {
+                const VisibilityDecision& vis, const lod::Camera& view) {
   const bool lodCulled = l.why.culled;
   Hole h;
   h.kind = lodCulled ? HoleKind::CulledWhileVisible : HoleKind::Discarded;
@@ -97,7 +98,7 @@ Hole holeRecord(const TerrainData& t, const TerrainPatch& P, const lod::PatchLod
   h.lod.why = l.why.factor[e];
   h.lod.culled = lodCulled;
   neighbourRule(t, P, e, h.lod);
-  h.midpointW = midpointW(lodCamera, P, e);
+  h.midpointW = midpointW(view, P, e);
   h.lodBoxMinY = h.lodBoxMaxY = P.lod.corners[0].y;
   for (const glm::vec3& c : P.lod.corners) {
     h.lodBoxMinY = std::fmin(h.lodBoxMinY, c.y);
@@ -193,7 +194,7 @@ struct CameraCheck {
   const CheckOptions& options;
   const FaultSite& fault;
   const std::vector<lod::PatchLod>& factors;
-  const lod::Camera& lodCamera;
+  const lod::Camera& viewCamera; // viewCamera(camera): the verifier's geometry (GL whatever camera.convention)
   const DomainCamera& domainCam;
   const FrustumTest& frustum;
   EdgeCache& cache; // edge points; cache.ep and cache.culled are filled by findUndrawnPatches
@@ -204,7 +205,7 @@ struct CameraCheck {
 void recordUndrawn(const CameraCheck& c, size_t i, int discardEdge, const VisibilityDecision& vis) {
   Report& rep = c.rep;
   const bool lodCulled = c.factors[i].why.culled;
-  const Hole h = holeRecord(c.t, c.t.patches[i], c.factors[i], discardEdge, vis, c.lodCamera);
+  const Hole h = holeRecord(c.t, c.t.patches[i], c.factors[i], discardEdge, vis, c.viewCamera);
   if (vis.visibility == Visibility::Undecided) {
     // Neither proven visible nor invisible: never clean (Verdict::Undecided), listed with the hole's record.
     ++rep.stats.undecided;
@@ -360,12 +361,12 @@ void recordFinding(const CameraCheck& c, const EdgeScratch& s, const SharedPart&
     f.gapWorld = v.gap;
     f.gapSide = v.gapSide;
     f.gapVertex = v.gapSide == 0 ? a[v.gapIndex] : pb[v.gapIndex];
-    f.gapPixels = pixelsAt(c.lodCamera, f.gapVertex, f.gapWorld);
+    f.gapPixels = pixelsAt(c.viewCamera, f.gapVertex, f.gapWorld);
     rep.stats.worstGapWorld = std::max(rep.stats.worstGapWorld, f.gapWorld);
     rep.stats.worstGapPixels = std::max(rep.stats.worstGapPixels, f.gapPixels);
   }
   if (v.classification != Classification::Match) // on screen or not (onscreen.cpp)
-    markOnScreen(c.frustum, c.lodCamera, c.camera.nearZ, v, s.fullA.data(), pa.count, part.first, part.last,
+    markOnScreen(c.frustum, c.viewCamera, c.camera.nearZ, v, s.fullA.data(), pa.count, part.first, part.last,
                  pb.data(), pbp.count, f, rep.stats);
   if (rep.findings.size() < c.options.maxFindings) rep.findings.push_back(f);
 }
@@ -484,12 +485,13 @@ Report checkTerrain(const TerrainData& prepared, const Camera& camera, const Che
   const TerrainData& t = prepared.quadtree ? *cache.layout : prepared;
   rep.stats.patches = static_cast<int64_t>(t.patches.size());
   if (!evaluateFactors(t, camera, options, cache, rep)) return rep;
-  const lod::Camera lodCamera = toLodCamera(camera);
   const FaultSite fault = faultSite(options, t.patches.size());
-  injectFactorFault(t, fault, lodCamera, cache.factors);
+  injectFactorFault(t, fault, toLodCamera(camera), cache.factors);
   const DomainCamera domainCam = domainCamera(t, cache.factors); // per-patch domain state (geomorph, mip levels)
-  const FrustumTest frustum(lodCamera);
-  const CameraCheck c{t, camera, options, fault, cache.factors, lodCamera, domainCam, frustum, cache, rep};
+  // The verifier's geometry (frustum, on-screen, pixels) in GL whatever camera.convention: the same frustum.
+  const lod::Camera view = viewCamera(camera);
+  const FrustumTest frustum(view);
+  const CameraCheck c{t, camera, options, fault, cache.factors, view, domainCam, frustum, cache, rep};
   findUndrawnPatches(c);
   checkSharedEdges(c);
   return rep;

@@ -192,7 +192,13 @@ glm::vec3 evalDomain(const TerrainData& t, const TerrainPatch& p, float u, float
 // ---------------------------------------------------------------------------------------------------------------
 // lod_bridge.cpp: the scene's LOD settings -> lod/ calls, per camera.
 
+// What the LOD sees: lod::makeCamera for camera.convention = "gl", lod::makeCameraD3d for "d3d" (left-handed view,
+// depth in [0, w]); fov in radians = fovY * float(pi / 180).
 lod::Camera toLodCamera(const Camera& c);
+// The verifier's own view of the camera, whatever camera.convention says: lod::makeCamera (GL). The frustum test,
+// on-screen decisions, pixel gaps and the projection's w of a hole record use it, so a scene's verdicts change with
+// the convention only through the LOD's factors (docs/verify.md, "camera.convention").
+lod::Camera viewCamera(const Camera& c);
 // Hull-shader factors and lod/'s record of every patch for a camera (lod.h order). Adds the lod/ calls to
 // work.lodEvaluations. Constant scheme: every factor lod.factor, an empty record.
 void computeFactors(const TerrainData& t, const Camera& camera, std::vector<lod::PatchLod>& out, WorkStats& work);

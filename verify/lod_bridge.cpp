@@ -10,10 +10,18 @@
 
 namespace fftess::verify::detail {
 
-lod::Camera toLodCamera(const Camera& c) {
+// fov in radians: fovY * float(pi / 180), one float product.
+lod::Camera viewCamera(const Camera& c) {
   const float fov = c.fovY * (3.14159265358979323846f / 180.0f);
   return lod::makeCamera(c.eye, c.target, c.up, fov, c.nearZ, c.farZ,
                          glm::vec2(static_cast<float>(c.width), static_cast<float>(c.height)));
+}
+
+lod::Camera toLodCamera(const Camera& c) {
+  if (c.convention == CameraConvention::Gl) return viewCamera(c);
+  const float fov = c.fovY * (3.14159265358979323846f / 180.0f);
+  return lod::makeCameraD3d(c.eye, c.target, c.up, fov, c.nearZ, c.farZ,
+                            glm::vec2(static_cast<float>(c.width), static_cast<float>(c.height)));
 }
 
 lod::PatchLod patchLod(const TerrainData& t, const TerrainPatch& p, const lod::TileNeighbours& neighbours,

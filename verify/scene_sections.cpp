@@ -302,7 +302,7 @@ void readDomain(Reader& r, const toml::table& root, Scene& s) {
 namespace {
 
 void readCamera(Reader& r, const toml::table& t, const std::string& p, Camera& c, bool requireEyeTarget) {
-  r.unknownKeys(t, p, {"eye", "target", "up", "fov_y", "near", "far", "width", "height"});
+  r.unknownKeys(t, p, {"eye", "target", "up", "fov_y", "near", "far", "width", "height", "convention"});
   r.vector(t, p, "eye", &c.eye.x, 3, requireEyeTarget);
   r.vector(t, p, "target", &c.target.x, 3, requireEyeTarget);
   r.vector(t, p, "up", &c.up.x, 3);
@@ -311,6 +311,7 @@ void readCamera(Reader& r, const toml::table& t, const std::string& p, Camera& c
   r.number(t, p, "far", c.farZ);
   r.integer(t, p, "width", c.width, 1, 65536);
   r.integer(t, p, "height", c.height, 1, 65536);
+  r.enumeration(t, p, "convention", kCameraConventions, c.convention); // "gl" | "d3d": the LOD's clip space
   std::string err;
   if (!validateCamera(c, err)) {
     // err starts with "camera.<key>: ..."; name the key under this table.

@@ -182,19 +182,37 @@ bool planeRejects(vec4 plane, vec3 bmin, vec3 bmax) {
   return plane.x * p.x + plane.y * p.y + plane.z * p.z + plane.w < 0.0f;
 }
 
-bool boxOutsideFrustum(vec3 bmin, vec3 bmax, LodCamera cam) {
+// The six planes of proj * view as rows (Gribb-Hartmann, unnormalised), in D3D's order: p[0] left w+x, p[1] right
+// w-x, p[2] bottom w+y, p[3] top w-y, p[4] near (w+z; z alone with depthZeroToOne: D3D's [0, w] depth), p[5] far w-z.
+// Each component rounded once (a sum or difference of two floats of the product's rows).
+struct LodFrustum {
+  vec4 p[6];
+};
+
+LodFrustum lodFrustumPlanes(LodCamera cam) {
   mat4 m = mulMat(cam.proj, cam.view);
   vec4 rx = vec4(m[0][0], m[1][0], m[2][0], m[3][0]);
   vec4 ry = vec4(m[0][1], m[1][1], m[2][1], m[3][1]);
   vec4 rz = vec4(m[0][2], m[1][2], m[2][2], m[3][2]);
   vec4 rw = vec4(m[0][3], m[1][3], m[2][3], m[3][3]);
-  vec4 nearPlane = rw + rz;
+  LodFrustum f;
+  f.p[0] = rw + rx;
+  f.p[1] = rw - rx;
+  f.p[2] = rw + ry;
+  f.p[3] = rw - ry;
+  f.p[4] = rw + rz;
   if (cam.depthZeroToOne) {
-    nearPlane = rz;
+    f.p[4] = rz;
   }
-  return planeRejects(rw + rx, bmin, bmax) || planeRejects(rw - rx, bmin, bmax) ||
-         planeRejects(rw + ry, bmin, bmax) || planeRejects(rw - ry, bmin, bmax) ||
-         planeRejects(rw - rz, bmin, bmax) || planeRejects(nearPlane, bmin, bmax);
+  f.p[5] = rw - rz;
+  return f;
+}
+
+bool boxOutsideFrustum(vec3 bmin, vec3 bmax, LodCamera cam) {
+  LodFrustum f = lodFrustumPlanes(cam);
+  return planeRejects(f.p[0], bmin, bmax) || planeRejects(f.p[1], bmin, bmax) ||
+         planeRejects(f.p[2], bmin, bmax) || planeRejects(f.p[3], bmin, bmax) ||
+         planeRejects(f.p[5], bmin, bmax) || planeRejects(f.p[4], bmin, bmax);
 }
 
 // The patch box: the corners' box, y widened to [minHeight, maxHeight] when useHeightBounds.

@@ -1,11 +1,16 @@
 // gpu_lod/hull.h, the front end: the user's GLSL tessellation control shader / HLSL hull shader through glslang and
 // SPIRV-Cross (libraries, no GL context), the diagnostics as file:line:col lines, what the shader uses, and the
-// scene checked against it. Fixtures: tests/gpu_lod/data/<case>.
+// scene checked against it. Fixtures: tests/gpu_lod/data/<case>. And the named camera values a hull shader's uniforms
+// get (hull_bind.h cameraValues) for GL and D3D cameras.
 #include "gpu_lod/hull.h"
+#include "gpu_lod/hull_bind.h"
+#include "lod/lod.h"
 #include "verify/scene.h"
 
 #include <catch2/catch.hpp>
 
+#include <array>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -431,4 +436,61 @@ TEST_CASE("A storage buffer the shader reads is refused and a block input binds 
                                  ":3:61: error: member 'bias' of storage buffer 'LodData': fftess binds uniforms, "
                                  "uniform blocks / cbuffers and the heightmap, not storage buffers (the shader would "
                                  "read data fftess does not have; pass it as a uniform array to check this shader)"});
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// The named camera values of [lod.uniforms] for a camera of each convention (hull_bind.h cameraValues; no GL needed).
+
+namespace {
+
+glm::vec4 unitPlane(const glm::vec4& p) {
+  const double n = std::sqrt(double(p.x) * p.x + double(p.y) * p.y + double(p.z) * p.z);
+  return glm::vec4(float(p.x / n), float(p.y / n), float(p.z / n), float(p.w / n));
+}
+
+void checkPlanesAgree(const std::array<glm::vec4, 6>& a, const std::array<glm::vec4, 6>& b) {
+  for (int k = 0; k < 6; ++k) {
+    INFO("plane " << k);
+    const glm::vec4 x = unitPlane(a[k]), y = unitPlane(b[k]);
+    const float tol = k == 5 ? 2e-3f : 2e-5f; // far: w - z of nearly equal rows (far / near = 10^4 here)
+    for (int c = 0; c < 3; ++c) CHECK(std::fabs(x[c] - y[c]) < tol);
+    CHECK(std::fabs(x.w - y.w) < tol * 100.0f);
+  }
+}
+
+} // namespace
+
+TEST_CASE("A D3D camera's named values: its own projection and planes, the GL planes of the same frustum, its near and far") {
+  using fftess::gpulod::hull::cameraValues;
+  const glm::vec3 eye(13.5f, 21.0f, -64.0f), target(2.0f, -1.5f, 3.0f), up(0.0f, 1.0f, 0.0f);
+  const float fov = 1.1f, zn = 0.5f, zf = 5000.0f;
+  const glm::vec2 vp(1600.0f, 900.0f);
+  const lod::Camera d3d = lod::makeCameraD3d(eye, target, up, fov, zn, zf, vp);
+  const lod::Camera gl = lod::makeCamera(eye, target, up, fov, zn, zf, vp);
+  const auto d = cameraValues(d3d), g = cameraValues(gl);
+  CHECK(d.projection == d3d.projection);
+  CHECK(d.projectionD3d == d3d.projection);
+  CHECK(d.view == d3d.view);
+  CHECK(std::fabs(d.nearPlane - zn) < 1e-5f * zn);
+  CHECK(std::fabs(d.farPlane - zf) < 1e-3f * zf);
+  CHECK(g.nearPlane == gl.projection[3][2] / (gl.projection[2][2] - 1.0f)); // GL's: the bits as before
+  CHECK(g.farPlane == gl.projection[3][2] / (gl.projection[2][2] + 1.0f));
+  CHECK(std::fabs(g.nearPlane - zn) < 1e-5f * zn);
+  // frustum_planes: the camera's convention (D3D's, normalised); the GL and D3D planes of one camera bound the same
+  // frustum; the D3D camera's near plane passes through the point at the near distance.
+  for (int k = 0; k < 6; ++k) { // docs/gpu_lod.md: each divided by sqrt((x*x + y*y) + z*z), in float
+    const glm::vec4 p = d.planesD3d[k];
+    const float len = std::sqrt((p.x * p.x + p.y * p.y) + p.z * p.z);
+    CHECK(d.planes[k] == glm::vec4(p.x / len, p.y / len, p.z / len, p.w / len));
+  }
+  checkPlanesAgree(d.planesGl, d.planesD3d);
+  checkPlanesAgree(g.planesGl, g.planesD3d);
+  const glm::vec3 axis = glm::normalize(target - eye), atNear = eye + axis * zn;
+  const glm::vec4 n = unitPlane(d.planesGl[4]);
+  CHECK(std::fabs(n.x * atNear.x + n.y * atNear.y + n.z * atNear.z + n.w) < 1e-4f);
+  // The D3D view mirrors x: the D3D camera's left plane is the GL camera's right one.
+  const int mirror[6] = {1, 0, 2, 3, 4, 5};
+  std::array<glm::vec4, 6> swapped;
+  for (int k = 0; k < 6; ++k) swapped[k] = g.planes[mirror[k]];
+  checkPlanesAgree(d.planes, swapped);
 }
