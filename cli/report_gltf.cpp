@@ -142,7 +142,9 @@ private:
   tinygltf::Model m_;
 };
 
-// One mesh per patch size (PatchRef::level), its patches' points and triangles in layout order.
+// One mesh per patch size (PatchRef::level), its patches' points and triangles in layout order; its node's extras
+// list the patches (indices into the report's layout) and each one's six hull factors (Ueq0 Veq0 Ueq1 Veq1 insideU
+// insideV, as the tessellator got them).
 int terrainNodes(Builder& b, const vf::ViewMesh& vm) {
   std::map<int, std::vector<const vf::ViewPatch*>> levels;
   for (const vf::ViewPatch& p : vm.patches) levels[p.ref.level].push_back(&p);
@@ -150,13 +152,14 @@ int terrainNodes(Builder& b, const vf::ViewMesh& vm) {
   for (const auto& [level, patches] : levels) {
     std::vector<glm::vec3> pts;
     std::vector<uint32_t> idx;
-    json list = json::array();
+    json list = json::array(), factors = json::array();
     for (const vf::ViewPatch* p : patches) {
       const uint32_t base = static_cast<uint32_t>(pts.size());
       pts.insert(pts.end(), vm.points.begin() + p->firstPoint, vm.points.begin() + p->firstPoint + p->pointCount);
       for (uint32_t k = p->firstIndex; k < p->firstIndex + p->indexCount; ++k)
         idx.push_back(vm.indices[k] - p->firstPoint + base);
       list.push_back(p->ref.index);
+      factors.push_back(std::vector<float>(p->factors, p->factors + 6));
     }
     const double size = patches.front()->size;
     const std::string name = "level " + std::to_string(level) + ": patches of side " + formatNumber(size) + " (" +
@@ -164,7 +167,7 @@ int terrainNodes(Builder& b, const vf::ViewMesh& vm) {
     const int mat = b.material("level " + std::to_string(level) + " (side " + formatNumber(size) + ")",
                                kLevelColours[static_cast<size_t>(level) % 8], false);
     const json extras = {{"level", level}, {"side", size}, {"points", pts.size()}, {"triangles", idx.size() / 3},
-                         {"patches", list}};
+                         {"patches", list}, {"factors", factors}};
     nodes.push_back(b.meshNode(name, pts, idx, TINYGLTF_MODE_TRIANGLES, mat, extras));
   }
   return b.group("terrain: " + std::to_string(vm.patches.size()) + " patches drawn, by size", nodes);
@@ -230,7 +233,8 @@ void findingGroups(Builder& b, const vf::ViewMesh& vm, const vf::Report& r, std:
 // Holes and undecided patches: each patch's surface (vm.fills, in the order holes then undecided), in its group.
 void fillGroups(Builder& b, const vf::ViewMesh& vm, const vf::Report& r, std::vector<int>& roots) {
   size_t next = 0;
-  const auto group = [&](const std::vector<vf::Hole>& holes, const char* what, const double* rgb) {
+  const auto group = [&](const std::vector<vf::Hole>& holes, const std::string& what, const std::string& plural,
+                         const double* rgb) {
     if (holes.empty()) return;
     const int mat = b.material(what, rgb, true);
     std::vector<int> nodes;
@@ -239,14 +243,17 @@ void fillGroups(Builder& b, const vf::ViewMesh& vm, const vf::Report& r, std::ve
       const std::vector<glm::vec3> pts(vm.points.begin() + p.firstPoint, vm.points.begin() + p.firstPoint + p.pointCount);
       std::vector<uint32_t> idx;
       for (uint32_t k = p.firstIndex; k < p.firstIndex + p.indexCount; ++k) idx.push_back(vm.indices[k] - p.firstPoint);
-      const std::string name = std::string(what) + " " + std::to_string(nodes.size() + 1) + ": patch " +
-                               std::to_string(h.patch.index) + " (" + vf::toString(h.kind) + ")";
+      const bool culled = h.kind == vf::HoleKind::CulledWhileVisible;
+      const std::string how = h.visibility == vf::Visibility::Undecided ? (culled ? "culled" : "discarded")
+                                                                         : vf::toString(h.kind);
+      const std::string name = what + " " + std::to_string(nodes.size() + 1) + ": patch " +
+                               std::to_string(h.patch.index) + " (" + how + ")";
       nodes.push_back(b.meshNode(name, pts, idx, TINYGLTF_MODE_TRIANGLES, mat, holeJson(h)));
     }
-    roots.push_back(b.group(std::string(what) + "s (" + std::to_string(nodes.size()) + ")", nodes));
+    roots.push_back(b.group(plural + " (" + std::to_string(nodes.size()) + ")", nodes));
   };
-  group(r.holes, "hole", kHole);
-  group(r.undecided, "undecided", kUndecided);
+  group(r.holes, "hole", "holes", kHole);
+  group(r.undecided, "undecided", "undecided patches", kUndecided);
 }
 
 // The camera: a glTF perspective camera on a node at the eye, its rotation taking the camera's local axes (+X right,
