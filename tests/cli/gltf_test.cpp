@@ -130,17 +130,51 @@ bool contains(const std::vector<glm::vec3>& v, const glm::vec3& p) { return std:
 
 json readJson(const std::string& path) { return json::parse(clitest::readFile(path)); }
 
+// `fftess check SCENE --set OVERRIDE... --gltf NAME.glb --json NAME.json -q` (exit status `status`), its JSON report,
+// the file read back, and the test's own prepared scene.
+struct Checked {
+  json report;
+  tinygltf::Model model;
+  Scene scene;
+};
+Checked checkWithGltf(const std::string& scenePath, const std::vector<std::string>& overrides, int status,
+                      const std::string& name) {
+  const std::string glb = clitest::tmpDir() + "/" + name + ".glb", js = clitest::tmpDir() + "/" + name + ".json";
+  std::vector<std::string> args{"check", scenePath, "--gltf", glb, "--json", js, "-q"};
+  for (const std::string& o : overrides) args.insert(args.end(), {"--set", o});
+  const auto r = run(args);
+  INFO(r.err);
+  REQUIRE(r.status == status);
+  return {readJson(js), loadGlb(glb), loadScene(scenePath, overrides)};
+}
+
+// The report's findings of one classification ("crack", "t_junction") paired with the file's nodes of that kind (the
+// children of the group node "cracks (N)" / "t-junctions (N)", in report order): one node per finding, and no group
+// of the other kind.
+std::vector<std::pair<const json*, const tinygltf::Node*>> findingNodes(const json& report, const tinygltf::Model& m,
+                                                                         const std::string& classification) {
+  const bool crack = classification == "crack";
+  const std::vector<const tinygltf::Node*> nodes = groupChildren(m, crack ? "cracks (" : "t-junctions (");
+  const size_t count = report.at("stats").at(crack ? "cracks" : "t_junctions").get<size_t>();
+  REQUIRE(count > 0);
+  REQUIRE(report.at("truncated") == false);
+  REQUIRE(nodes.size() == count);
+  CHECK(groupChildren(m, crack ? "t-junctions (" : "cracks (").empty());
+  std::vector<std::pair<const json*, const tinygltf::Node*>> out;
+  for (const json& f : report.at("findings"))
+    if (f.at("classification") == classification) out.emplace_back(&f, nodes.at(out.size()));
+  return out;
+}
+
 } // namespace
 
 TEST_CASE("check --gltf: each patch-size mesh is the emulator's tessellation of its patches at the domain shader's "
           "positions",
           "[cli][gltf]") {
-  const std::string glb = clitest::tmpDir() + "/rings.glb", js = clitest::tmpDir() + "/rings.json";
-  const auto r = run({"check", kRings, "--set", "lod.adjacency_clamp=none", "--gltf", glb, "--json", js, "-q"});
-  REQUIRE(r.status == 1);
-  const json report = readJson(js);
-  const tinygltf::Model m = loadGlb(glb);
-  const Scene sc = loadScene(kRings, {"lod.adjacency_clamp=none"});
+  const Checked c = checkWithGltf(kRings, {"lod.adjacency_clamp=none"}, 1, "rings");
+  const json& report = c.report;
+  const tinygltf::Model& m = c.model;
+  const Scene& sc = c.scene;
   const vf::Scene& scene = sc.view.scene();
   const std::vector<const tinygltf::Node*> levels = groupChildren(m, "terrain:");
   REQUIRE(levels.size() == 3); // rings_small: patch sides 2, 4, 8
@@ -202,21 +236,14 @@ TEST_CASE("check --gltf: each patch-size mesh is the emulator's tessellation of 
 
 TEST_CASE("check --gltf: one red line primitive per crack joins both sides' edge points of the shared part",
           "[cli][gltf]") {
-  const std::string glb = clitest::tmpDir() + "/cracks.glb", js = clitest::tmpDir() + "/cracks.json";
-  const auto r = run({"check", kRings, "--set", "lod.adjacency_clamp=none", "--gltf", glb, "--json", js, "-q"});
-  REQUIRE(r.status == 1);
-  const json report = readJson(js);
-  REQUIRE(report.at("truncated") == false);
-  const tinygltf::Model m = loadGlb(glb);
-  const Scene sc = loadScene(kRings, {"lod.adjacency_clamp=none"});
-  const std::vector<const tinygltf::Node*> cracks = groupChildren(m, "cracks (");
-  REQUIRE(report.at("stats").at("cracks").get<size_t>() > 0);
-  REQUIRE(cracks.size() == report.at("stats").at("cracks").get<size_t>());
-  CHECK(groupChildren(m, "t-junctions (").empty());
+  const Checked c = checkWithGltf(kRings, {"lod.adjacency_clamp=none"}, 1, "cracks");
+  const tinygltf::Model& m = c.model;
+  const Scene& sc = c.scene;
   size_t k = 0;
-  for (const json& f : report.at("findings")) {
-    if (f.at("classification") != "crack") continue;
-    const tinygltf::Node& n = *cracks.at(k++);
+  for (const auto& [fp, np] : findingNodes(c.report, m, "crack")) {
+    const json& f = *fp;
+    const tinygltf::Node& n = *np;
+    ++k;
     INFO(n.name);
     CHECK(startsWith(n.name, "crack " + std::to_string(k) + ": patch " + std::to_string(f.at("a").at("patch").at("index").get<int>())));
     CHECK(n.extras.Get("gap_world").GetNumberAsDouble() == f.at("gap_world").get<double>());
@@ -239,21 +266,12 @@ TEST_CASE("check --gltf: one red line primitive per crack joins both sides' edge
 }
 
 TEST_CASE("check --gltf: each T-junction is the yellow points one side has and the other lacks", "[cli][gltf]") {
-  const std::string scenePath = clitest::source("docs/examples/t_junction.toml");
-  const std::string glb = clitest::tmpDir() + "/tj.glb", js = clitest::tmpDir() + "/tj.json";
-  const auto r = run({"check", scenePath, "--gltf", glb, "--json", js, "-q"});
-  REQUIRE(r.status == 0);
-  const json report = readJson(js);
-  const tinygltf::Model m = loadGlb(glb);
-  const Scene sc = loadScene(scenePath, {});
-  const std::vector<const tinygltf::Node*> tjs = groupChildren(m, "t-junctions (");
-  REQUIRE(report.at("stats").at("t_junctions").get<size_t>() > 0);
-  REQUIRE(tjs.size() == report.at("stats").at("t_junctions").get<size_t>());
-  CHECK(groupChildren(m, "cracks (").empty());
-  size_t k = 0;
-  for (const json& f : report.at("findings")) {
-    if (f.at("classification") != "t_junction") continue;
-    const tinygltf::Node& n = *tjs.at(k++);
+  const Checked c = checkWithGltf(clitest::source("docs/examples/t_junction.toml"), {}, 0, "tj");
+  const tinygltf::Model& m = c.model;
+  const Scene& sc = c.scene;
+  for (const auto& [fp, np] : findingNodes(c.report, m, "t_junction")) {
+    const json& f = *fp;
+    const tinygltf::Node& n = *np;
     INFO(n.name);
     const tinygltf::Primitive& prim = onlyPrimitive(m, n);
     CHECK(prim.mode == TINYGLTF_MODE_POINTS);
@@ -307,13 +325,13 @@ TEST_CASE("check --gltf: the camera node sits at the eye and looks down its -Z a
 
 TEST_CASE("check --gltf: holes are filled in magenta, one surface per hole", "[cli][gltf]") {
   const std::string grid = clitest::source("docs/examples/grid.toml");
-  const std::string glb = clitest::tmpDir() + "/holes.glb", js = clitest::tmpDir() + "/holes.json";
-  const auto r = run({"check", grid, "--set", "displacement.kind=none", "--set", "lod.scheme=screen_sphere", "--set",
-                      "tessellation.partitioning=fractional_even", "--set", "lod.frustum_cull=false", "--eye", "0,0,2",
-                      "--target", "0,0,100", "--gltf", glb, "--json", js, "-q"});
-  REQUIRE(r.status == 1);
-  const json report = readJson(js);
-  const tinygltf::Model m = loadGlb(glb);
+  const Checked c = checkWithGltf(grid,
+                                  {"displacement.kind=none", "lod.scheme=screen_sphere",
+                                   "tessellation.partitioning=fractional_even", "lod.frustum_cull=false",
+                                   "camera.eye=[0,0,2]", "camera.target=[0,0,100]"},
+                                  1, "holes");
+  const json& report = c.report;
+  const tinygltf::Model& m = c.model;
   const std::vector<const tinygltf::Node*> holes = groupChildren(m, "holes (");
   REQUIRE(holes.size() == report.at("holes").size());
   REQUIRE(!holes.empty());
@@ -323,7 +341,11 @@ TEST_CASE("check --gltf: holes are filled in magenta, one surface per hole", "[c
     const tinygltf::Primitive& prim = onlyPrimitive(m, *holes[k]);
     CHECK(prim.mode == TINYGLTF_MODE_TRIANGLES);
     CHECK(materialOf(m, prim).pbrMetallicRoughness.baseColorFactor == std::vector<double>{1, 0, 1, 1});
-    CHECK(positionsOf(m, prim).size() == 81); // the 8 x 8 grid over the patch's domain
+    const std::vector<glm::vec3> pts = positionsOf(m, prim);
+    REQUIRE(pts.size() == 81); // the 8 x 8 grid over the patch's domain, at the domain shader's positions
+    for (int b = 0; b <= 8; ++b)
+      for (int a = 0; a <= 8; ++a)
+        CHECK(pts[static_cast<size_t>(b * 9 + a)] == vf::domainPosition(c.scene.view, patch, a / 8.0f, b / 8.0f));
     CHECK(indicesOf(m, prim).size() == 8 * 8 * 6);
   }
 }
