@@ -226,6 +226,7 @@ public:
   void finishReports(const vf::SweepResult& res);
   // --gltf: the worst camera checked again, in 3D (false: no camera was checked, nothing to show).
   bool worstGltf(ReportFiles& reports, const vf::SweepResult& res) const;
+  std::string worstWhy() const; // why worst_ is the camera --gltf shows
 
 private:
   void emitJson(const std::string& text);
@@ -407,6 +408,8 @@ std::string SweepRun::summaryText(const vf::SweepResult& res, const std::string&
     text += buf + printable(firstInvalidError_) + "\n";
   }
   if (!tally_.causes.empty()) text += causesText();
+  if (!a_.gltf.empty() && worst_.rank >= 0)
+    text += "  3D view        camera " + std::to_string(worst_.camera) + " (" + worstWhy() + "): " + quotePath(a_.gltf) + "\n";
   return text + "verdict: " + verdictWords(verdict, res, crackCameras_, holeCameras_, requested_, a_.offscreen) + "\n";
 }
 
@@ -434,18 +437,22 @@ void SweepRun::finishReports(const vf::SweepResult& res) {
   }
 }
 
+std::string SweepRun::worstWhy() const {
+  static const char* const kWhy[] = {"no findings, the first camera checked", "the first with T-junctions",
+                                     "the first with undecided patches", "the first with a hole"};
+  if (worst_.rank < 0) return "no camera checked";
+  return worst_.rank == 4 ? "the worst: crack gap " + fmtWorld(worst_.gap) + " world units" : kWhy[worst_.rank];
+}
+
 bool SweepRun::worstGltf(ReportFiles& reports, const vf::SweepResult& res) const {
   if (!reports.gltf()) return true;
   if (worst_.rank < 0) return false;
-  static const char* const kWhy[] = {"no findings, the first camera checked", "the first with T-junctions",
-                                     "the first with undecided patches", "the first with a hole", ""};
   const vf::Camera cam = cams_.at(worst_.camera);
   vf::CheckOptions opt = opt_;
   opt.maxFindings = vf::CheckOptions{}.maxFindings; // what `check` keeps
   const vf::Report r = vf::checkScene(terrain_, cam, opt);
   if (!r.error.empty()) throw std::runtime_error("--gltf: camera " + std::to_string(worst_.camera) + ": " + r.error);
-  std::string which = "camera " + std::to_string(worst_.camera) + " of the sweep (" + how_ + "), ";
-  which += worst_.rank == 4 ? "the worst: crack gap " + fmtWorld(worst_.gap) + " world units" : kWhy[worst_.rank];
+  std::string which = "camera " + std::to_string(worst_.camera) + " of the sweep (" + how_ + "), " + worstWhy();
   if (res.cancelled) which += ", of the cameras checked before the interrupt";
   reports.setGltf(checkGltf(terrain_, cam, opt, r,
                             {"fftess sweep " + a_.scene, vf::toString(vf::verdictOf(r.stats, a_.offscreen)), which},
