@@ -414,4 +414,9 @@ TEST_CASE("sweep --gltf: the file shows the sweep's worst camera, checked again"
   for (int k = 0; k < 3; ++k) CHECK(node->translation.at(static_cast<size_t>(k)) == cam.at("eye")[k].get<double>());
   CHECK(m.asset.extras.Get("verdict").Get<std::string>() == "cracks");
   CHECK(!groupChildren(m, "cracks (").empty());
+  // The summary names it too.
+  const auto talk = run({"sweep", kRings, "--set", "lod.adjacency_clamp=none", "--random", "6", "--seed", "4", "--gltf",
+                         glb});
+  CHECK(talk.status == 1);
+  CHECK(talk.out.find("  3D view        camera " + std::to_string(worst) + " (the worst: crack gap ") != std::string::npos);
 }
