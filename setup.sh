@@ -22,7 +22,7 @@ SANITIZE_DIR=${SANITIZE_DIR:-build-sanitize}
 
 packages=(
   g++ cmake ninja-build
-  catch2 libcli11-dev libglm-dev libcgal-dev nlohmann-json3-dev libtomlplusplus-dev libbenchmark-dev
+  catch2 libcli11-dev libglm-dev libcgal-dev nlohmann-json3-dev libtomlplusplus-dev libbenchmark-dev libtinygltf-dev
   glslang-tools spirv-cross glslang-dev libspirv-cross-c-shared-dev
   libegl-dev libgl-dev libopengl-dev libegl-mesa0 libgl1-mesa-dri
 )

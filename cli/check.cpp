@@ -5,6 +5,7 @@
 #include "commands.h"
 #include "common.h"
 #include "gpu_lod.h"
+#include "report_gltf.h"
 #include "report_json.h"
 #include "report_svg.h"
 #include "scene_options.h"
@@ -262,6 +263,16 @@ void writeCheckReports(const CheckArgs& a, ReportFiles& reports, const vf::Terra
   reports.commit(); // all or nothing
 }
 
+// --gltf: the camera's view in 3D (report_gltf.h) from the report as kept, into its file's buffer.
+void setCheckGltf(const CheckArgs& a, ReportFiles& reports, const vf::Terrain& terrain, const vf::Camera& cam,
+                  const vf::CheckOptions& opt, const vf::Report& r, vf::Verdict verdict) {
+  if (!reports.gltf()) return;
+  const std::string which = a.pathCameraGiven ? "camera " + std::to_string(a.pathCamera) + " of the scene's camera path"
+                                              : "the scene's camera";
+  reports.setGltf(checkGltf(terrain, cam, opt, r, {"fftess check " + a.scene, vf::toString(verdict), which},
+                            gltfTextPath(a.gltf)));
+}
+
 } // namespace
 
 int runCheck(const CheckArgs& a) {
@@ -289,6 +300,7 @@ int runCheck(const CheckArgs& a) {
   const int status = mesh.diff.agree() ? verdictStatus(verdict, a.failOnTJunctions) : kExitFindings;
   if (talk) text += checkVerdictLine(verdict, r.stats, a.offscreen, mesh.diff.agree());
   // Reports first (atomically), then the text: a failure writing a report leaves no partial file.
+  setCheckGltf(a, reports, terrain, cam, opt, r, verdict);
   writeCheckReports(a, reports, terrain, cam, r, a.mesh ? &mesh : nullptr, camerasFile);
   writeStdout(text);
   flushStdout();

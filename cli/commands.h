@@ -67,6 +67,7 @@ struct SceneArgs {
   bool gpuHardware = false; // --gpu-hardware: the GPU LOD path on a GPU's EGL device instead of llvmpipe
   bool offscreen = false;   // --offscreen: findings outside the view frustum count too (vf::CheckOptions::countOffScreen)
   std::string cameras;      // --cameras FILE: cameras from a CSV / JSON file (cli/camera_file.h)
+  std::string gltf;         // --gltf FILE: the checked camera in 3D (check: its camera; sweep: the worst camera's)
 };
 
 struct CheckArgs : SceneArgs {

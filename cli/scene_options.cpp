@@ -78,7 +78,9 @@ vf::CheckOptions checkOptions(const SceneArgs& a, const vf::Terrain& terrain) {
 }
 
 // ---- shared plumbing ---------------------------------------------------------------------------------------------
-std::vector<FileArg> reportArgs(const SceneArgs& a) { return {{"--json", a.json}, {"--svg", a.svg}}; }
+std::vector<FileArg> reportArgs(const SceneArgs& a) {
+  return {{"--json", a.json}, {"--svg", a.svg}, {"--gltf", a.gltf}};
+}
 
 std::vector<FileArg> sceneInputs(const SceneArgs& a, const vf::Scene* scene) {
   std::vector<FileArg> in{{"SCENE", a.scene}, {"--cameras", a.cameras}};
@@ -94,17 +96,29 @@ std::vector<FileArg> sceneInputs(const SceneArgs& a, const vf::Scene* scene) {
   return in;
 }
 
+// --gltf's file: binary (or glTF JSON text, by the name), never stdout; a bad path names the option.
+static std::unique_ptr<AtomicFile> gltfFile(const std::string& path) {
+  if (path == "-") throw UsageError("--gltf -: a glTF file cannot go to stdout; give a file name (e.g. view.glb)");
+  try {
+    return std::make_unique<AtomicFile>(path);
+  } catch (const UsageError& e) {
+    throw UsageError(std::string("--gltf: ") + e.what());
+  }
+}
+
 ReportFiles::ReportFiles(const SceneArgs& a) {
   refuseSameFiles(reportArgs(a), sceneInputs(a, nullptr));
   if (!a.json.empty()) json_ = std::make_unique<AtomicFile>(a.json);
   if (!a.svg.empty()) svg_ = std::make_unique<AtomicFile>(a.svg);
+  if (!a.gltf.empty()) gltf_ = gltfFile(a.gltf);
 }
 
 void ReportFiles::commit() {
-  AtomicFile* files[2];
+  AtomicFile* files[3];
   size_t n = 0;
   if (json_) files[n++] = json_.get();
   if (svg_) files[n++] = svg_.get();
+  if (gltf_) files[n++] = gltf_.get();
   commitAll(files, n);
 }
 
@@ -134,6 +148,9 @@ void addSceneOptions(CLI::App* sub, SceneArgs& a) {
                 "NVIDIA), =auto (default) the scene's lod.flush_denormals, else the GPU driver's rule");
   sub->add_option("--json", a.json, "Write the full report as JSON to FILE ('-': stdout, no text then)");
   sub->add_option("--svg", a.svg, "Write an SVG picture to FILE");
+  sub->add_option("--gltf", a.gltf,
+                  "Write the checked camera's view in 3D to FILE (binary glTF; a name ending in .gltf: glTF JSON): the "
+                  "terrain as tessellated, findings coloured, the camera; sweep: the worst camera's");
   sub->add_flag("-q,--quiet", a.quiet, "Print nothing but errors; the exit status tells the verdict");
   sub->add_flag("--fail-on-tjunctions", a.failOnTJunctions, "Exit 1 on T-junctions too (default: cracks only)");
   sub->add_flag("--offscreen", a.offscreen,

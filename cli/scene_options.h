@@ -33,24 +33,29 @@ int verdictStatus(vf::Verdict v, bool failOnTJunctions);
 // The same for a sweep (and merged shards): 130 when it was interrupted (Ctrl-C) before finding cracks or holes.
 int sweepStatus(const vf::SweepResult& res, vf::Verdict v, bool failOnTJunctions);
 
-// --json and --svg as refuseSameFiles outputs; the inputs of a scene: SCENE, and with the loaded scene the files it
-// reads (lod.shader, displacement.file, layout.file). load() refuses reports that are one of those.
+// --json, --svg and --gltf as refuseSameFiles outputs; the inputs of a scene: SCENE, and with the loaded scene the
+// files it reads (lod.shader, displacement.file, layout.file). load() refuses reports that are one of those.
 std::vector<FileArg> reportArgs(const SceneArgs& a);
 std::vector<FileArg> sceneInputs(const SceneArgs& a, const vf::Scene* scene);
 
-// The --json and --svg reports of one command: both paths are checked when this is built (before the work:
-// UsageError naming the path), and commit() writes both all or nothing (AtomicFile, commitAll).
+// The --json, --svg and --gltf reports of one command: every path is checked when this is built (before the work:
+// UsageError naming the path; --gltf's also names the option and refuses stdout), and commit() writes them all or
+// nothing (AtomicFile, commitAll).
 class ReportFiles {
 public:
   explicit ReportFiles(const SceneArgs& a);
   void setJson(std::string text) { if (json_) json_->buffer() = std::move(text); }
   void setSvg(std::string text) { if (svg_) svg_->buffer() = std::move(text); }
+  void setGltf(std::string bytes) { if (gltf_) gltf_->buffer() = std::move(bytes); }
+  bool gltf() const { return gltf_ != nullptr; } // --gltf was given
+  void dropGltf() { gltf_.reset(); } // the --gltf file is not written (its temporary file removed)
   AtomicFile* json() const { return json_.get(); } // null without --json (sweep streams into it)
   AtomicFile* svg() const { return svg_.get(); }   // null without --svg
   void commit();
 
 private:
   std::unique_ptr<AtomicFile> json_, svg_;
+  std::unique_ptr<AtomicFile> gltf_; // --gltf
 };
 
 } // namespace fftess::cli

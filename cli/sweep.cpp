@@ -6,6 +6,7 @@
 #include "common.h"
 #include "gpu_lod.h"
 #include "progress.h"
+#include "report_gltf.h"
 #include "report_json.h"
 #include "report_svg.h"
 #include "scene_options.h"
@@ -230,6 +231,9 @@ public:
   vf::SweepResult run(const std::atomic<bool>* cancel, bool talk, const std::string& label);
   std::string summaryText(const vf::SweepResult& res, const std::string& label, vf::Verdict verdict) const;
   void finishReports(const vf::SweepResult& res);
+  // --gltf: the worst camera checked again, in 3D (false: no camera was checked, nothing to show).
+  bool worstGltf(ReportFiles& reports, const vf::SweepResult& res) const;
+  std::string worstWhy() const; // why worst_ is the camera --gltf shows
 
 private:
   void emitJson(const std::string& text);
@@ -262,6 +266,14 @@ private:
   size_t endChecked_ = 0; // 1 + the highest global index checked
   std::string firstInvalidError_;
   CauseTally tally_;
+  // --gltf: the worst camera so far: rank 4 cracks that count (the largest counted gap: on screen, or all with
+  // --offscreen), 3 a hole, 2 undecided patches, 1 T-junctions that count, 0 checked; the lowest index among equals.
+  struct Worst {
+    size_t camera = SIZE_MAX;
+    int rank = -1;
+    double gap = 0;
+  } worst_;
+  void noteWorst(size_t g, const vf::CameraResult& c);
   FactorDiffTally gpuDiffs_; // lod.evaluate = "gpu" / lod.shader: GPU vs C++ factors (cli/gpu_lod.h)
   json camerasFile_;         // --cameras: the file, its hash (shards must agree), its camera count; null otherwise
 };
@@ -307,10 +319,24 @@ static SvgHole svgHoleOf(const vf::Terrain& terrain, const vf::Camera& cam, cons
   return out;
 }
 
+void SweepRun::noteWorst(size_t g, const vf::CameraResult& c) {
+  const bool all = a_.offscreen;
+  const int rank = (all ? c.stats.cracks : c.stats.cracksOnScreen()) > 0 ? 4
+                   : c.stats.holes > 0                                     ? 3
+                   : c.stats.undecided > 0                                 ? 2
+                   : (all ? c.stats.tJunctions : c.stats.tJunctionsOnScreen()) > 0 ? 1
+                                                                            : 0;
+  const double gap = rank == 4 ? (all ? c.worst.gapWorld : c.worst.onScreenGapWorld) : 0;
+  const bool better =
+      rank > worst_.rank || (rank == worst_.rank && (gap > worst_.gap || (gap == worst_.gap && g < worst_.camera)));
+  if (better) worst_ = {g, rank, gap};
+}
+
 void SweepRun::onCamera(const vf::CameraResult& c) {
   const size_t g = plan_.global(c.cameraIndex);
   endChecked_ = std::max(endChecked_, g + 1);
   if (!c.error.empty() && g < firstInvalid_) firstInvalid_ = g, firstInvalidError_ = c.error;
+  if (c.done && !a_.gltf.empty()) noteWorst(g, c);
   if (c.done) {
     if (c.stats.holes > 0) ++holeCameras_;
     const bool all = a_.offscreen; // the findings that count: on screen, or all with --offscreen
@@ -402,6 +428,8 @@ std::string SweepRun::summaryText(const vf::SweepResult& res, const std::string&
     text += buf + printable(firstInvalidError_) + "\n";
   }
   if (!tally_.causes.empty()) text += causesText();
+  if (!a_.gltf.empty() && worst_.rank >= 0)
+    text += "  3D view        camera " + std::to_string(worst_.camera) + " (" + worstWhy() + "): " + quotePath(a_.gltf) + "\n";
   return text + "verdict: " + verdictWords(verdict, res, crackCameras_, holeCameras_, requested_, a_.offscreen) + "\n";
 }
 
@@ -427,6 +455,29 @@ void SweepRun::finishReports(const vf::SweepResult& res) {
     svgFile_->buffer() = sweepSvg(terrain_, svgCameras(cams_, res.cancelled ? endChecked_ : cams_.size()), dots_, holes_,
                                   firsts, a_.random > 0, "fftess sweep " + a_.scene, a_.offscreen);
   }
+}
+
+std::string SweepRun::worstWhy() const {
+  static const char* const kWhy[] = {"no findings, the first camera checked", "the first with T-junctions",
+                                     "the first with undecided patches", "the first with a hole"};
+  if (worst_.rank < 0) return "no camera checked";
+  return worst_.rank == 4 ? "the worst: crack gap " + fmtWorld(worst_.gap) + " world units" : kWhy[worst_.rank];
+}
+
+bool SweepRun::worstGltf(ReportFiles& reports, const vf::SweepResult& res) const {
+  if (!reports.gltf()) return true;
+  if (worst_.rank < 0) return false;
+  const vf::Camera cam = cams_.at(worst_.camera);
+  vf::CheckOptions opt = opt_;
+  opt.maxFindings = vf::CheckOptions{}.maxFindings; // what `check` keeps
+  const vf::Report r = vf::checkScene(terrain_, cam, opt);
+  if (!r.error.empty()) throw std::runtime_error("--gltf: camera " + std::to_string(worst_.camera) + ": " + r.error);
+  std::string which = "camera " + std::to_string(worst_.camera) + " of the sweep (" + how_ + "), " + worstWhy();
+  if (res.cancelled) which += ", of the cameras checked before the interrupt";
+  reports.setGltf(checkGltf(terrain_, cam, opt, r,
+                            {"fftess sweep " + a_.scene, vf::toString(vf::verdictOf(r.stats, a_.offscreen)), which},
+                            gltfTextPath(a_.gltf)));
+  return true;
 }
 
 } // namespace
@@ -456,6 +507,10 @@ int runSweep(const SweepArgs& a) {
   const int status = sweepStatus(res, verdict, a.failOnTJunctions);
   const std::string text = talk ? sweep.summaryText(res, label, verdict) : "";
   sweep.finishReports(res);
+  if (!sweep.worstGltf(reports, res)) { // no camera checked: nothing to show in 3D
+    reports.dropGltf();
+    std::fprintf(stderr, "fftess sweep: --gltf %s not written: no camera was checked\n", quotePath(a.gltf).c_str());
+  }
   reports.commit(); // all or nothing
   writeStdout(text);
   flushStdout();

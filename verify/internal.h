@@ -3,6 +3,7 @@
 
 #include "base/bits.h"
 #include "verify/check.h" // and through it every stage header up to the check
+#include "verify/view_mesh.h"
 
 #include <array>
 #include <cmath>
@@ -320,6 +321,13 @@ ExactVerdict classifyExact(Kernel kernel, const glm::vec3* a, int na, const glm:
 
 Report checkTerrain(const TerrainData& t, const Camera& camera, const CheckOptions& options, EdgeCache& cache);
 bool validateCamera(const Camera& c, std::string& error);
+
+// ---------------------------------------------------------------------------------------------------------------
+// view_mesh.cpp
+
+// viewMesh (view_mesh.h) on a layout already selected for the camera (t: layoutFor(terrain, camera).data()).
+ViewMesh buildViewMesh(const TerrainData& t, const Camera& camera, const CheckOptions& options,
+                       const std::vector<int>& fill = {}, int fillSegments = 8);
 
 // ---------------------------------------------------------------------------------------------------------------
 // visibility.cpp: is a patch that is not drawn on screen? (visibility.h, Hole)

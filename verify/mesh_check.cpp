@@ -12,7 +12,6 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
-#include <cstring>
 #include <map>
 #include <unordered_map>
 
@@ -51,46 +50,34 @@ MeshReport checkSceneMesh(const Terrain& terrain, const Camera& camera, const Ch
   if (!detail::validateCamera(camera, rep.error)) return rep;
   const Terrain view = layoutFor(terrain, camera); // the camera's own patches for a quadtree
   const detail::TerrainData& t = view.data();
-  const Scene& scene = t.scene;
-  if (!detail::validateCamera(camera, rep.error)) return rep;
-  std::vector<lod::PatchLod> factors;
-  if (!detail::computeFactorsFor(t, camera, options.factors.get(), factors, nullptr, rep.work, rep.error)) return rep;
-  const detail::DomainCamera domainCam = detail::domainCamera(t, factors);
-
+  // Every drawn patch tessellated fully and positioned (view_mesh.h): the polygon soup.
+  const ViewMesh vm = detail::buildViewMesh(t, camera, options);
+  rep.work = vm.work;
+  if (!vm.error.empty()) {
+    rep.error = vm.error;
+    return rep;
+  }
   const size_t n = t.patches.size();
   std::vector<char> drawn(n, 0);
-  std::vector<Point> points;
-  std::vector<std::vector<std::size_t>> polygons;
+  for (size_t i = 0; i < n; ++i) drawn[i] = vm.drawnAt[i] >= 0;
+  rep.patchesDrawn = static_cast<int64_t>(vm.patches.size());
   struct EdgeVertex {
     int patch;
     unsigned mask;  // the patch edges the point lies on
     DomainPoint d;  // its domain point on that patch
   };
   std::map<Key, std::vector<EdgeVertex>> where; // edge points -> where they came from
-  Tessellator tess;
-  const Options tessOptions = detail::tessellatorOptions(scene, options); // the denormal rule (denormalRule)
-  for (size_t i = 0; i < n; ++i) {
-    Patch p;
-    p.domain = Domain::Quad;
-    p.partitioning = scene.partitioning;
-    p.primitive = OutputPrimitive::TriangleCw;
-    p.stage = scene.stage;
-    std::memcpy(p.factors, factors[i].factors, sizeof p.factors);
-    const int count = tess.tessellate(p, tessOptions);
-    ++rep.work.fullTessellations;
-    if (count == 0) continue;
-    drawn[i] = 1;
-    ++rep.patchesDrawn;
-    const size_t base = points.size();
-    for (const DomainPoint& d : tess.points()) {
-      const glm::vec3 w = detail::evalDomain(t, t.patches[i], d.u, d.v, domainCam.at(i), rep.work);
-      points.emplace_back(w.x, w.y, w.z);
-      if (unsigned m = edgeMask(d)) where[Key{w.x, w.y, w.z}].push_back({static_cast<int>(i), m, d});
+  std::vector<Point> points;
+  points.reserve(vm.points.size());
+  for (const glm::vec3& w : vm.points) points.emplace_back(w.x, w.y, w.z);
+  std::vector<std::vector<std::size_t>> polygons;
+  for (const ViewPatch& vp : vm.patches) {
+    for (uint32_t k = vp.firstPoint; k < vp.firstPoint + vp.pointCount; ++k) {
+      const glm::vec3& w = vm.points[k];
+      if (unsigned m = edgeMask(vm.domain[k])) where[Key{w.x, w.y, w.z}].push_back({vp.ref.index, m, vm.domain[k]});
     }
-    const auto& idx = tess.indices();
-    for (size_t k = 0; k + 2 < idx.size(); k += 3)
-      polygons.push_back({base + static_cast<size_t>(idx[k]), base + static_cast<size_t>(idx[k + 1]),
-                          base + static_cast<size_t>(idx[k + 2])});
+    for (uint32_t k = vp.firstIndex; k + 2 < vp.firstIndex + vp.indexCount; k += 3)
+      polygons.push_back({vm.indices[k], vm.indices[k + 1], vm.indices[k + 2]});
   }
   if (polygons.empty()) return rep;
   ++rep.work.cgalCalls;

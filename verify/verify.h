@@ -23,6 +23,7 @@
 //   check.h       one camera: CheckOptions, checkScene -> Report with its Stats (the stages above in order; see
 //                 docs/architecture.md, "verify: the stages of a check");
 //   mesh_check.h  the independent whole-mesh check of one camera (checkSceneMesh);
+//   view_mesh.h   the terrain as one camera draws it, fully tessellated and positioned (viewMesh; pictures);
 //   sweep.h       many cameras on worker threads (sweep -> SweepResult);
 //   report.h      the verdict of a report or a sweep (verdictOf) and how stats add up (accumulate).
 //
@@ -37,5 +38,6 @@
 #include "verify/visibility.h"
 #include "verify/check.h"
 #include "verify/mesh_check.h"
+#include "verify/view_mesh.h"
 #include "verify/sweep.h"
 #include "verify/report.h"
