@@ -66,6 +66,7 @@ struct SceneArgs {
   bool failOnTJunctions = false;
   bool gpuHardware = false; // --gpu-hardware: the GPU LOD path on a GPU's EGL device instead of llvmpipe
   bool offscreen = false;   // --offscreen: findings outside the view frustum count too (vf::CheckOptions::countOffScreen)
+  std::string view;         // check --view FILE.svg: what the camera sees (cli/report_view.h); "" for sweep
 };
 
 struct CheckArgs : SceneArgs {

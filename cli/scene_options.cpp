@@ -78,7 +78,7 @@ vf::CheckOptions checkOptions(const SceneArgs& a, const vf::Terrain& terrain) {
 }
 
 // ---- shared plumbing ---------------------------------------------------------------------------------------------
-std::vector<FileArg> reportArgs(const SceneArgs& a) { return {{"--json", a.json}, {"--svg", a.svg}}; }
+std::vector<FileArg> reportArgs(const SceneArgs& a) { return {{"--json", a.json}, {"--svg", a.svg}, {"--view", a.view}}; }
 
 std::vector<FileArg> sceneInputs(const SceneArgs& a, const vf::Scene* scene) {
   std::vector<FileArg> in{{"SCENE", a.scene}};
@@ -97,13 +97,19 @@ ReportFiles::ReportFiles(const SceneArgs& a) {
   refuseSameFiles(reportArgs(a), sceneInputs(a, nullptr));
   if (!a.json.empty()) json_ = std::make_unique<AtomicFile>(a.json);
   if (!a.svg.empty()) svg_ = std::make_unique<AtomicFile>(a.svg);
+  try {
+    if (!a.view.empty()) view_ = std::make_unique<AtomicFile>(a.view);
+  } catch (const UsageError& e) {
+    throw UsageError(std::string("--view: ") + e.what());
+  }
 }
 
 void ReportFiles::commit() {
-  AtomicFile* files[2];
+  AtomicFile* files[3];
   size_t n = 0;
   if (json_) files[n++] = json_.get();
   if (svg_) files[n++] = svg_.get();
+  if (view_) files[n++] = view_.get();
   commitAll(files, n);
 }
 

@@ -38,19 +38,21 @@ int sweepStatus(const vf::SweepResult& res, vf::Verdict v, bool failOnTJunctions
 std::vector<FileArg> reportArgs(const SceneArgs& a);
 std::vector<FileArg> sceneInputs(const SceneArgs& a, const vf::Scene* scene);
 
-// The --json and --svg reports of one command: both paths are checked when this is built (before the work:
+// The --json and --svg reports (and check's --view) of one command: both paths are checked when this is built (before the work:
 // UsageError naming the path), and commit() writes both all or nothing (AtomicFile, commitAll).
 class ReportFiles {
 public:
   explicit ReportFiles(const SceneArgs& a);
   void setJson(std::string text) { if (json_) json_->buffer() = std::move(text); }
   void setSvg(std::string text) { if (svg_) svg_->buffer() = std::move(text); }
+  void setView(std::string text) { if (view_) view_->buffer() = std::move(text); } // check --view
   AtomicFile* json() const { return json_.get(); } // null without --json (sweep streams into it)
   AtomicFile* svg() const { return svg_.get(); }   // null without --svg
   void commit();
 
 private:
   std::unique_ptr<AtomicFile> json_, svg_;
+  std::unique_ptr<AtomicFile> view_; // check --view
 };
 
 } // namespace fftess::cli

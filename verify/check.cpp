@@ -491,6 +491,8 @@ Report checkTerrain(const TerrainData& prepared, const Camera& camera, const Che
   const FrustumTest frustum(lodCamera);
   const CameraCheck c{t, camera, options, fault, cache.factors, lodCamera, domainCam, frustum, cache, rep};
   findUndrawnPatches(c);
+  if (options.keepDrawn)
+    for (const char k : cache.culled) rep.drawn.push_back(k ? 0 : 1);
   checkSharedEdges(c);
   return rep;
 }

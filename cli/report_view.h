@@ -1,0 +1,29 @@
+// The camera's picture of a check (check --view): what the camera sees, projected through the check's own camera
+// (verify::lodCamera). Pure function of the report and the camera's layout: no I/O.
+#pragma once
+
+#include "verify/verify.h"
+
+#include <string>
+
+namespace fftess::cli {
+
+namespace vf = fftess::verify;
+
+// Outline samples per patch edge: each outline is the patch's border on the displaced surface, its four edges each
+// through kViewEdgeSegments + 1 points of verify::domainPosition (corners included; the camera-independent position).
+constexpr int kViewEdgeSegments = 4;
+
+// The picture: the camera's viewport scaled to kViewWidth pixels wide, every drawn patch's outline (Report::drawn:
+// CheckOptions::keepDrawn) clipped in homogeneous clip space against the six frustum planes (nothing behind the eye
+// or outside the view is drawn), one <path class="lvN"> per patch in view in <g id="patches">, coloured by size level
+// N; holes (red) and undecided patches (orange) filled where in view; every on-screen finding marked (<g
+// id="findings">: a circle each, at the crack's on-screen gap vertex, labelled with its on-screen gap in pixels, or a
+// T-junction's mismatch, labelled "T-junction"); then a legend that fits the page: the camera, one line per size
+// level drawn, the counts (off-screen findings counted, not drawn), each cause on screen with its fix, and a ruler of
+// 100 camera pixels. layout: layoutFor(terrain, camera) (the report's patch indices).
+constexpr double kViewWidth = 1200;
+std::string viewSvg(const vf::Terrain& layout, const vf::Camera& camera, const vf::Report& r, const std::string& title,
+                    bool countOffScreen);
+
+} // namespace fftess::cli
