@@ -125,14 +125,8 @@ std::string filledPath(const Projector& P, const std::vector<glm::vec3>& pts) {
   return d.empty() ? d : d + "Z";
 }
 
-// Where a finding on screen is marked: the first of its points in front of the eye (a crack's on-screen gap vertex, a
-// mismatching vertex of either side, the shared edge's middle), held inside the image.
-glm::dvec2 markAt(const Projector& P, const vf::Finding& f) {
-  std::vector<glm::vec3> candidates;
-  if (f.classification == vf::Classification::Crack) candidates.push_back(f.onScreenGapVertex);
-  if (f.a.firstMismatch >= 0) candidates.push_back(f.a.mismatchWorld);
-  if (f.b.firstMismatch >= 0) candidates.push_back(f.b.mismatchWorld);
-  candidates.push_back((f.edgeStart + f.edgeEnd) * 0.5f);
+// Where a mark goes: the first of the candidates in front of the eye, held inside the image.
+glm::dvec2 markAt(const Projector& P, const std::vector<glm::vec3>& candidates) {
   glm::dvec2 at(P.ox + P.w / 2, P.oy + P.h / 2);
   for (const glm::vec3& c : candidates) {
     const glm::dvec4 q = P.clip(c);
@@ -142,6 +136,34 @@ glm::dvec2 markAt(const Projector& P, const vf::Finding& f) {
     }
   }
   return {std::clamp(at.x, P.ox, P.ox + P.w), std::clamp(at.y, P.oy, P.oy + P.h)};
+}
+
+// A finding on screen: its crack's on-screen gap vertex, else a mismatching vertex of either side, else the shared
+// edge's middle.
+glm::dvec2 markAt(const Projector& P, const vf::Finding& f) {
+  std::vector<glm::vec3> candidates;
+  if (f.classification == vf::Classification::Crack) candidates.push_back(f.onScreenGapVertex);
+  if (f.a.firstMismatch >= 0) candidates.push_back(f.a.mismatchWorld);
+  if (f.b.firstMismatch >= 0) candidates.push_back(f.b.mismatchWorld);
+  candidates.push_back((f.edgeStart + f.edgeEnd) * 0.5f);
+  return markAt(P, candidates);
+}
+
+// A patch not drawn: where it was seen (Visible), else the middle of the sub-rectangle where the decision stopped.
+glm::dvec2 markAt(const Projector& P, const vf::Terrain& layout, const vf::Hole& h) {
+  if (h.visibility == vf::Visibility::Visible) return markAt(P, std::vector<glm::vec3>{h.visiblePoint});
+  const float half = h.undecidedSide * 0.5f;
+  return markAt(P, {vf::domainPosition(layout, h.patch.index, h.domainPoint.u + half, h.domainPoint.v + half)});
+}
+
+// A mark's label: right of it, or left of it where the page ends.
+void label(std::string& body, const glm::dvec2& at, const std::string& text, double pageWidth, double bottom) {
+  char buf[96];
+  const double lw = svgTextWidth(text, 10, false);
+  const double lx = at.x + 7 + lw <= pageWidth ? at.x + 7 : at.x - 7 - lw;
+  std::snprintf(buf, sizeof buf, "<text class=\"vlb\" x=\"%.1f\" y=\"%.1f\">", std::max(0.0, lx),
+                std::clamp(at.y - 6, 10.0, bottom));
+  body += buf + xmlEscape(text) + "</text>\n";
 }
 
 std::string pixelsText(double px) {
@@ -185,31 +207,33 @@ void drawUndrawn(Page& pg, const vf::Terrain& layout, const std::vector<vf::Hole
     if (h.patch.index < 0 || h.patch.index >= layout.patchCount()) continue;
     const Cause c = holeCause(h);
     pg.addCause((h.visibility == vf::Visibility::Undecided ? "" : "hole: ") + c.key, c.fix);
+    const std::string title = "<title>" + xmlEscape(holeLine(h)) + "</title>";
     const std::string d = filledPath(pg.P, outline(layout, h.patch.index));
-    if (!d.empty())
-      pg.body += std::string("<path class=\"") + cls + "\" d=\"" + d + "\"><title>" + xmlEscape(holeLine(h)) + "</title></path>\n";
+    if (!d.empty()) pg.body += std::string("<path class=\"") + cls + "\" d=\"" + d + "\">" + title + "</path>\n";
+    // Marked too: a patch seen edge on fills no area.
+    const glm::dvec2 at = markAt(pg.P, layout, h);
+    char buf[128];
+    std::snprintf(buf, sizeof buf, "<circle class=\"%s\" cx=\"%.1f\" cy=\"%.1f\" r=\"5\">", cls, at.x, at.y);
+    pg.body += buf + title + "</circle>\n";
+    label(pg.body, at, h.visibility == vf::Visibility::Undecided ? "undecided" : "hole", pg.width, pg.P.oy + pg.P.h);
   }
   pg.body += "</g>\n";
 }
 
 void drawFindings(Page& pg, const vf::Report& r) {
   pg.body += "<g id=\"findings\">\n";
-  char buf[160];
+  char buf[128];
   for (const vf::Finding& f : r.findings) {
     if (f.classification == vf::Classification::Match || !f.onScreen) continue;
     const bool crack = f.classification == vf::Classification::Crack;
     const Cause c = findingCause(f);
     pg.addCause(std::string(vf::toString(f.classification)) + ": " + c.key, c.fix);
     const glm::dvec2 at = markAt(pg.P, f);
-    const std::string label = crack ? pixelsText(f.onScreenGapPixels) : "T-junction";
+    const std::string text = crack ? pixelsText(f.onScreenGapPixels) : "T-junction";
     std::snprintf(buf, sizeof buf, "<circle class=\"%s\" cx=\"%.1f\" cy=\"%.1f\" r=\"5\"><title>", crack ? "vmk" : "vmt",
                   at.x, at.y);
     pg.body += buf + xmlEscape(findingLine(f)) + "</title></circle>\n";
-    const double lw = svgTextWidth(label, 10, false);
-    const double lx = at.x + 7 + lw <= pg.width ? at.x + 7 : at.x - 7 - lw; // right of the mark, or left of it
-    std::snprintf(buf, sizeof buf, "<text class=\"vlb\" x=\"%.1f\" y=\"%.1f\">", std::max(0.0, lx),
-                  std::clamp(at.y - 6, 10.0, pg.P.oy + pg.P.h));
-    pg.body += buf + xmlEscape(label) + "</text>\n";
+    label(pg.body, at, text, pg.width, pg.P.oy + pg.P.h);
   }
   pg.body += "</g>\n";
 }
@@ -251,7 +275,7 @@ double legend(Page& pg, const vf::Camera& cam, const vf::Report& r, bool countOf
   const int64_t off = r.stats.cracksOffScreen + r.stats.tJunctionsOffScreen;
   std::snprintf(buf, sizeof buf,
                 "%lld cracks on screen (red circles, labelled with the gap on screen in pixels), %lld T-junctions on "
-                "screen (orange circles); %lld holes (red fill), %lld undecided (orange fill); %lld findings off "
+                "screen (orange circles); %lld holes (red, filled and circled), %lld undecided (orange, filled and circled); %lld findings off "
                 "screen, not drawn (%s)",
                 static_cast<long long>(r.stats.cracksOnScreen()), static_cast<long long>(r.stats.tJunctionsOnScreen()),
                 static_cast<long long>(r.stats.holes), static_cast<long long>(r.stats.undecided),
@@ -273,7 +297,7 @@ const char* const kViewStyle =
     "rect.lv5{fill:#7f7f7f}rect.lv6{fill:#bcbd22}rect.lv7{fill:#e377c2}"
     ".vhole{fill:#d01010;fill-opacity:0.45;stroke:#d01010;stroke-width:1}"
     ".vund{fill:#e08a00;fill-opacity:0.45;stroke:#e08a00;stroke-width:1}"
-    ".vmk{fill:none;stroke:#d01010;stroke-width:1.5}.vmt{fill:none;stroke:#e08a00;stroke-width:1.5}"
+    "circle.vhole,circle.vund{fill:none;stroke-width:2}.vmk{fill:none;stroke:#d01010;stroke-width:1.5}.vmt{fill:none;stroke:#e08a00;stroke-width:1.5}"
     ".vimg{fill:#fafafa;stroke:#222;stroke-width:1}.vrl{stroke:#222;stroke-width:1.5;fill:none}</style>\n";
 
 } // namespace viewsvg

@@ -17,7 +17,8 @@ constexpr int kViewEdgeSegments = 4;
 // The picture: the camera's viewport scaled to kViewWidth pixels wide, every drawn patch's outline (Report::drawn:
 // CheckOptions::keepDrawn) clipped in homogeneous clip space against the six frustum planes (nothing behind the eye
 // or outside the view is drawn), one <path class="lvN"> per patch in view in <g id="patches">, coloured by size level
-// N; holes (red) and undecided patches (orange) filled where in view; every on-screen finding marked (<g
+// N; holes (red) and undecided patches (orange) filled where in view and circled (labelled "hole" / "undecided") where
+// seen (Hole::visiblePoint) or where the decision stopped; every on-screen finding marked (<g
 // id="findings">: a circle each, at the crack's on-screen gap vertex, labelled with its on-screen gap in pixels, or a
 // T-junction's mismatch, labelled "T-junction"); then a legend that fits the page: the camera, one line per size
 // level drawn, the counts (off-screen findings counted, not drawn), each cause on screen with its fix, and a ruler of

@@ -272,6 +272,24 @@ TEST_CASE("check --view marks every on-screen finding with its pixel gap and out
   CHECK(legend.find("fix: ") != std::string::npos);
 }
 
+TEST_CASE("check --view circles every hole where it is seen, and says how to fix it", "[cli][view]") {
+  // The eye in the plane of a flat grid: the edges whose midpoints lie in the eye's plane get NaN factors (w = 0).
+  const std::string js = clitest::tmpDir() + "/view-holes.json", svgPath = clitest::tmpDir() + "/view-holes.svg";
+  const auto r = run({"check", clitest::source("docs/examples/grid.toml"), "--set", "displacement.kind=none", "--set",
+                      "lod.scheme=screen_sphere", "--set", "tessellation.partitioning=fractional_even", "--set",
+                      "lod.frustum_cull=false", "--eye", "0,0,2", "--target", "0,0,100", "--json", js, "--view", svgPath});
+  REQUIRE(r.status == 1);
+  const json j = json::parse(clitest::readFile(js));
+  const std::string svg = clitest::readFile(svgPath);
+  everythingInside(svg);
+  const std::string holes = group(svg, "holes");
+  REQUIRE(!j.at("holes").empty());
+  CHECK(elements(holes, "circle").size() == j.at("holes").size());
+  for (const Element& t : elements(holes, "text")) CHECK(t.text == "hole");
+  CHECK(elements(holes, "text").size() == j.at("holes").size());
+  CHECK(svg.find("fix: guard w &lt;= 0 in the edge's projection") != std::string::npos);
+}
+
 TEST_CASE("check --view of an unusable path exits 2 naming --view, and writes no report", "[cli][view]") {
   const std::string d = clitest::tmpDir() + "/view-bad";
   clitest::writeFile(d + ".plain", "x");
