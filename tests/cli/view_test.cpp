@@ -303,16 +303,21 @@ TEST_CASE("check --view of an unusable path exits 2 naming --view, and writes no
   CHECK(same.err.find("--view") != std::string::npos);
 }
 
-TEST_CASE("every text of check --svg, check --view and sweep --svg lies inside its picture", "[cli][view][svg]") {
+TEST_CASE("every text of check --svg, check --view, sweep --svg and bench --svg lies inside its picture",
+          "[cli][view][svg]") {
   const std::string d = clitest::tmpDir();
+  const auto b = run({"bench", "--scene", clitest::source("docs/examples/rings_small.toml"), "--cameras", "1",
+                      "--mesh-cameras", "1", "--repeats", "1", "-q", "--svg", d + "/fit-bench.svg"});
+  CHECK(b.status == 0);
   const auto c = run(withArgs({"check", kScene, "-q", "--svg", d + "/fit-check.svg", "--view", d + "/fit-view.svg"}, kNoClamp));
   CHECK(c.status == 1);
   const auto s = run(withArgs({"sweep", kScene, "-q", "--random", "6", "--seed", "3", "--svg", d + "/fit-sweep.svg"}, kNoClamp));
   CHECK(s.status == 1);
-  for (const char* name : {"/fit-check.svg", "/fit-view.svg", "/fit-sweep.svg"}) {
+  for (const char* name : {"/fit-check.svg", "/fit-view.svg", "/fit-sweep.svg", "/fit-bench.svg"}) {
     INFO(name);
     const std::string svg = clitest::readFile(d + name);
-    if (std::string(name) != "/fit-sweep.svg") CHECK(svg.find("fix: ") != std::string::npos);
+    if (std::string(name) == "/fit-check.svg" || std::string(name) == "/fit-view.svg")
+      CHECK(svg.find("fix: ") != std::string::npos);
     everythingInside(svg);
   }
 }
