@@ -178,6 +178,7 @@ struct Page {
   double width = 0; // the page
   std::string body;
   std::map<int, int> levels;                       // level -> patches drawn in view
+  size_t inView = 0;                               // patches drawn in view, all levels
   std::vector<std::pair<std::string, std::string>> causes; // key, fix (in order of appearance)
   void addCause(const std::string& key, const std::string& fix) {
     for (const auto& c : causes)
@@ -195,6 +196,7 @@ void drawPatches(Page& pg, const vf::Terrain& layout, const vf::Report& r) {
     if (d.empty()) continue;
     const int level = geo[i].ref.level;
     ++pg.levels[level];
+    if (++pg.inView > kViewMaxOutlines) continue; // counted, not outlined
     pg.body += "<path class=\"lv" + std::to_string(((level % kLevelColours) + kLevelColours) % kLevelColours) +
                "\" d=\"" + d + "\"/>\n";
   }
@@ -272,6 +274,10 @@ double legend(Page& pg, const vf::Camera& cam, const vf::Report& r, bool countOf
     std::snprintf(buf, sizeof buf, "size level %d (patches 2^%d times the smallest): %d drawn in view", level, level, count);
     y = svgTextLines(pg.body, "t", buf, 13, false, 44, y, textW - 24, 17);
   }
+  if (pg.inView > kViewMaxOutlines)
+    y = svgTextLines(pg.body, "t", "the first " + std::to_string(kViewMaxOutlines) + " of the " +
+                                       std::to_string(pg.inView) + " patches in view (layout order) are outlined",
+                     13, false, 20, y, textW, 17);
   const int64_t off = r.stats.cracksOffScreen + r.stats.tJunctionsOffScreen;
   std::snprintf(buf, sizeof buf,
                 "%lld cracks on screen (red circles, labelled with the gap on screen in pixels), %lld T-junctions on "
