@@ -393,7 +393,7 @@ std::string benchSvg(const BenchTable& t) {
   }
   const double bottom = svgTextLines(o, "n", "red: the row changes findings against its group's reference (+gained -lost)", 11,
                                      false, 10, top + rowH * static_cast<double>(t.rows.size()) + 22, pageW - 20, 14);
-  return svgHead(pageW, bottom, "fftess bench") + o + "</svg>\n";
+  return svgHead(pageW, bottom, "fftess bench --scene " + t.scene) + o + "</svg>\n"; // the path whole in the title
 }
 
 } // namespace fftess::cli
