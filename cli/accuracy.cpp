@@ -3,6 +3,7 @@
 // to the cheapest row, the work done (WorkStats per camera), and what the level changes: findings gained or lost
 // against its group's reference row on the same cameras. docs/accuracy.md holds the table for the default scene.
 #include "accuracy.h"
+#include "svg_text.h"
 #include "common.h"
 #include "report_json.h"
 #include "scene_options.h"
@@ -351,44 +352,48 @@ std::string benchJson(const BenchTable& t) {
   return j.dump(2) + "\n";
 }
 
+// Bar labels ("1.23x, 4.56 ms (reference)") of one row.
+static std::string barLabel(const BenchRow& r) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "%.2fx, %.2f ms", r.relative, r.msPerCamera);
+  return buf + (r.reference ? std::string(" (reference)")
+                            : r.gained + r.lost > 0 ? " +" + std::to_string(r.gained) + " -" + std::to_string(r.lost) : "");
+}
+
+// The page fits its texts (svg_text.h): the row names push the bars right, the bar labels widen the page, the title
+// wraps.
 std::string benchSvg(const BenchTable& t) {
-  const double rowH = 22, left = 330, width = 420, top = 40;
-  double maxRel = 1;
-  for (const BenchRow& r : t.rows) maxRel = std::max(maxRel, r.relative);
-  const double h = top + rowH * static_cast<double>(t.rows.size()) + 30;
-  std::string o;
-  char buf[512];
-  std::snprintf(buf, sizeof buf,
-                "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"900\" "
-                "height=\"%.0f\" viewBox=\"0 0 900 %.0f\">\n<title>fftess bench</title>\n<rect width=\"100%%\" "
-                "height=\"100%%\" fill=\"white\"/>\n<text x=\"10\" y=\"22\" font-family=\"sans-serif\" font-size=\"14\">"
-                "What accuracy costs: time per camera relative to the cheapest row (log scale), ",
-                h, h);
-  o += buf;
-  o += xmlEscape(t.scene) + "</text>\n"; // a path of any length: never through the fixed buffer
+  const double rowH = 22, width = 420;
+  double left = 330, labelW = 0, maxRel = 1;
+  for (const BenchRow& r : t.rows) {
+    maxRel = std::max(maxRel, r.relative);
+    left = std::max(left, 10 + svgTextWidth(r.group + ": " + r.name, 12, true) + 10);
+    labelW = std::max(labelW, svgTextWidth(barLabel(r), 12, true));
+  }
+  const double pageW = std::max(900.0, left + 4 + width + 6 + labelW + 10);
+  std::string o = "<style>.t{font:14px sans-serif}.s{font:12px monospace}.n{font:11px sans-serif}</style>\n"
+                  "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  const double top = svgTextLines(o, "t", "What accuracy costs: time per camera relative to the cheapest row (log scale), " +
+                                            t.scene, 14, false, 10, 22, pageW - 20, 18) - 4;
   const double logMax = std::log2(std::max(2.0, maxRel));
+  char buf[512];
   for (size_t i = 0; i < t.rows.size(); ++i) {
     const BenchRow& r = t.rows[i];
     const double y = top + rowH * static_cast<double>(i);
-    std::snprintf(buf, sizeof buf, "<text x=\"10\" y=\"%.1f\" font-family=\"monospace\" font-size=\"12\">%s: %s</text>\n",
-                  y + 15, xmlEscape(r.group).c_str(), xmlEscape(r.name).c_str());
-    o += buf;
+    std::snprintf(buf, sizeof buf, "<text class=\"s\" x=\"10\" y=\"%.1f\">", y + 15);
+    o += buf + xmlEscape(r.group + ": " + r.name) + "</text>\n";
     if (!r.error.empty()) continue;
     const double w = 4 + width * std::log2(std::max(1.0, r.relative)) / logMax;
     const char* colour = r.gained + r.lost > 0 ? "#d01010" : r.reference ? "#2a5599" : "#7a9ac0";
     std::snprintf(buf, sizeof buf,
-                  "<rect x=\"%.1f\" y=\"%.1f\" width=\"%.1f\" height=\"%.1f\" fill=\"%s\"/>\n<text x=\"%.1f\" y=\"%.1f\" "
-                  "font-family=\"monospace\" font-size=\"12\">%.2fx, %.2f ms%s</text>\n",
-                  left, y + 4, w, rowH - 6, colour, left + w + 6, y + 15, r.relative, r.msPerCamera,
-                  r.reference ? " (reference)" : (r.gained + r.lost > 0 ? (" +" + std::to_string(r.gained) + " -" + std::to_string(r.lost)).c_str() : ""));
+                  "<rect x=\"%.1f\" y=\"%.1f\" width=\"%.1f\" height=\"%.1f\" fill=\"%s\"/>\n<text class=\"s\" x=\"%.1f\" "
+                  "y=\"%.1f\">%s</text>\n",
+                  left, y + 4, w, rowH - 6, colour, left + w + 6, y + 15, xmlEscape(barLabel(r)).c_str());
     o += buf;
   }
-  std::snprintf(buf, sizeof buf,
-                "<text x=\"10\" y=\"%.1f\" font-family=\"sans-serif\" font-size=\"11\">red: the row changes findings "
-                "against its group's reference (+gained -lost)</text>\n</svg>\n",
-                h - 8);
-  o += buf;
-  return o;
+  const double bottom = svgTextLines(o, "n", "red: the row changes findings against its group's reference (+gained -lost)", 11,
+                                     false, 10, top + rowH * static_cast<double>(t.rows.size()) + 22, pageW - 20, 14);
+  return svgHead(pageW, bottom, "fftess bench --scene " + t.scene) + o + "</svg>\n"; // the path whole in the title
 }
 
 } // namespace fftess::cli

@@ -52,10 +52,44 @@ static std::string fixWords(const vf::EdgeSide& s) {
 // neither side adapted its factor to the other (EdgeLod::neighbourSize carries the ratio).
 static Cause largeJumpCause(int jump, const std::string& record) {
   const std::string ratio = std::to_string(int64_t(1) << jump) + "x";
-  const std::string fix = "fix: balance the quadtree 2:1 (layout.balance = \"2to1\") or keep neighbours within 2x";
   return {"size jump " + ratio + ": lod/'s neighbour rule handles 2x jumps only",
           "neighbour " + ratio + ": lod/'s neighbour rule handles 2x jumps only, no side adapted its factor (" +
-              record + "); " + fix};
+              record + ")",
+          "balance the quadtree 2:1 (layout.balance = \"2to1\") or keep neighbouring patches within 2x of each other"};
+}
+
+// ---- fixes: one line a user can act on, per cause (derived from the same records as the cause) -------------------
+static const char* const kPow2Fix =
+    "round the larger side's factor to a power of two (lod.adjacency_clamp = \"pow2\"): only powers of two nest in "
+    "the tessellator's 16.16 points (fftess explain --why-pow2)";
+static const char* const kPositionsFix =
+    "make both sides position a shared point from the same inputs: each corner computed once (layout.corners = "
+    "\"shared\") and a lerp exact at its ends (domain.formula = \"blend\")";
+
+// Same-size neighbours with different factors: the factor of a shared edge must be a function of that edge alone.
+static std::string sameSizeFix(const vf::EdgeLod& l) {
+  if (l.scheme == vf::LodScheme::Shader)
+    return "compute an edge's factor from that edge's two corners only, in the same order of float operations on both "
+           "sides (" + producer(l) + ")";
+  if (l.scheme == vf::LodScheme::PatchCenter)
+    return "compute an edge's factor from the edge, not from each patch's centre (lod.scheme = \"screen_sphere\")";
+  return "give both patches the same corners for a shared edge, bit for bit (layout.corners = \"shared\")";
+}
+
+// A 2x jump where the small side's factor is not half the big side's, from the small side's record (the rule that ran).
+static std::string halfFix(const vf::EdgeSide& small, bool belowMinimum) {
+  const vf::EdgeLod& l = small.lod;
+  if (l.scheme == vf::LodScheme::Shader)
+    return "give the small side exactly half the big side's factor at a 2x jump, both powers of two (" + producer(l) +
+           ": as lod.adjacency_clamp = \"pow2\" does)";
+  if (l.neighbourSize != 2.0f || l.clamp == lod::AdjacencyClamp::None)
+    return "turn the neighbour rule on (lod.adjacency_clamp = \"pow2\"): the small side takes half the big side's "
+           "factor, both powers of two";
+  if (belowMinimum)
+    return "keep the big side's factor at least twice the partitioning's minimum at a jump (lod.adjacency_clamp = "
+           "\"pow2\" raises it to 4 or more)";
+  return "rebuild the neighbour's corner bit-exactly (lod.reconstruction = \"far_corner\" or \"resampled\"), so the "
+         "small side computes the big side's factor from the big side's own corners";
 }
 
 Cause findingCause(const vf::Finding& f) {
@@ -72,28 +106,39 @@ Cause findingCause(const vf::Finding& f) {
     if (f.a.processedFactor != f.b.processedFactor)
       return {"same-size neighbours chose different factors (" + producer(f.a.lod) + ")",
               "same-size neighbours chose different factors (" + formatFloat(f.a.processedFactor) + " vs " +
-                  formatFloat(f.b.processedFactor) + sides + ")"};
+                  formatFloat(f.b.processedFactor) + sides + ")",
+              sameSizeFix(f.a.lod)};
     return {"same factor, different positions (domain shader / corners)",
-            "both sides use factor " + formatFloat(B) + " but compute different positions (domain shader or corners)"};
+            "both sides use factor " + formatFloat(B) + " but compute different positions (domain shader or corners)",
+            kPositionsFix};
   }
   if (jump > 1) return largeJumpCause(jump, pair + record);
   const std::string rule = " (" + jumpRule(small) + ")";
   if (B != 2 * S) {
     const float minimum = f.partitioning == Partitioning::FractionalEven ? 2.0f : 1.0f;
+    const bool belowMinimum = S == minimum && B < 2 * minimum;
     return {"2x jump: the small side's factor is not half the big side's" + rule,
             "2x jump: " + pair + " (" + part + "): the small side's factor is not half the big side's" +
-                (S == minimum && B < 2 * minimum ? " (half of it is below " + part + "'s minimum " + formatFloat(minimum) + ")" : "") +
-                record};
+                (belowMinimum ? " (half of it is below " + part + "'s minimum " + formatFloat(minimum) + ")" : "") +
+                record,
+            halfFix(small, belowMinimum)};
   }
   if (B != std::floor(B) || S != std::floor(S))
     return {"2x jump: fractional factors do not nest" + rule,
-            "2x jump: fractional factors " + pair + " (" + part + ") do not nest" + record};
+            "2x jump: fractional factors " + pair + " (" + part + ") do not nest" + record,
+            small.lod.scheme == vf::LodScheme::Shader
+                ? "round the factors at a jump to powers of two (" + producer(small.lod) +
+                      ": as lod.adjacency_clamp = \"pow2\" does); fractional factors never nest"
+                : std::string("round the factors at a jump to powers of two (lod.adjacency_clamp = \"pow2\"); "
+                              "fractional factors never nest")};
   if (!isPow2(B))
     return {"2x jump: factor not a power of two (16.16 rounding)" + rule,
             "2x jump: " + pair + " (" + part + "): B is not a power of two, the 16.16 points do not nest (fftess explain "
-            "--partitioning " + part + " " + formatFloat(B) + " " + formatFloat(S) + ")" + record};
+            "--partitioning " + part + " " + formatFloat(B) + " " + formatFloat(S) + ")" + record,
+            small.lod.scheme == vf::LodScheme::Shader ? std::string(kPow2Fix) + " (" + producer(small.lod) + ")" : kPow2Fix};
   return {"2x jump: nesting factors, different positions (domain shader / corners)",
-          "2x jump: " + pair + " nests in 16.16 but the positions differ (domain shader or corners)" + record};
+          "2x jump: " + pair + " nests in 16.16 but the positions differ (domain shader or corners)" + record,
+          kPositionsFix};
 }
 
 // ---- text --------------------------------------------------------------------------------------------------------
@@ -108,7 +153,7 @@ static std::string gapText(const char* what, double world, double pixels, const 
   return gap;
 }
 
-std::string findingLine(const vf::Finding& f) {
+std::string findingLine(const vf::Finding& f, bool withCause) {
   std::string gap;
   if (f.classification == vf::Classification::Crack) {
     const bool same = f.onScreenGapWorld == f.gapWorld && f.onScreenGapVertex == f.gapVertex;
@@ -118,9 +163,10 @@ std::string findingLine(const vf::Finding& f) {
             gapText("farthest vertex of all", f.gapWorld, f.gapPixels, f.gapVertex);
   }
   const bool crack = f.classification == vf::Classification::Crack;
+  if (!withCause && !gap.empty()) gap.pop_back(); // the ';' before the cause
   return std::string(crack ? "crack      " : "t_junction ") + (f.onScreen ? "" : "(off screen) ") +
          patchText(f.a.patch) + " " + edgeName(f.a.edge) + " | " + patchText(f.b.patch) + " " + edgeName(f.b.edge) +
-         ":" + gap + " " + findingCause(f).detail;
+         ":" + gap + (withCause ? " " + findingCause(f).detail : std::string());
 }
 
 // A patch not drawn whose visibility stayed undecided (Report::undecided): which way it was not drawn, and where
@@ -146,9 +192,32 @@ static Cause undecidedCause(const vf::Hole& h) {
                   "view frustum, and no point evaluated in it is in view (a view smaller than it, or a surface that "
                   "grazes the view)",
                   double(h.undecidedSide), double(h.domainPoint.u), double(h.domainPoint.v));
-  const std::string key = h.kind == vf::HoleKind::CulledWhileVisible ? "undecided: culled (" + by + ")"
-                                                                     : "undecided: discarded (" + by + ")";
-  return {key, how + buf};
+  const bool culled = h.kind == vf::HoleKind::CulledWhileVisible;
+  const std::string key = culled ? "undecided: culled (" + by + ")" : "undecided: discarded (" + by + ")";
+  return {key, how + buf,
+          culled ? "cull only what is proven outside the view: a culling box that holds the displaced surface "
+                   "(lod.height_bounds) tested against the camera's own frustum planes"
+                 : "draw every patch that may be in view: outer factors >= 1 (lod.min_factor), never NaN, <= 0 or "
+                   "denormal"};
+}
+
+// The fix of a hole the tessellator made (a factor that is NaN, <= 0 or denormal), from its record: the projection's
+// w at the edge's midpoint, the factor's class and who wrote it.
+static std::string discardFix(const vf::Hole& h, const std::string& by) {
+  const float f = h.hullFactor;
+  const bool shader = h.lod.scheme == vf::LodScheme::Shader;
+  const std::string in = shader ? " (" + by + ")" : "";
+  if (h.edge < 0) return "draw every patch whose surface is in view (the patch was dropped without a factor)";
+  if (!shader && h.lod.scheme != vf::LodScheme::Constant && !(h.midpointW > 0))
+    return "guard w <= 0 in the edge's projection (the edge's midpoint is " +
+           std::string(h.midpointW == 0 ? "in the eye's plane" : "behind the eye") +
+           "): clamp the projected size before dividing by w";
+  if (std::fpclassify(f) == FP_SUBNORMAL)
+    return "the tessellator flushes a denormal factor to zero and discards the patch: clamp factors to >= 1 before "
+           "output" + (shader ? in : std::string(" (lod.min_factor = 1)"));
+  if (std::isnan(f)) return "guard the divisions that make the factor NaN and clamp factors to [1, 64] with a NaN-safe max" + in;
+  return "clamp outer factors to >= 1 unless the patch is meant to be culled: a factor <= 0 discards it" +
+         (shader ? in : std::string(" (lod.min_factor = 1)"));
 }
 
 Cause holeCause(const vf::Hole& h) {
@@ -161,7 +230,8 @@ Cause holeCause(const vf::Hole& h) {
     if (shader) { // the shader's own test: fftess knows its verdict, not its box
       std::snprintf(buf, sizeof buf, "culled by %s (it said culled), but the surface is in view at (%.6g, %.6g, %.6g)",
                     by.c_str(), double(h.visiblePoint.x), double(h.visiblePoint.y), double(h.visiblePoint.z));
-      return {"culled while visible (" + by + ")", buf};
+      return {"culled while visible (" + by + ")", buf,
+              "cull only boxes that hold the displaced surface and lie outside the camera's frustum planes (" + by + ")"};
     }
     std::snprintf(buf, sizeof buf,
                   "culled by %s's frustum test, but the surface is in view at (%.6g, %.6g, %.6g); lod's box y "
@@ -169,7 +239,11 @@ Cause holeCause(const vf::Hole& h) {
                   by.c_str(), double(h.visiblePoint.x), double(h.visiblePoint.y), double(h.visiblePoint.z),
                   double(h.lodBoxMinY), double(h.lodBoxMaxY),
                   bound ? ": the surface leaves it (height bounds too small)" : ": the surface is inside it (a wrong plane)");
-    return {"culled while visible (" + by + (bound ? ", height bounds too small)" : ", frustum test)"), buf};
+    return {"culled while visible (" + by + (bound ? ", height bounds too small)" : ", frustum test)"), buf,
+            bound ? "widen the culling box's height range to the heights the domain shader reaches there "
+                    "(lod.height_bounds = \"per_patch\" bounds each patch by the texels it samples)"
+                  : "build the culling planes from the view-projection the camera renders with (camera.convention; "
+                    "lod.frustum_cull = false turns culling off)"};
   }
   std::string why;
   const float f = h.hullFactor;
@@ -202,7 +276,7 @@ Cause holeCause(const vf::Hole& h) {
                                 (std::fpclassify(f) == FP_SUBNORMAL ? std::string("denormal factor, flushed to zero") : what + " factor") +
                                 (h.lod.scheme != vf::LodScheme::Constant && h.midpointW == 0 ? " (w = 0 at the edge midpoint)" : "") +
                                 " (" + by + ")";
-  return {key, "discarded by the tessellator: " + why + seen};
+  return {key, "discarded by the tessellator: " + why + seen, discardFix(h, by)};
 }
 
 std::string holeLine(const vf::Hole& h) {

@@ -16,11 +16,14 @@ std::string patchText(const vf::PatchRef& p);         // "ring R tile T patch P"
 std::string fmtWorld(double v);                       // %.3g
 
 // Why a finding happened, printed from its records (the LOD's per side, the tessellator's): a short, stable key (the
-// grouping key of sweep summaries: the size jump, the tessellator fact and the rule the LOD applied) and a longer
-// explanation with the numbers of this finding and each side's LOD record (vf::lodWords).
+// grouping key of sweep summaries: the size jump, the tessellator fact and the rule the LOD applied), a longer
+// explanation with the numbers of this finding and each side's LOD record (vf::lodWords), and one line a user can act
+// on (fix), derived from the same facts: the change that removes the cause, naming the scene key and value where one
+// exists. Each cause is one return of findingCause / holeCause with all three (a new cause is one place).
 struct Cause {
   std::string key;
   std::string detail;
+  std::string fix;
 };
 Cause findingCause(const vf::Finding& f);
 // The factors' source as causes name it when an edge's record says LodScheme::Shader: "the shader FILE" (the file's
@@ -30,7 +33,8 @@ void setShaderBlame(const vf::Scene& scene);
 // One line: classification, both sides, gap, cause. Off screen (Finding::onScreen false): "off screen" after the
 // classification. A crack on screen whose farthest vertex is not its worst on-screen one: the on-screen gap, then the
 // farthest vertex's.
-std::string findingLine(const vf::Finding& f);
+// withCause false: without the cause's explanation (check's lines under their cause's header).
+std::string findingLine(const vf::Finding& f, bool withCause = true);
 // A hole's cause from its records: a short key (sweep grouping) and the explanation (factor bits, lod's record,
 // the projection's w at the edge's midpoint, where the patch was seen).
 Cause holeCause(const vf::Hole& h);

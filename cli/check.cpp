@@ -8,6 +8,7 @@
 #include "report_gltf.h"
 #include "report_json.h"
 #include "report_svg.h"
+#include "report_view.h"
 #include "scene_options.h"
 
 #include <CLI/CLI.hpp>
@@ -92,6 +93,9 @@ CLI::App* addCheck(CLI::App& app, CheckArgs& a) {
       "With --cameras FILE: check camera N of the file (0 is the first); without it the file must hold one camera");
   sub->add_option("--show", a.show, "Finding lines to print (default 20; all are in --json)")->capture_default_str();
   sub->add_flag("--mesh", a.mesh, "Also run the whole-mesh check (full tessellation) and compare the two verdicts");
+  sub->add_option("--view", a.view,
+                  "Write what the camera sees as SVG: drawn patches' outlines by size, holes, on-screen findings with "
+                  "their pixel gaps, each cause's fix");
   return sub;
 }
 
@@ -146,30 +150,55 @@ vf::Report keptReport(const vf::Report& full, size_t keep) {
   return r;
 }
 
-// The holes, undecided patches and findings, at most --show lines: the findings on screen first, then those off
-// screen (apart: not counted unless --offscreen); then how many more there are.
-std::string findingLines(const CheckArgs& a, const vf::Report& r) {
+// The holes, undecided patches and findings grouped by cause (the cause keys of sweep's table), in the order of the
+// report: holes, undecided patches, findings on screen, then those off screen (apart: not counted unless
+// --offscreen). Each cause: a header with its count in the report and its fix, then its lines; a group's first
+// finding line carries the cause's explanation, the others only where and how wide. At most --show lines in all
+// (the headers of every cause are printed); then how many more there are.
+struct CauseGroup {
+  std::string key, fix;
+  std::vector<std::string> lines;
+};
+
+void addToGroup(std::vector<CauseGroup>& groups, const std::string& key, const std::string& fix, std::string line) {
+  auto it = std::find_if(groups.begin(), groups.end(), [&](const CauseGroup& g) { return g.key == key; });
+  if (it == groups.end()) it = groups.insert(groups.end(), CauseGroup{key, fix, {}});
+  it->lines.push_back(std::move(line));
+}
+
+std::string groupText(const std::vector<CauseGroup>& groups, int show, int& shown) {
   std::string text;
-  int shown = 0;
+  for (const CauseGroup& g : groups) {
+    text += "  " + g.key + ": " + std::to_string(g.lines.size()) + "\n    fix: " + g.fix + "\n";
+    for (const std::string& line : g.lines)
+      if (shown++ < show) text += line + "\n";
+  }
+  return text;
+}
+
+std::string findingLines(const CheckArgs& a, const vf::Report& r) {
+  std::vector<CauseGroup> undrawn, on, off;
   for (const vf::Hole& h : r.holes) {
-    if (shown++ >= a.show) break;
-    text += holeLine(h) + "\n";
+    const Cause c = holeCause(h);
+    addToGroup(undrawn, "hole: " + c.key, c.fix, holeLine(h));
   }
   for (const vf::Hole& h : r.undecided) {
-    if (shown++ >= a.show) break;
-    text += holeLine(h) + "\n";
+    const Cause c = holeCause(h);
+    addToGroup(undrawn, c.key, c.fix, holeLine(h));
   }
-  for (const bool onScreen : {true, false}) {
-    bool header = onScreen;
-    for (const vf::Finding& f : r.findings) {
-      if (f.classification == vf::Classification::Match || f.onScreen != onScreen) continue;
-      if (shown++ >= a.show) break;
-      if (!header)
-        text += std::string("  off screen") + (a.offscreen ? " (counted, --offscreen):" : ", not counted:") + "\n";
-      header = true;
-      text += findingLine(f) + "\n";
-    }
+  for (const vf::Finding& f : r.findings) {
+    if (f.classification == vf::Classification::Match) continue;
+    const Cause c = findingCause(f);
+    std::vector<CauseGroup>& groups = f.onScreen ? on : off;
+    const std::string key = std::string(vf::toString(f.classification)) + ": " + c.key; // off screen: under its header
+    const bool first = std::none_of(groups.begin(), groups.end(), [&](const CauseGroup& g) { return g.key == key; });
+    addToGroup(groups, key, c.fix, findingLine(f, first));
   }
+  int shown = 0;
+  std::string text = groupText(undrawn, a.show, shown) + groupText(on, a.show, shown);
+  if (!off.empty())
+    text += std::string("  off screen") + (a.offscreen ? " (counted, --offscreen):" : ", not counted:") + "\n" +
+            groupText(off, a.show, shown);
   const int64_t nonMatch = r.stats.cracks + r.stats.tJunctions + r.stats.holes + r.stats.undecided;
   if (shown > a.show || nonMatch > a.show)
     text += "  ... " + std::to_string(nonMatch - a.show) + " more findings (--show N, or --json FILE)\n";
@@ -260,6 +289,8 @@ void writeCheckReports(const CheckArgs& a, ReportFiles& reports, const vf::Terra
   }
   if (!a.svg.empty()) // the camera's own patches (a quadtree's differ per camera): the report's indices
     reports.setSvg(checkSvg(vf::layoutFor(terrain, cam), r, "fftess check " + a.scene, a.offscreen));
+  if (!a.view.empty()) // the camera's own layout: the report's patch indices (a quadtree's leaves for this camera)
+    reports.setView(viewSvg(vf::layoutFor(terrain, cam), cam, r, "fftess check " + a.scene + " --view", a.offscreen));
   reports.commit(); // all or nothing
 }
 
@@ -285,6 +316,7 @@ int runCheck(const CheckArgs& a) {
   vf::CheckOptions opt = checkOptions(a, terrain);
   const size_t keep = opt.maxFindings;
   if (a.mesh) opt.maxFindings = static_cast<size_t>(-1); // the mesh comparison needs every finding
+  opt.keepDrawn = !a.view.empty();                        // --view draws the patches drawn
   const vf::Report full = vf::checkScene(terrain, cam, opt); // the one edge check of this camera
   if (!full.error.empty()) throw UsageError(full.error);
   const vf::Report r = keptReport(full, keep);

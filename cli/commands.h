@@ -68,6 +68,7 @@ struct SceneArgs {
   bool offscreen = false;   // --offscreen: findings outside the view frustum count too (vf::CheckOptions::countOffScreen)
   std::string cameras;      // --cameras FILE: cameras from a CSV / JSON file (cli/camera_file.h)
   std::string gltf;         // --gltf FILE: the checked camera in 3D (check: its camera; sweep: the worst camera's)
+  std::string view;         // check --view FILE.svg: what the camera sees (cli/report_view.h); "" for sweep
 };
 
 struct CheckArgs : SceneArgs {

@@ -181,6 +181,7 @@ std::vector<CauseRow> mergedCauses(const std::vector<json>& shards) {
       if (added || first < r.firstCamera) {
         r.firstCamera = first;
         r.example = c.at("example");
+        r.fix = c.value("fix", std::string()); // reports written before "fix" existed have none
         it->second.position = position;
       }
       ++position;

@@ -65,8 +65,10 @@ static json sideJson(const vf::EdgeSide& s) {
 json findingJson(const vf::Finding& f) {
   json j;
   j["classification"] = vf::toString(f.classification);
-  j["cause"] = findingCause(f).key;
-  j["explanation"] = findingCause(f).detail;
+  const Cause cause = findingCause(f);
+  j["cause"] = cause.key;
+  j["fix"] = cause.fix;
+  j["explanation"] = cause.detail;
   j["partitioning"] = toString(f.partitioning);
   j["a"] = sideJson(f.a);
   j["b"] = sideJson(f.b);
@@ -99,8 +101,10 @@ json statsJson(const vf::Stats& s) {
 json holeJson(const vf::Hole& h) {
   json j;
   j["kind"] = vf::toString(h.kind);
-  j["cause"] = holeCause(h).key;
-  j["explanation"] = holeCause(h).detail;
+  const Cause cause = holeCause(h);
+  j["cause"] = cause.key;
+  j["fix"] = cause.fix;
+  j["explanation"] = cause.detail;
   j["patch"] = {{"index", h.patch.index}, {"ring", h.patch.ring}, {"tile", h.patch.tile}, {"patch", h.patch.patch},
                 {"level", h.patch.level}};
   j["visibility"] = vf::toString(h.visibility);
@@ -239,7 +243,7 @@ json sweepSummaryJson(size_t requested, const vf::SweepResult& res, const std::v
   j["verdict"] = vf::toString(vf::verdictOf(res, countOffScreen));
   json cs = json::array();
   for (const CauseRow& c : causes)
-    cs.push_back({{"cause", c.cause}, {"findings", c.findings}, {"cameras", c.cameras}, {"first_camera", c.firstCamera},
+    cs.push_back({{"cause", c.cause}, {"fix", c.fix}, {"findings", c.findings}, {"cameras", c.cameras}, {"first_camera", c.firstCamera},
                   {"example", c.example}});
   j["causes"] = cs;
   vf::WorkStats work = terrainWork;

@@ -42,6 +42,7 @@ struct CauseRow {
   size_t cameras = 0;
   size_t firstCamera = 0;
   std::string example;
+  std::string fix; // the first finding's Cause::fix
 };
 
 // The whole report of `fftess check` (mesh: null unless --mesh ran).

@@ -2,6 +2,7 @@
 #include "report_svg.h"
 #include "causes.h"
 #include "common.h"
+#include "svg_text.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -76,24 +77,13 @@ void svgPatches(std::string& o, const vf::Terrain& terrain, const MapView& v) {
 // The inset: the worst finding's shared edge stretched to the inset's width, side a's points above the line and
 // side b's below (from the tessellator's edge query), the points without a partner on the other side in red.
 // gap: the gap that counts (the on-screen one, or with --offscreen the farthest vertex's).
-// The document's opening and its title (the command line, with the user's path whole: never through a fixed buffer).
-std::string svgDocumentHead(double w, double h, const std::string& title) {
-  char buf[256];
-  std::snprintf(buf, sizeof buf,
-                "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" "
-                "height=\"%.0f\" viewBox=\"0 0 %.0f %.0f\">\n",
-                w, h, w, h);
-  return buf + ("<title>" + xmlEscape(title) + "</title>\n");
-}
-
-void svgInset(std::string& o, const vf::Scene& scene, const vf::Finding& f, double gap, double x, double y, double w) {
+// Returns the inset's bottom: its height grows with its wrapped text lines.
+double svgInset(std::string& o, const vf::Scene& scene, const vf::Finding& f, double gap, double x, double y, double w) {
   char buf[320];
-  std::snprintf(buf, sizeof buf, "<g id=\"inset\"><rect class=\"ins\" x=\"%.1f\" y=\"%.1f\" width=\"%.1f\" height=\"150\"/>\n",
-                x, y, w);
-  o += buf;
-  std::snprintf(buf, sizeof buf, "<text class=\"t\" x=\"%.1f\" y=\"%.1f\">worst %s, zoomed: the shared edge, side a above, side b below</text>\n",
-                x + 8, y + 18, vf::toString(f.classification));
-  o += buf;
+  std::string body;
+  const double textW = w - 16;
+  svgTextLines(body, "t", std::string("worst ") + vf::toString(f.classification) +
+                              ", zoomed: the shared edge, side a above, side b below", 13, false, x + 8, y + 18, textW, 17);
   struct Tick {
     double t;
     bool partner;
@@ -115,26 +105,31 @@ void svgInset(std::string& o, const vf::Scene& scene, const vf::Finding& f, doub
       if (a.t == b.t) a.partner = b.partner = true;
   const double lx = x + 20, lw = w - 40, ly = y + 85;
   std::snprintf(buf, sizeof buf, "<line class=\"p\" x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\"/>\n", lx, ly, lx + lw, ly);
-  o += buf;
+  body += buf;
   for (const Tick& t : ta) {
     std::snprintf(buf, sizeof buf, "<line class=\"%s\" x1=\"%.2f\" y1=\"%.1f\" x2=\"%.2f\" y2=\"%.1f\"/>\n",
                   t.partner ? "a" : "x", lx + t.t * lw, ly - 25, lx + t.t * lw, ly);
-    o += buf;
+    body += buf;
   }
   for (const Tick& t : tb) {
     std::snprintf(buf, sizeof buf, "<line class=\"%s\" x1=\"%.2f\" y1=\"%.1f\" x2=\"%.2f\" y2=\"%.1f\"/>\n",
                   t.partner ? "b" : "x", lx + t.t * lw, ly, lx + t.t * lw, ly + 25);
-    o += buf;
+    body += buf;
   }
-  // Why, from the finding's records (the LOD's per side and the tessellator's), as the text report says it.
-  o += "<text class=\"s\" x=\"" + formatFloat(static_cast<float>(x + 8)) + "\" y=\"" +
-       formatFloat(static_cast<float>(y + 124)) + "\">why: " + xmlEscape(findingCause(f).key) + "</text>\n";
-  std::snprintf(buf, sizeof buf,
-                "<text class=\"s\" x=\"%.1f\" y=\"%.1f\">a: %s %s factor %s  b: %s %s factor %s  gap %s world</text>\n</g>\n",
-                x + 8, y + 142, patchText(f.a.patch).c_str(), edgeName(f.a.edge), formatFloat(f.a.processedFactor).c_str(),
-                patchText(f.b.patch).c_str(), edgeName(f.b.edge), formatFloat(f.b.processedFactor).c_str(),
-                fmtWorld(gap).c_str());
-  o += buf;
+  // Why and how to fix it, from the finding's records (the LOD's per side and the tessellator's), as the text report
+  // says it.
+  const Cause cause = findingCause(f);
+  double ty = svgTextLines(body, "s", "why: " + cause.key, 11, true, x + 8, y + 124, textW, 14);
+  ty = svgTextLines(body, "s", "fix: " + cause.fix, 11, true, x + 8, ty, textW, 14);
+  ty = svgTextLines(body, "s", "a: " + patchText(f.a.patch) + " " + edgeName(f.a.edge) + " factor " +
+                                   formatFloat(f.a.processedFactor) + "  b: " + patchText(f.b.patch) + " " +
+                                   edgeName(f.b.edge) + " factor " + formatFloat(f.b.processedFactor) + "  gap " +
+                                   fmtWorld(gap) + " world", 11, true, x + 8, ty, textW, 14);
+  const double bottom = ty - 14 + 10;
+  std::snprintf(buf, sizeof buf, "<g id=\"inset\"><rect class=\"ins\" x=\"%.1f\" y=\"%.1f\" width=\"%.1f\" height=\"%.1f\"/>\n",
+                x, y, w, bottom - y);
+  o += buf + body + "</g>\n";
+  return bottom;
 }
 
 // A hole: the patch filled.
@@ -155,16 +150,15 @@ std::string checkSvg(const vf::Terrain& terrain, const vf::Report& r, const std:
   MapView v;
   v.init(terrain.extent());
   const double H = v.margin * 2 + (v.e.maxZ - v.e.minZ) * v.scale, W = v.margin * 2 + (v.e.maxX - v.e.minX) * v.scale;
+  const double pageW = std::max(W, 780.0);
   // The worst finding that counts: on screen by its on-screen gap, or (--offscreen) any by its gap.
   const vf::Finding* worst = nullptr;
   for (const vf::Finding& f : r.findings) {
     if (!countOffScreen && !f.onScreen) continue;
     if (!worst || (countOffScreen ? f.gapWorld > worst->gapWorld : f.onScreenGapWorld > worst->onScreenGapWorld)) worst = &f;
   }
-  const double totalH = H + 60 + (worst ? 170 : 0);
   char buf[512];
   std::string o;
-  o += svgDocumentHead(std::max(W, 780.0), totalH, title);
   o += kSvgStyle;
   o += "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   svgPatches(o, terrain, v);
@@ -189,18 +183,21 @@ std::string checkSvg(const vf::Terrain& terrain, const vf::Report& r, const std:
   o += "</g>\n";
   const int64_t off = r.stats.cracksOffScreen + r.stats.tJunctionsOffScreen;
   std::snprintf(buf, sizeof buf,
-                "<text class=\"t\" x=\"20\" y=\"%.0f\">%lld edges checked: %lld match, %lld T-junctions (orange), "
-                "%lld cracks (red, circled), %lld holes (filled) on screen; %lld off screen (grey, dashed: %s)</text>\n",
-                H + 25, static_cast<long long>(r.stats.edgesChecked), static_cast<long long>(r.stats.matches),
+                "%lld edges checked: %lld match, %lld T-junctions (orange), %lld cracks (red, circled), %lld holes "
+                "(filled) on screen; %lld off screen (grey, dashed: %s)",
+                static_cast<long long>(r.stats.edgesChecked), static_cast<long long>(r.stats.matches),
                 static_cast<long long>(r.stats.tJunctionsOnScreen()), static_cast<long long>(r.stats.cracksOnScreen()),
                 static_cast<long long>(r.stats.holes), static_cast<long long>(off),
                 countOffScreen ? "counted, --offscreen" : "not counted");
-  o += buf;
+  double bottom = svgTextLines(o, "t", buf, 13, false, 20, H + 25, pageW - 40, 17) - 17 + 10;
+  // The first hole's fix (a picture without findings that count still says how to fix what it shows).
+  if (!r.holes.empty())
+    bottom = svgTextLines(o, "s", "hole fix: " + holeCause(r.holes.front()).fix, 11, true, 20, bottom + 14, pageW - 40, 14) - 14 + 10;
   if (worst)
-    svgInset(o, terrain.scene(), *worst, countOffScreen || !worst->onScreen ? worst->gapWorld : worst->onScreenGapWorld,
-             10, H + 45, std::max(W, 780.0) - 20);
-  o += "</svg>\n";
-  return o;
+    bottom = svgInset(o, terrain.scene(), *worst,
+                      countOffScreen || !worst->onScreen ? worst->gapWorld : worst->onScreenGapWorld, 10, bottom + 10,
+                      pageW - 20);
+  return svgHead(pageW, bottom + 10, title) + o + "</svg>\n";
 }
 
 SvgCamera svgCamera(size_t globalIndex, const vf::Camera& cam, const vf::CameraResult& c, bool countOffScreen) {
@@ -227,9 +224,9 @@ std::string sweepSvg(const vf::Terrain& terrain, const std::vector<vf::Camera>& 
   }
   v.init(ext);
   const double H = v.margin * 2 + (v.e.maxZ - v.e.minZ) * v.scale, W = v.margin * 2 + (v.e.maxX - v.e.minX) * v.scale;
+  const double pageW = std::max(W, 780.0);
   std::string o;
   char buf[512];
-  o += svgDocumentHead(std::max(W, 780.0), H + 60, title);
   o += kSvgStyle;
   o += "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   svgPatches(o, terrain, v);
@@ -266,19 +263,21 @@ std::string sweepSvg(const vf::Terrain& terrain, const std::vector<vf::Camera>& 
   int line = 0;
   for (size_t first : firstCameras) {
     const vf::Camera& cam = cams[first];
-    std::snprintf(buf, sizeof buf, "<text class=\"s\" x=\"%.2f\" y=\"%.2f\">%d</text>\n", v.x(cam.eye.x) + 5,
-                  v.y(cam.eye.z) - 5, ++line);
+    const std::string number = std::to_string(++line);
+    // Right of the dot, or left of it where the page ends; never above the page.
+    double nx = v.x(cam.eye.x) + 5;
+    if (nx + svgTextWidth(number, 11, true) > pageW) nx = v.x(cam.eye.x) - 5 - svgTextWidth(number, 11, true);
+    std::snprintf(buf, sizeof buf, "<text class=\"s\" x=\"%.2f\" y=\"%.2f\">%s</text>\n", std::max(0.0, nx),
+                  std::max(12.0, v.y(cam.eye.z) - 5), number.c_str());
     o += buf;
   }
   std::snprintf(buf, sizeof buf,
-                "<text class=\"t\" x=\"20\" y=\"%.0f\">%zu cameras from above. Dots: green clean, orange T-junctions, "
-                "red cracks, holes or undecided patches (%s).</text>\n<text class=\"t\" x=\"20\" y=\"%.0f\">Circles: worst crack of each camera; "
-                "filled patches: each camera's first hole. "
-                "Numbers: first camera of each cause (in summary order).</text>\n",
-                H + 20, dots.size(), countOffScreen ? "off screen too, --offscreen" : "on screen", H + 40);
-  o += buf;
-  o += "</svg>\n";
-  return o;
+                "%zu cameras from above. Dots: green clean, orange T-junctions, red cracks, holes or undecided patches "
+                "(%s).", dots.size(), countOffScreen ? "off screen too, --offscreen" : "on screen");
+  double y = svgTextLines(o, "t", buf, 13, false, 20, H + 20, pageW - 40, 17);
+  y = svgTextLines(o, "t", "Circles: worst crack of each camera; filled patches: each camera's first hole. Numbers: "
+                           "first camera of each cause (in summary order).", 13, false, 20, y, pageW - 40, 17);
+  return svgHead(pageW, y - 17 + 10, title) + o + "</svg>\n";
 }
 
 } // namespace fftess::cli

@@ -79,7 +79,7 @@ vf::CheckOptions checkOptions(const SceneArgs& a, const vf::Terrain& terrain) {
 
 // ---- shared plumbing ---------------------------------------------------------------------------------------------
 std::vector<FileArg> reportArgs(const SceneArgs& a) {
-  return {{"--json", a.json}, {"--svg", a.svg}, {"--gltf", a.gltf}};
+  return {{"--json", a.json}, {"--svg", a.svg}, {"--gltf", a.gltf}, {"--view", a.view}};
 }
 
 std::vector<FileArg> sceneInputs(const SceneArgs& a, const vf::Scene* scene) {
@@ -111,14 +111,20 @@ ReportFiles::ReportFiles(const SceneArgs& a) {
   if (!a.json.empty()) json_ = std::make_unique<AtomicFile>(a.json);
   if (!a.svg.empty()) svg_ = std::make_unique<AtomicFile>(a.svg);
   if (!a.gltf.empty()) gltf_ = gltfFile(a.gltf);
+  try {
+    if (!a.view.empty()) view_ = std::make_unique<AtomicFile>(a.view);
+  } catch (const UsageError& e) {
+    throw UsageError(std::string("--view: ") + e.what());
+  }
 }
 
 void ReportFiles::commit() {
-  AtomicFile* files[3];
+  AtomicFile* files[4];
   size_t n = 0;
   if (json_) files[n++] = json_.get();
   if (svg_) files[n++] = svg_.get();
   if (gltf_) files[n++] = gltf_.get();
+  if (view_) files[n++] = view_.get();
   commitAll(files, n);
 }
 

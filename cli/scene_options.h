@@ -38,9 +38,9 @@ int sweepStatus(const vf::SweepResult& res, vf::Verdict v, bool failOnTJunctions
 std::vector<FileArg> reportArgs(const SceneArgs& a);
 std::vector<FileArg> sceneInputs(const SceneArgs& a, const vf::Scene* scene);
 
-// The --json, --svg and --gltf reports of one command: every path is checked when this is built (before the work:
-// UsageError naming the path; --gltf's also names the option and refuses stdout), and commit() writes them all or
-// nothing (AtomicFile, commitAll).
+// The --json, --svg and --gltf reports (and check's --view) of one command: every path is checked when this is
+// built (before the work: UsageError naming the path; --gltf's also names the option and refuses stdout), and
+// commit() writes them all or nothing (AtomicFile, commitAll).
 class ReportFiles {
 public:
   explicit ReportFiles(const SceneArgs& a);
@@ -49,6 +49,7 @@ public:
   void setGltf(std::string bytes) { if (gltf_) gltf_->buffer() = std::move(bytes); }
   bool gltf() const { return gltf_ != nullptr; } // --gltf was given
   void dropGltf() { gltf_.reset(); } // the --gltf file is not written (its temporary file removed)
+  void setView(std::string text) { if (view_) view_->buffer() = std::move(text); } // check --view
   AtomicFile* json() const { return json_.get(); } // null without --json (sweep streams into it)
   AtomicFile* svg() const { return svg_.get(); }   // null without --svg
   void commit();
@@ -56,6 +57,7 @@ public:
 private:
   std::unique_ptr<AtomicFile> json_, svg_;
   std::unique_ptr<AtomicFile> gltf_; // --gltf
+  std::unique_ptr<AtomicFile> view_; // check --view
 };
 
 } // namespace fftess::cli

@@ -31,6 +31,7 @@ namespace {
 // sweep serialises, in whatever order the cameras finish: the result does not depend on that order.
 struct CauseInfo {
   std::string detail;     // explanation of the first finding with this cause
+  std::string fix;        // its fix (Cause::fix)
   int64_t findings = 0;   // findings with this cause, over all cameras
   size_t cameras = 0;     // cameras with at least one finding with this cause
   size_t first = 0;       // first camera (index) where it appeared
@@ -49,20 +50,20 @@ struct CauseTally {
       const Cause cause = findingCause(f);
       // Off-screen findings apart (not counted): their own keys, "crack (off screen): ...".
       const char* off = f.onScreen || countOffScreen ? "" : " (off screen)";
-      addKey(std::string(vf::toString(f.classification)) + off + ": " + cause.key, cause.detail, camera, k, here);
+      addKey(std::string(vf::toString(f.classification)) + off + ": " + cause.key, cause, camera, k, here);
     }
     for (size_t k = 0; k < r.holes.size(); ++k) {
       const Cause cause = holeCause(r.holes[k]);
       // Holes after the findings of the same camera (index offset keeps the order stable).
-      addKey("hole: " + cause.key, cause.detail, camera, r.findings.size() + k, here);
+      addKey("hole: " + cause.key, cause, camera, r.findings.size() + k, here);
     }
     for (size_t k = 0; k < r.undecided.size(); ++k) { // the key starts with "undecided: "
       const Cause cause = holeCause(r.undecided[k]);
-      addKey(cause.key, cause.detail, camera, r.findings.size() + r.holes.size() + k, here);
+      addKey(cause.key, cause, camera, r.findings.size() + r.holes.size() + k, here);
     }
   }
 
-  void addKey(const std::string& key, const std::string& detail, size_t camera, size_t k, std::set<std::string>& here) {
+  void addKey(const std::string& key, const Cause& cause, size_t camera, size_t k, std::set<std::string>& here) {
     {
       auto [it, added] = causes.try_emplace(key);
       CauseInfo& c = it->second;
@@ -71,7 +72,8 @@ struct CauseTally {
       if (added || camera < c.first || (camera == c.first && k < c.firstFinding)) {
         c.first = camera;
         c.firstFinding = k;
-        c.detail = detail;
+        c.detail = cause.detail;
+        c.fix = cause.fix;
       }
     }
   }
@@ -390,6 +392,7 @@ std::string SweepRun::causesText() const {
                   static_cast<double>(cam.eye.y), static_cast<double>(cam.eye.z));
     text += buf;
     text += "      e.g. " + c.detail + "\n";
+    text += "      fix: " + c.fix + "\n";
   }
   return text;
 }
@@ -442,7 +445,7 @@ void SweepRun::finishReports(const vf::SweepResult& res) {
     std::vector<CauseRow> rows;
     for (const std::string& k : order) {
       const CauseInfo& c = tally_.causes.at(k);
-      rows.push_back({k, c.findings, c.cameras, c.first, c.detail});
+      rows.push_back({k, c.findings, c.cameras, c.first, c.detail, c.fix});
     }
     vf::WorkStats terrainWork = terrain_.stats();
     terrainWork.terrainBuilds = vf::terrainBuildCount(); // every build in this process

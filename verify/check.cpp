@@ -493,6 +493,8 @@ Report checkTerrain(const TerrainData& prepared, const Camera& camera, const Che
   const FrustumTest frustum(view);
   const CameraCheck c{t, camera, options, fault, cache.factors, view, domainCam, frustum, cache, rep};
   findUndrawnPatches(c);
+  if (options.keepDrawn)
+    for (const char k : cache.culled) rep.drawn.push_back(k ? 0 : 1);
   checkSharedEdges(c);
   return rep;
 }

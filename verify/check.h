@@ -55,6 +55,8 @@ struct CheckOptions {
   // chosen among all findings. The Report and its Stats are the same either way (Stats keeps both numbers); pass
   // the same choice to verdictOf. The cli's --offscreen (whole-mesh comparisons, strict CI).
   bool countOffScreen = false;
+  // Also keep which patches are drawn (Report::drawn): pictures of what the camera sees (the cli's check --view).
+  bool keepDrawn = false;
 };
 
 // The denormal rule one check runs with, and where it came from: the first that is not Auto of
@@ -117,6 +119,9 @@ struct Report {
   bool truncated = false;        // more findings than maxFindings
   Stats stats;
   WorkStats work;                // this camera's work (camera-dependent only; see Terrain::stats())
+  // With CheckOptions::keepDrawn: per patch of layoutFor(terrain, camera) 1 when it is drawn (lod/ did not cull it
+  // and the tessellator does not discard it), else 0; empty otherwise (or when Report::error is set).
+  std::vector<uint8_t> drawn;
 };
 
 // Checks every shared edge of the terrain from one camera.

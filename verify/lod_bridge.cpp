@@ -254,4 +254,6 @@ std::string lodWords(const EdgeSide& side) {
   return out;
 }
 
+lod::Camera lodCamera(const Camera& camera) { return detail::toLodCamera(camera); }
+
 } // namespace fftess::verify

@@ -120,4 +120,9 @@ struct EdgeLod {
   lod::Reconstruction reconstruction = lod::Reconstruction::EdgeVector;
 };
 
+// The LOD's camera of a verify camera (lod::makeCamera: view, projection, viewport) exactly as every check builds it:
+// the matrices Finding::gapPixels, the on-screen decisions and the LOD's factors use. For pictures and tests that
+// project what a check found (the cli's check --view).
+lod::Camera lodCamera(const Camera& camera);
+
 } // namespace fftess::verify
