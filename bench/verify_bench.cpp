@@ -111,6 +111,14 @@ void BM_LayoutCheck(benchmark::State& state) {
 // arg: 0 tile_rings (terrain.toml), 1 quadtree (quadtree_cdlod.toml)
 BENCHMARK(BM_LayoutCheck)->Arg(0)->Arg(1)->ArgName("quadtree")->Unit(benchmark::kMillisecond);
 
+// The camera-independent prepare a camera does not repeat: the node pyramid (quadtree) or the static layout.
+void BM_PrepareTerrain(benchmark::State& state) {
+  const vf::Scene& s = terrain(static_cast<int>(state.range(0))).scene();
+  for (auto _ : state) benchmark::DoNotOptimize(vf::prepareTerrain(s).terrain.patchCount());
+  state.SetLabel(state.range(0) ? "quadtree_cdlod (node pyramid + the scene camera's selection)" : "tile_rings terrain.toml");
+}
+BENCHMARK(BM_PrepareTerrain)->Arg(0)->Arg(1)->ArgName("quadtree")->Unit(benchmark::kMillisecond);
+
 } // namespace layouts
 
 } // namespace

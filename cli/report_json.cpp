@@ -34,7 +34,8 @@ json workJson(const vf::WorkStats& w) {
           {"domain_evaluations", w.domainEvaluations}, {"lod_evaluations", w.lodEvaluations},
           {"edge_queries", w.edgeQueries},       {"cgal_calls", w.cgalCalls},
           {"full_tessellations", w.fullTessellations}, {"shared_edge_points", w.sharedEdgePoints},
-          {"visibility_evaluations", w.visibilityEvaluations}};
+          {"visibility_evaluations", w.visibilityEvaluations},
+          {"layout_selections", w.layoutSelections},     {"layout_nodes", w.layoutNodes}};
 }
 
 static json sideJson(const vf::EdgeSide& s) {

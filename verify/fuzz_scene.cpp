@@ -10,6 +10,7 @@
 
 #include <toml++/toml.h>
 
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <string>
@@ -32,6 +33,8 @@ bool small(const Scene& s) {
               (1 + 0.75 * (L.rings - 1));
   else if (L.kind == LayoutKind::Grid)
     patches = double(L.patchesX) * L.patchesZ;
+  else if (L.kind == LayoutKind::Quadtree) // the pyramid's nodes (every one prepared)
+    patches = double(L.rootsX) * L.rootsZ * (std::pow(4.0, L.maxDepth + 1) - 1) / 3;
   else
     patches = double(s.displacement.texWidth) * s.displacement.texHeight / (double(L.cellsPerPatch) * L.cellsPerPatch);
   const bool smallTexture = s.displacement.kind == DisplacementKind::None ||

@@ -94,8 +94,9 @@ public:
   // The x/z rectangle the patches cover (the displacement texture is spread over it).
   const Extent& extent() const;
   // The work of building it: terrainBuilds = 1, heightSamples = the corner heights sampled (4 per patch when
-  // displaced, else 0; plus one per rebuilt corner with lod.reconstruction = "resampled" and raised corners).
-  // Checking never adds to it.
+  // displaced, else 0; plus one per rebuilt corner with lod.reconstruction = "resampled" and raised corners; a
+  // quadtree: one per lattice vertex, plus the rebuilt corners whose x/z are no vertex's, and the scene camera's
+  // selection in layoutSelections / layoutNodes). Checking never adds to it.
   const WorkStats& stats() const;
   // The layout depends on the camera (layout.kind = "quadtree"): patches() are the scene camera's; layoutFor gives
   // any other camera's, and checkScene / sweep check each camera's own.

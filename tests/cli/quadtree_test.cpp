@@ -64,7 +64,10 @@ TEST_CASE("check of a quadtree from a path camera draws and lists that camera's 
   r = clitest::run({"check", scene, "--path-camera", "0", "--json", js, "--svg", svg});
   INFO(r.err);
   REQUIRE(r.status < 2);
-  const int64_t pathLeaves = json::parse(clitest::readFile(js)).at("stats").at("patches").get<int64_t>();
+  const json report = json::parse(clitest::readFile(js));
+  const int64_t pathLeaves = report.at("stats").at("patches").get<int64_t>();
+  CHECK(report.at("work").at("layout_selections") == 2); // the prepare's (scene camera), the check's (path camera)
+  CHECK(report.at("work").at("layout_nodes").get<int64_t>() > 0);
   CHECK(pathLeaves != sceneLeaves);
   CHECK(svgPatchCount(clitest::readFile(svg)) == size_t(pathLeaves));
 }
