@@ -11,6 +11,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstring>
 #include <map>
@@ -217,7 +218,8 @@ void findingGroups(Builder& b, const vf::ViewMesh& vm, const vf::Report& r, std:
   int crackMat = -1, tjMat = -1; // made when first used (glTF validators flag unused materials)
   for (const vf::Finding& f : r.findings) {
     if (f.classification == vf::Classification::Crack && crackMat < 0) crackMat = b.material("crack", kCrack, true);
-    if (f.classification == vf::Classification::TJunction && tjMat < 0) tjMat = b.material("t-junction", kTJunction, true);
+    if (f.classification == vf::Classification::TJunction && tjMat < 0)
+      tjMat = b.material("t-junction", kTJunction, true);
   }
   std::vector<int> cracks, tjs;
   for (const vf::Finding& f : r.findings) {
@@ -240,7 +242,8 @@ void fillGroups(Builder& b, const vf::ViewMesh& vm, const vf::Report& r, std::ve
     std::vector<int> nodes;
     for (const vf::Hole& h : holes) {
       const vf::ViewPatch& p = vm.fills[next++];
-      const std::vector<glm::vec3> pts(vm.points.begin() + p.firstPoint, vm.points.begin() + p.firstPoint + p.pointCount);
+      const auto first = vm.points.begin() + p.firstPoint;
+      const std::vector<glm::vec3> pts(first, first + p.pointCount);
       std::vector<uint32_t> idx;
       for (uint32_t k = p.firstIndex; k < p.firstIndex + p.indexCount; ++k) idx.push_back(vm.indices[k] - p.firstPoint);
       const bool culled = h.kind == vf::HoleKind::CulledWhileVisible;
@@ -313,8 +316,12 @@ std::string checkGltf(const vf::Terrain& terrain, const vf::Camera& camera, cons
   const vf::Scene& scene = terrain.scene();
   m.asset.version = "2.0";
   m.asset.generator = std::string("fftess ") + FFTESS_VERSION + " (tinygltf)";
-  m.asset.extras = toValue(json{{"command", title.command}, {"scene", scene.name}, {"source", scene.source},
-                                {"verdict", title.verdict}, {"camera", title.camera}, {"stats", statsJson(report.stats)}});
+  m.asset.extras = toValue(json{{"command", title.command},
+                                {"scene", scene.name},
+                                {"source", scene.source},
+                                {"verdict", title.verdict},
+                                {"camera", title.camera},
+                                {"stats", statsJson(report.stats)}});
   tinygltf::Scene s;
   s.name = (scene.name.empty() ? scene.source : scene.name) + ": " + title.verdict + " (" + title.camera + ")";
   s.nodes = roots;
@@ -326,7 +333,7 @@ std::string checkGltf(const vf::Terrain& terrain, const vf::Camera& camera, cons
 bool gltfTextPath(const std::string& path) {
   if (path.size() < 5) return false;
   std::string ext = path.substr(path.size() - 5);
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
+  for (char& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
   return ext == ".gltf";
 }
 

@@ -33,7 +33,7 @@ int verdictStatus(vf::Verdict v, bool failOnTJunctions);
 // The same for a sweep (and merged shards): 130 when it was interrupted (Ctrl-C) before finding cracks or holes.
 int sweepStatus(const vf::SweepResult& res, vf::Verdict v, bool failOnTJunctions);
 
-// --json, --svg and --gltf as refuseSameFiles outputs; the inputs of a scene: SCENE, and with the loaded scene the
+// --json, --svg, --gltf and --view as refuseSameFiles outputs; the inputs of a scene: SCENE, and with the loaded scene the
 // files it reads (lod.shader, displacement.file, layout.file). load() refuses reports that are one of those.
 std::vector<FileArg> reportArgs(const SceneArgs& a);
 std::vector<FileArg> sceneInputs(const SceneArgs& a, const vf::Scene* scene);

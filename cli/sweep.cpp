@@ -432,7 +432,8 @@ std::string SweepRun::summaryText(const vf::SweepResult& res, const std::string&
   }
   if (!tally_.causes.empty()) text += causesText();
   if (!a_.gltf.empty() && worst_.rank >= 0)
-    text += "  3D view        camera " + std::to_string(worst_.camera) + " (" + worstWhy() + "): " + quotePath(a_.gltf) + "\n";
+    text += "  3D view        camera " + std::to_string(worst_.camera) + " (" + worstWhy() + "): " + quotePath(a_.gltf) +
+            "\n";
   return text + "verdict: " + verdictWords(verdict, res, crackCameras_, holeCameras_, requested_, a_.offscreen) + "\n";
 }
 

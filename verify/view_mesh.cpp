@@ -86,8 +86,10 @@ ViewMesh buildViewMesh(const TerrainData& t, const Camera& camera, const CheckOp
   const Options tessOptions = tessellatorOptions(t.scene, options); // the denormal rule (denormalRule)
   for (size_t i = 0; i < n; ++i) appendDrawn(t, i, factors[i], domainCam.at(i), tess, tessOptions, out);
   const int segs = std::clamp(fillSegments, 1, 256);
-  for (int i : fill)
-    if (i >= 0 && static_cast<size_t>(i) < n) appendFill(t, static_cast<size_t>(i), domainCam.at(static_cast<size_t>(i)), segs, out);
+  for (int i : fill) {
+    const size_t k = static_cast<size_t>(i);
+    if (i >= 0 && k < n) appendFill(t, k, domainCam.at(k), segs, out);
+  }
   return out;
 }
 

@@ -111,7 +111,8 @@ int edgeIndex(const std::string& name) {
 // positions), those with an edge parameter in [lo, hi].
 std::vector<glm::vec3> sidePoints(const Scene& sc, const json& side) {
   const vf::Scene& scene = sc.view.scene();
-  const float factor = fftess::floatOf(static_cast<uint32_t>(std::stoul(side.at("factor_bits").get<std::string>(), nullptr, 16)));
+  const std::string bits = side.at("factor_bits");
+  const float factor = fftess::floatOf(static_cast<uint32_t>(std::stoul(bits, nullptr, 16)));
   const fftess::EdgePoints ep = fftess::edgePoints(factor, scene.partitioning, scene.stage);
   const int e = edgeIndex(side.at("edge"));
   const float lo = side.at("param_range")[0], hi = side.at("param_range")[1];
@@ -126,7 +127,9 @@ std::vector<glm::vec3> sidePoints(const Scene& sc, const json& side) {
   return out;
 }
 
-bool contains(const std::vector<glm::vec3>& v, const glm::vec3& p) { return std::find(v.begin(), v.end(), p) != v.end(); }
+bool contains(const std::vector<glm::vec3>& v, const glm::vec3& p) {
+  return std::find(v.begin(), v.end(), p) != v.end();
+}
 
 json readJson(const std::string& path) { return json::parse(clitest::readFile(path)); }
 
@@ -216,7 +219,8 @@ TEST_CASE("check --gltf: each patch-size mesh is the emulator's tessellation of 
         if (!(pts[base + static_cast<size_t>(q)] == w)) FAIL_CHECK("patch " << i << " point " << q);
       }
       for (size_t q = 0; q < tess.indices().size(); ++q)
-        if (idx.at(ibase + q) != base + static_cast<uint32_t>(tess.indices()[q])) FAIL_CHECK("patch " << i << " index " << q);
+        if (idx.at(ibase + q) != base + static_cast<uint32_t>(tess.indices()[q]))
+          FAIL_CHECK("patch " << i << " index " << q);
       base += static_cast<size_t>(count), ibase += tess.indices().size();
     }
     CHECK(pts.size() == expectPoints); // the vertices are the patches' tessellation points, nothing merged or added
@@ -224,7 +228,8 @@ TEST_CASE("check --gltf: each patch-size mesh is the emulator's tessellation of 
   }
   // The patches drawn are those the check did not cull, and the factors are the check's (every finding's sides).
   const json& stats = report.at("stats");
-  CHECK(static_cast<int64_t>(drawn.size()) == stats.at("patches").get<int64_t>() - stats.at("culled_patches").get<int64_t>());
+  const int64_t notCulled = stats.at("patches").get<int64_t>() - stats.at("culled_patches").get<int64_t>();
+  CHECK(static_cast<int64_t>(drawn.size()) == notCulled);
   REQUIRE(!report.at("findings").empty());
   for (const json& f : report.at("findings"))
     for (const char* s : {"a", "b"}) {
@@ -245,7 +250,8 @@ TEST_CASE("check --gltf: one red line primitive per crack joins both sides' edge
     const tinygltf::Node& n = *np;
     ++k;
     INFO(n.name);
-    CHECK(startsWith(n.name, "crack " + std::to_string(k) + ": patch " + std::to_string(f.at("a").at("patch").at("index").get<int>())));
+    const int patchA = f.at("a").at("patch").at("index");
+    CHECK(startsWith(n.name, "crack " + std::to_string(k) + ": patch " + std::to_string(patchA)));
     CHECK(n.extras.Get("gap_world").GetNumberAsDouble() == f.at("gap_world").get<double>());
     const tinygltf::Primitive& prim = onlyPrimitive(m, n);
     CHECK(prim.mode == TINYGLTF_MODE_LINE);
@@ -345,7 +351,8 @@ TEST_CASE("check --gltf: holes are filled in magenta, one surface per hole", "[c
     REQUIRE(pts.size() == 81); // the 8 x 8 grid over the patch's domain, at the domain shader's positions
     for (int b = 0; b <= 8; ++b)
       for (int a = 0; a <= 8; ++a)
-        CHECK(pts[static_cast<size_t>(b * 9 + a)] == vf::domainPosition(c.scene.view, patch, a / 8.0f, b / 8.0f));
+        CHECK(pts[static_cast<size_t>(b * 9 + a)] == vf::domainPosition(c.scene.view, patch, static_cast<float>(a) / 8.0f,
+                                                                           static_cast<float>(b) / 8.0f));
     CHECK(indicesOf(m, prim).size() == 8 * 8 * 6);
   }
 }
@@ -418,5 +425,6 @@ TEST_CASE("sweep --gltf: the file shows the sweep's worst camera, checked again"
   const auto talk = run({"sweep", kRings, "--set", "lod.adjacency_clamp=none", "--random", "6", "--seed", "4", "--gltf",
                          glb});
   CHECK(talk.status == 1);
-  CHECK(talk.out.find("  3D view        camera " + std::to_string(worst) + " (the worst: crack gap ") != std::string::npos);
+  const std::string line = "  3D view        camera " + std::to_string(worst) + " (the worst: crack gap ";
+  CHECK(talk.out.find(line) != std::string::npos);
 }

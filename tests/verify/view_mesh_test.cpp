@@ -72,7 +72,8 @@ TEST_CASE("view mesh: every drawn patch is the tessellator's output for its hull
         FAIL_CHECK("world point " << q);
     }
     for (size_t q = 0; q < tess.indices().size(); ++q)
-      if (vm.indices[vp.firstIndex + q] != vp.firstPoint + static_cast<uint32_t>(tess.indices()[q])) FAIL_CHECK("index " << q);
+      if (vm.indices[vp.firstIndex + q] != vp.firstPoint + static_cast<uint32_t>(tess.indices()[q]))
+        FAIL_CHECK("index " << q);
     nextPoint += vp.pointCount, nextIndex += vp.indexCount;
   }
   CHECK(vm.points.size() == nextPoint);
@@ -102,7 +103,8 @@ TEST_CASE("view mesh: it tessellates the check's hull factors and draws exactly 
   CHECK(sides > 1000);
 }
 
-TEST_CASE("view mesh: a fill is a grid over the patch's domain at the domain shader's positions", "[verify][view_mesh]") {
+TEST_CASE("view mesh: a fill is a grid over the patch's domain at the domain shader's positions",
+          "[verify][view_mesh]") {
   const Fixture f;
   const ViewMesh drawnOnly = viewMesh(f.terrain, f.scene.camera);
   int culled = -1;
