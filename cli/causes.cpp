@@ -277,6 +277,22 @@ std::string holeLine(const vf::Hole& h) {
          holeCause(h).detail;
 }
 
+std::vector<Cause> reportCauses(const vf::Report& r, bool offScreenToo) {
+  std::vector<Cause> out;
+  auto add = [&](Cause c, const std::string& prefix) {
+    c.key = prefix + c.key;
+    for (const Cause& o : out)
+      if (o.key == c.key) return;
+    out.push_back(std::move(c));
+  };
+  for (const vf::Hole& h : r.holes) add(holeCause(h), "hole: ");
+  for (const vf::Hole& h : r.undecided) add(holeCause(h), ""); // "undecided: ..."
+  for (const vf::Finding& f : r.findings)
+    if (f.classification != vf::Classification::Match && (f.onScreen || offScreenToo))
+      add(findingCause(f), std::string(vf::toString(f.classification)) + ": ");
+  return out;
+}
+
 std::string fmtWorld(double v) {
   char b[32];
   std::snprintf(b, sizeof b, "%.3g", v);
