@@ -78,8 +78,13 @@ static std::string halfFix(const vf::EdgeSide& small, bool belowMinimum) {
   if (belowMinimum)
     return "keep the big side's factor at least twice the partitioning's minimum at a jump (lod.adjacency_clamp = "
            "\"pow2\" raises it to 4 or more)";
-  return "rebuild the neighbour's corner bit-exactly (lod.reconstruction = \"far_corner\" or \"resampled\"), so the "
-         "small side computes the big side's factor from the big side's own corners";
+  // A clamp ran and still the small side did not get half: its rebuilt big edge is not the big side's own.
+  if (l.reconstruction == lod::Reconstruction::FarCorner)
+    return "give both sides the same corner positions, bit for bit (layout.corners = \"shared\"), so the small side's "
+           "far corner is the big side's own";
+  return "rebuild the neighbour's corner bit-exactly (lod.reconstruction = \"far_corner\"" +
+         std::string(l.reconstruction == lod::Reconstruction::EdgeVector ? " or \"resampled\"" : "") +
+         "), so the small side computes the big side's factor from the big side's own corners";
 }
 
 Cause findingCause(const vf::Finding& f) {
