@@ -88,8 +88,13 @@ static std::string halfFix(const vf::EdgeSide& small, bool belowMinimum) {
   if (belowMinimum)
     return "keep the big side's factor at least twice the partitioning's minimum at a jump (lod.adjacency_clamp = "
            "\"pow2\" raises it to 4 or more)";
-  return "rebuild the neighbour's corner bit-exactly (lod.reconstruction = \"far_corner\" or \"resampled\"), so the "
-         "small side computes the big side's factor from the big side's own corners";
+  // A clamp ran and still the small side did not get half: its rebuilt big edge is not the big side's own.
+  if (l.reconstruction == lod::Reconstruction::FarCorner)
+    return "give both sides the same corner positions, bit for bit (layout.corners = \"shared\"), so the small side's "
+           "far corner is the big side's own";
+  return "rebuild the neighbour's corner bit-exactly (lod.reconstruction = \"far_corner\"" +
+         std::string(l.reconstruction == lod::Reconstruction::EdgeVector ? " or \"resampled\"" : "") +
+         "), so the small side computes the big side's factor from the big side's own corners";
 }
 
 Cause findingCause(const vf::Finding& f) {
@@ -282,6 +287,22 @@ Cause holeCause(const vf::Hole& h) {
 std::string holeLine(const vf::Hole& h) {
   return (h.visibility == vf::Visibility::Undecided ? "undecided  " : "hole       ") + patchText(h.patch) + ": " +
          holeCause(h).detail;
+}
+
+std::vector<Cause> reportCauses(const vf::Report& r, bool offScreenToo) {
+  std::vector<Cause> out;
+  auto add = [&](Cause c, const std::string& prefix) {
+    c.key = prefix + c.key;
+    for (const Cause& o : out)
+      if (o.key == c.key) return;
+    out.push_back(std::move(c));
+  };
+  for (const vf::Hole& h : r.holes) add(holeCause(h), "hole: ");
+  for (const vf::Hole& h : r.undecided) add(holeCause(h), ""); // "undecided: ..."
+  for (const vf::Finding& f : r.findings)
+    if (f.classification != vf::Classification::Match && (f.onScreen || offScreenToo))
+      add(findingCause(f), std::string(vf::toString(f.classification)) + ": ");
+  return out;
 }
 
 std::string fmtWorld(double v) {

@@ -6,6 +6,7 @@
 #include "verify/verify.h"
 
 #include <string>
+#include <vector>
 
 namespace fftess::cli {
 
@@ -39,6 +40,10 @@ std::string findingLine(const vf::Finding& f, bool withCause = true);
 // the projection's w at the edge's midpoint, where the patch was seen).
 Cause holeCause(const vf::Hole& h);
 std::string holeLine(const vf::Hole& h);              // one line: "hole", the patch, the cause
+// The causes of a report with their fixes, keyed as sweep's table keys them ("hole: KEY", "undecided: ...",
+// "crack: KEY", "t_junction: KEY"), each once, in the report's order: holes, undecided patches, findings (on screen
+// only unless offScreenToo). For the pictures' legends.
+std::vector<Cause> reportCauses(const vf::Report& r, bool offScreenToo);
 // The indented stats block of check and sweep. countOffScreen (--offscreen): off-screen findings are counted (and
 // said so), the worst gap is over all cracks; else the worst gap is the on-screen one and the off-screen findings
 // are named apart, not counted.

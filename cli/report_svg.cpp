@@ -190,9 +190,11 @@ std::string checkSvg(const vf::Terrain& terrain, const vf::Report& r, const std:
                 static_cast<long long>(r.stats.holes), static_cast<long long>(off),
                 countOffScreen ? "counted, --offscreen" : "not counted");
   double bottom = svgTextLines(o, "t", buf, 13, false, 20, H + 25, pageW - 40, 17) - 17 + 10;
-  // The first hole's fix (a picture without findings that count still says how to fix what it shows).
-  if (!r.holes.empty())
-    bottom = svgTextLines(o, "s", "hole fix: " + holeCause(r.holes.front()).fix, 11, true, 20, bottom + 14, pageW - 40, 14) - 14 + 10;
+  // Every cause the picture shows (holes, undecided patches, the findings that count), with its fix.
+  for (const Cause& c : reportCauses(r, countOffScreen)) {
+    bottom = svgTextLines(o, "s", "cause: " + c.key, 11, true, 20, bottom + 14, pageW - 40, 14) - 14;
+    bottom = svgTextLines(o, "s", "  fix: " + c.fix, 11, true, 20, bottom + 14, pageW - 40, 14) - 14;
+  }
   if (worst)
     bottom = svgInset(o, terrain.scene(), *worst,
                       countOffScreen || !worst->onScreen ? worst->gapWorld : worst->onScreenGapWorld, 10, bottom + 10,

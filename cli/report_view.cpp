@@ -179,12 +179,6 @@ struct Page {
   std::string body;
   std::map<int, int> levels;                       // level -> patches drawn in view
   size_t inView = 0;                               // patches drawn in view, all levels
-  std::vector<std::pair<std::string, std::string>> causes; // key, fix (in order of appearance)
-  void addCause(const std::string& key, const std::string& fix) {
-    for (const auto& c : causes)
-      if (c.first == key) return;
-    causes.push_back({key, fix});
-  }
 };
 
 void drawPatches(Page& pg, const vf::Terrain& layout, const vf::Report& r) {
@@ -207,8 +201,6 @@ void drawUndrawn(Page& pg, const vf::Terrain& layout, const std::vector<vf::Hole
   pg.body += std::string("<g id=\"") + id + "\">\n";
   for (const vf::Hole& h : holes) {
     if (h.patch.index < 0 || h.patch.index >= layout.patchCount()) continue;
-    const Cause c = holeCause(h);
-    pg.addCause((h.visibility == vf::Visibility::Undecided ? "" : "hole: ") + c.key, c.fix);
     const std::string title = "<title>" + xmlEscape(holeLine(h)) + "</title>";
     const std::string d = filledPath(pg.P, outline(layout, h.patch.index));
     if (!d.empty()) pg.body += std::string("<path class=\"") + cls + "\" d=\"" + d + "\">" + title + "</path>\n";
@@ -228,8 +220,6 @@ void drawFindings(Page& pg, const vf::Report& r) {
   for (const vf::Finding& f : r.findings) {
     if (f.classification == vf::Classification::Match || !f.onScreen) continue;
     const bool crack = f.classification == vf::Classification::Crack;
-    const Cause c = findingCause(f);
-    pg.addCause(std::string(vf::toString(f.classification)) + ": " + c.key, c.fix);
     const glm::dvec2 at = markAt(pg.P, f);
     const std::string text = crack ? pixelsText(f.onScreenGapPixels) : "T-junction";
     std::snprintf(buf, sizeof buf, "<circle class=\"%s\" cx=\"%.1f\" cy=\"%.1f\" r=\"5\"><title>", crack ? "vmk" : "vmt",
@@ -287,9 +277,9 @@ double legend(Page& pg, const vf::Camera& cam, const vf::Report& r, bool countOf
                 static_cast<long long>(r.stats.holes), static_cast<long long>(r.stats.undecided),
                 static_cast<long long>(off), countOffScreen ? "counted: --offscreen" : "not counted");
   y = svgTextLines(pg.body, "t", buf, 13, false, 20, y, textW, 17);
-  for (const auto& [key, fix] : pg.causes) {
-    y = svgTextLines(pg.body, "s", "cause: " + key, 11, true, 20, y + 4, textW, 14);
-    y = svgTextLines(pg.body, "s", "  fix: " + fix, 11, true, 20, y, textW, 14);
+  for (const Cause& c : reportCauses(r, false)) { // what the picture shows: holes, undecided, findings on screen
+    y = svgTextLines(pg.body, "s", "cause: " + c.key, 11, true, 20, y + 4, textW, 14);
+    y = svgTextLines(pg.body, "s", "  fix: " + c.fix, 11, true, 20, y, textW, 14);
   }
   return drawRuler(pg, cam, scale, y + 10);
 }

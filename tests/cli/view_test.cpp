@@ -371,6 +371,19 @@ TEST_CASE("every cause says how to fix it, in check's text and JSON and in sweep
   for (const json& h : j.at("holes")) CHECK(h.at("fix").get<std::string>().rfind("guard w <= 0 in the edge's projection", 0) == 0);
   CHECK(r.out.find("    fix: guard w <= 0 in the edge's projection") != std::string::npos);
 
+  // The pow2 clamp with edge_vector reconstruction (the moved corner keeps its height): the small side's factor is not
+  // half the big side's, fixed by rebuilding the corner bit-exactly.
+  r = run({"sweep", kScene, "--set", "lod.reconstruction=edge_vector", "--random", "40", "--seed", "2", "-q", "--json", js});
+  REQUIRE(r.status == 1);
+  j = json::parse(clitest::readFile(js));
+  bool rebuilt = false;
+  for (const json& c : j.at("causes"))
+    if (c.at("cause").get<std::string>().find("not half the big side's (lod pow2 clamp, rebuilt edge_vector)") != std::string::npos) {
+      rebuilt = true;
+      CHECK(c.at("fix").get<std::string>().rfind("rebuild the neighbour's corner bit-exactly (lod.reconstruction = \"far_corner\" or \"resampled\")", 0) == 0);
+    }
+  CHECK(rebuilt);
+
   // Sweep: each cause of the table with its fix, in the text and the JSON.
   r = run(withArgs({"sweep", kScene, "--random", "6", "--seed", "3", "--json", js}, kNoClamp));
   REQUIRE(r.status == 1);
