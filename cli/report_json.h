@@ -23,7 +23,7 @@ using json = nlohmann::ordered_json;
 // 5: sweep: "cameras" streamed before the summary (written as each camera finishes, in index order), "shard" (with
 //    --shard), "terrain_work" (the terrain build's part of "work", so shards merge); work counters
 //    full_tessellations, shared_edge_points, visibility_evaluations.
-constexpr int kReportVersion = 6;
+constexpr int kReportVersion = 7;
 
 json vec3Json(const glm::vec3& v);
 json findingJson(const vf::Finding& f);

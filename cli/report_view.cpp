@@ -19,7 +19,7 @@ constexpr int kLevelColours = 8;
 const char* const kLevelColour[kLevelColours] = {"#1f77b4", "#2ca02c", "#9467bd", "#8c564b",
                                                  "#17becf", "#7f7f7f", "#bcbd22", "#e377c2"};
 
-// World -> clip (projection * view of verify::lodCamera, in double) -> page.
+// World -> clip (projection * view of verify::viewCamera, in double) -> page.
 struct Projector {
   double m[4][4] = {};
   bool zeroToOne = false; // depth in [0, w] (the D3D convention): the near plane is z >= 0, else z >= -w
@@ -301,7 +301,7 @@ const char* const kViewStyle =
 std::string viewSvg(const vf::Terrain& layout, const vf::Camera& camera, const vf::Report& r, const std::string& title,
                     bool countOffScreen) {
   using namespace viewsvg;
-  Page pg(vf::lodCamera(camera));
+  Page pg(vf::viewCamera(camera));
   const double scale = std::min(kViewWidth / camera.width, kViewWidth / camera.height);
   pg.P.w = camera.width * scale, pg.P.h = camera.height * scale;
   pg.width = std::max(pg.P.w, 800.0) + 2 * kMargin;

@@ -489,7 +489,7 @@ Report checkTerrain(const TerrainData& prepared, const Camera& camera, const Che
   injectFactorFault(t, fault, toLodCamera(camera), cache.factors);
   const DomainCamera domainCam = domainCamera(t, cache.factors); // per-patch domain state (geomorph, mip levels)
   // The verifier's geometry (frustum, on-screen, pixels) in GL whatever camera.convention: the same frustum.
-  const lod::Camera view = viewCamera(camera);
+  const lod::Camera view = detail::viewCamera(camera);
   const FrustumTest frustum(view);
   const CameraCheck c{t, camera, options, fault, cache.factors, view, domainCam, frustum, cache, rep};
   findUndrawnPatches(c);

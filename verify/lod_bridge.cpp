@@ -18,7 +18,7 @@ lod::Camera viewCamera(const Camera& c) {
 }
 
 lod::Camera toLodCamera(const Camera& c) {
-  if (c.convention == CameraConvention::Gl) return viewCamera(c);
+  if (c.convention == CameraConvention::Gl) return detail::viewCamera(c);
   const float fov = c.fovY * (3.14159265358979323846f / 180.0f);
   return lod::makeCameraD3d(c.eye, c.target, c.up, fov, c.nearZ, c.farZ,
                             glm::vec2(static_cast<float>(c.width), static_cast<float>(c.height)));
@@ -254,6 +254,6 @@ std::string lodWords(const EdgeSide& side) {
   return out;
 }
 
-lod::Camera lodCamera(const Camera& camera) { return detail::toLodCamera(camera); }
+lod::Camera viewCamera(const Camera& camera) { return detail::viewCamera(camera); }
 
 } // namespace fftess::verify

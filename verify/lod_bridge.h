@@ -120,9 +120,10 @@ struct EdgeLod {
   lod::Reconstruction reconstruction = lod::Reconstruction::EdgeVector;
 };
 
-// The LOD's camera of a verify camera (lod::makeCamera: view, projection, viewport) exactly as every check builds it:
-// the matrices Finding::gapPixels, the on-screen decisions and the LOD's factors use. For pictures and tests that
-// project what a check found (the cli's check --view).
-lod::Camera lodCamera(const Camera& camera);
+// The check's own camera of a verify camera (lod::makeCamera: GL view and projection, viewport) exactly as every
+// check builds it: the matrices Finding::gapPixels and the on-screen decisions use, the same for camera.convention =
+// "gl" and "d3d" (the LOD's factors take the camera in its own convention). For pictures and tests that project what a
+// check found (the cli's check --view).
+lod::Camera viewCamera(const Camera& camera);
 
 } // namespace fftess::verify

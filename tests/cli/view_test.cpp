@@ -189,7 +189,7 @@ std::map<int, int> outlinesInView(const std::vector<std::string>& overrides) {
   const vf::Terrain layout = vf::layoutFor(t.terrain, s.scene.camera);
   REQUIRE(r.drawn.size() == layout.patches().size());
   CHECK(std::count(r.drawn.begin(), r.drawn.end(), 1) == r.stats.patches - r.stats.culledPatches);
-  const auto cam = vf::lodCamera(s.scene.camera);
+  const auto cam = vf::viewCamera(s.scene.camera);
   const glm::dmat4 clip = glm::dmat4(cam.projection) * glm::dmat4(cam.view);
   std::map<int, int> levels;
   for (int i = 0; i < layout.patchCount(); ++i) {
