@@ -115,30 +115,50 @@ std::string trim(const std::string& s) {
   return s.substr(b, e - b);
 }
 
+// A line's comma-separated fields, each trimmed of spaces; a field in double quotes ("10", "eye_x") is taken without
+// them ("" inside stands for one quote), and a comma inside quotes belongs to the field (spreadsheet CSV).
 std::vector<std::string> splitCommas(const std::string& line) {
   std::vector<std::string> out;
-  size_t start = 0;
-  for (;;) {
-    const size_t comma = line.find(',', start);
-    out.push_back(trim(line.substr(start, comma == std::string::npos ? std::string::npos : comma - start)));
-    if (comma == std::string::npos) return out;
-    start = comma + 1;
+  std::string field;
+  bool quoted = false, wasQuoted = false;
+  for (size_t i = 0; i <= line.size(); ++i) {
+    const char ch = i < line.size() ? line[i] : ',';
+    if (quoted) {
+      if (ch == '"' && i + 1 < line.size() && line[i + 1] == '"') {
+        field += '"';
+        ++i;
+      } else if (ch == '"') {
+        quoted = false;
+      } else {
+        field += ch;
+      }
+    } else if (ch == '"' && trim(field).empty()) {
+      quoted = wasQuoted = true;
+      field.clear();
+    } else if (ch == ',') {
+      out.push_back(wasQuoted ? field : trim(field));
+      field.clear();
+      wasQuoted = false;
+    } else if (!(wasQuoted && (ch == ' ' || ch == '\t' || ch == '\r'))) {
+      field += ch;
+    }
   }
+  return out;
 }
 
 // The header: each name once, every required column present. columns[k] = the field of column k.
-std::vector<int> csvHeader(const std::string& line, const std::string& path) {
+std::vector<int> csvHeader(const std::string& line, const std::string& path, int lineNo) {
   std::vector<int> columns;
   std::vector<char> seen(kFieldCount, 0);
   for (const std::string& name : splitCommas(line)) {
     const int f = fieldIndex(name);
-    if (f < 0) fail(path, 1, name, "unknown column (expected a header of " + fieldList() + ")");
-    if (seen[f]) fail(path, 1, name, "column given twice");
+    if (f < 0) fail(path, lineNo, name, "unknown column (expected a header of " + fieldList() + ")");
+    if (seen[f]) fail(path, lineNo, name, "column given twice");
     seen[f] = 1;
     columns.push_back(f);
   }
   for (int f = 0; f < kRequired; ++f)
-    if (!seen[f]) fail(path, 1, cameraFields()[f], "missing column (required: eye_x, eye_y, eye_z, target_x, target_y, target_z)");
+    if (!seen[f]) fail(path, lineNo, cameraFields()[f], "missing column (required: eye_x, eye_y, eye_z, target_x, target_y, target_z)");
   return columns;
 }
 
@@ -165,17 +185,21 @@ void csvValue(vf::Camera& c, int f, const std::string& v, const std::string& pat
 }
 
 void readCsv(const std::string& text, const std::string& path, const vf::Camera& base, CameraFile& out) {
-  std::istringstream in(text);
+  // A UTF-8 byte order mark (spreadsheet exports) is skipped; CRLF line ends are trimmed with the spaces.
+  std::istringstream in(text.compare(0, 3, "\xEF\xBB\xBF") == 0 ? text.substr(3) : text);
   std::string line;
   int lineNo = 0;
   std::vector<int> columns;
+  bool header = false;
   while (std::getline(in, line)) {
     ++lineNo;
-    if (lineNo == 1) {
-      columns = csvHeader(line, path);
+    const std::string t = trim(line);
+    if (t.empty() || t[0] == '#') continue; // blank lines (a trailing newline, spacing) and # comments
+    if (!header) {
+      columns = csvHeader(line, path, lineNo);
+      header = true;
       continue;
     }
-    if (trim(line).empty()) continue; // blank lines (a trailing newline, spacing)
     const std::vector<std::string> values = splitCommas(line);
     if (values.size() != columns.size())
       fail(path, lineNo, "", "expected " + std::to_string(columns.size()) + " comma-separated values (the header's), got " +
@@ -187,7 +211,7 @@ void readCsv(const std::string& text, const std::string& path, const vf::Camera&
     out.cameras.push_back(c);
     out.lines.push_back(lineNo);
   }
-  if (lineNo == 0) fail(path, 1, "", "empty file (expected a header: eye_x,eye_y,eye_z,target_x,target_y,target_z, ...)");
+  if (!header) fail(path, 1, "", "empty file (expected a header: eye_x,eye_y,eye_z,target_x,target_y,target_z, ...)");
 }
 
 // ---- JSON ----------------------------------------------------------------------------------------------------------

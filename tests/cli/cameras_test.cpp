@@ -80,6 +80,37 @@ TEST_CASE("sweep --cameras with the CSV and the JSON example gives the report of
   CHECK(docs.find(clitest::readFile(kJson)) != std::string::npos);
 }
 
+TEST_CASE("a spreadsheet's CSV (byte order mark, CRLF, quotes, comments) gives the report of the plain file",
+          "[cli][cameras]") {
+  const std::string dir = clitest::tmpDir();
+  // docs/examples/cameras.csv as a spreadsheet writes it, with a comment above the header and between rows.
+  std::string sheet = "\xEF\xBB\xBF# exported cameras\r\n";
+  const std::string plain = clitest::readFile(kCsv);
+  size_t start = 0;
+  for (int row = 0; start < plain.size(); ++row) {
+    size_t end = plain.find('\n', start);
+    if (end == std::string::npos) end = plain.size();
+    std::string line = plain.substr(start, end - start), quoted;
+    start = end + 1;
+    if (line.empty()) continue;
+    size_t f = 0;
+    for (;;) { // every field in quotes, an empty one as ""
+      const size_t comma = line.find(',', f);
+      quoted += "\"" + line.substr(f, comma == std::string::npos ? std::string::npos : comma - f) + "\"";
+      if (comma == std::string::npos) break;
+      quoted += ", ";
+      f = comma + 1;
+    }
+    sheet += quoted + "\r\n" + (row == 1 ? "# the d3d camera above\r\n\r\n" : "");
+  }
+  const std::string sheetPath = dir + "/sheet.csv";
+  clitest::writeFile(sheetPath, sheet);
+  const json csv = sweepReport({"--cameras", kCsv}, kRings, dir + "/plain.json");
+  const json fromSheet = sweepReport({"--cameras", sheetPath}, kRings, dir + "/sheet.json");
+  CHECK(fromSheet.at("cameras_file").at("cameras") == 4);
+  CHECK(withoutSource(fromSheet) == withoutSource(csv));
+}
+
 TEST_CASE("check --cameras takes a file of one camera or the camera --camera-index names", "[cli][cameras]") {
   const std::string dir = clitest::tmpDir();
   const std::string pathScene = dir + "/rings_path1.toml";
