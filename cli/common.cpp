@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fcntl.h>
+#include <pthread.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -114,10 +115,19 @@ AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
     cannotWrite(path_, std::strerror(errno));
   }
   std::string name = target_ + ".tmp.XXXXXX";
+  // Signals wait while the temporary file is created and registered: one that ended the process between the two
+  // would leave the file behind (seen with a Ctrl-C at the very start of a sweep).
+  sigset_t all, before;
+  sigfillset(&all);
+  ::pthread_sigmask(SIG_BLOCK, &all, &before);
   fd_ = ::mkstemp(name.data());
-  if (fd_ < 0) cannotWrite(path_, std::strerror(errno));
-  tmp_ = name;
-  tempSlot_ = registerTemp(tmp_);
+  const int err = errno;
+  if (fd_ >= 0) {
+    tmp_ = name;
+    tempSlot_ = registerTemp(tmp_);
+  }
+  ::pthread_sigmask(SIG_SETMASK, &before, nullptr);
+  if (fd_ < 0) cannotWrite(path_, std::strerror(err));
 }
 
 SignalHandler removeTempsAndDie() { return onFatalSignal; }
