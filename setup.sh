@@ -25,6 +25,7 @@ packages=(
   catch2 libcli11-dev libglm-dev libcgal-dev nlohmann-json3-dev libtomlplusplus-dev libbenchmark-dev libtinygltf-dev
   glslang-tools spirv-cross glslang-dev libspirv-cross-c-shared-dev
   libegl-dev libgl-dev libopengl-dev libegl-mesa0 libgl1-mesa-dri
+  libvulkan-dev mesa-vulkan-drivers
 )
 
 install_packages() {

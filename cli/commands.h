@@ -123,6 +123,7 @@ struct CompareArgs {
   bool flushDenormals = false;
   int show = 20;
   int details = 4;
+  std::string svg; // --svg FILE: the first differing patches drawn, reference over capture
 };
 CLI::App* addCompare(CLI::App& app, CompareArgs& a);
 int runCompare(const CompareArgs& a);
@@ -136,10 +137,24 @@ struct DriverCheckArgs {
   bool flushDenormals = false;
   bool json = false;
   int show = 20;
+  std::string api = "gl";  // --api gl|vulkan
+  std::string portBug;     // --port-bug NAME: run the driver as a port with that bug would (the bug must be named)
+  std::string writeBatch;  // --write-batch FILE: the patches checked, as a batch file
+  std::string svg;         // --svg FILE, as compare's
 };
 // fftess driver-check (cli/driver_check.cpp): the local GL driver's tessellator through the comparison of compare.
 CLI::App* addDriverCheck(CLI::App& app, DriverCheckArgs& a);
 int runDriverCheck(const DriverCheckArgs& a);
+
+// fftess gen (cli/gen.cpp): seeded random patches (driver-check's generator, gl/random_patches.h) as a batch file.
+struct GenArgs {
+  long random = 1000;
+  uint64_t seed = 1;
+  bool sweep = false;   // the systematic sweep first
+  std::string output;   // -o FILE (default stdout)
+};
+CLI::App* addGen(CLI::App& app, GenArgs& a);
+int runGen(const GenArgs& a);
 
 
 } // namespace fftess::cli

@@ -135,7 +135,7 @@ void CompareReporter::finish(const std::string& format, const std::string& heade
            {"strict_order", strict_},     {"format", format}};
     if (!header.empty()) j["source"] = header.substr(0, header.size() - 1); // the one header line, without '\n'
     json kinds = json::object();
-    for (int k = 1; k < 8; ++k) kinds[toString(DifferenceKind(k))] = sum_.byKind[k];
+    for (int k = 1; k < int(DifferenceKind::Count); ++k) kinds[toString(DifferenceKind(k))] = sum_.byKind[k];
     j["by_kind"] = kinds;
     json bugs = json::object();
     for (int b = 0; b < int(PortBug::Count); ++b) bugs[toString(PortBug(b))] = sum_.byBug[b];
@@ -149,7 +149,7 @@ void CompareReporter::finish(const std::string& format, const std::string& heade
     text_ += "summary: " + std::to_string(sum_.patches) + " patches, " + std::to_string(sum_.same) + " same, " +
              std::to_string(sum_.differing) + " differ";
     std::string kinds;
-    for (int k = 1; k < 8; ++k)
+    for (int k = 1; k < int(DifferenceKind::Count); ++k)
       if (sum_.byKind[k])
         kinds +=
             std::string(kinds.empty() ? "" : ", ") + toString(DifferenceKind(k)) + " " + std::to_string(sum_.byKind[k]);

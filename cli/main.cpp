@@ -61,6 +61,8 @@ int main(int argc, char** argv) {
   CLI::App* driver = addDriverCheck(app, driverArgs);
   LayoutArgs layoutArgs;
   CLI::App* layout = addLayout(app, layoutArgs);
+  GenArgs genArgs;
+  CLI::App* gen = addGen(app, genArgs);
 
   std::string names;
   bool known = false;
@@ -95,6 +97,7 @@ int main(int argc, char** argv) {
     if (compare->parsed()) return runCompare(compareArgs);
     if (driver->parsed()) return runDriverCheck(driverArgs);
     if (layout->parsed()) return runLayout(layoutArgs);
+    if (gen->parsed()) return runGen(genArgs);
     if (bench->parsed()) {
       benchArgs.passThrough = bench->remaining();
       return runBench(benchArgs, argv[0]);

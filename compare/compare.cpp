@@ -255,6 +255,9 @@ const char* toString(DifferenceKind k) {
   case DifferenceKind::WindingOnly: return "winding_only";
   case DifferenceKind::PrimitivesDiffer: return "primitives_differ";
   case DifferenceKind::OrderDiffers: return "order_differs";
+  case DifferenceKind::TriangulationDiffers: return "triangulation_differs";
+  case DifferenceKind::Rotated: return "rotated";
+  case DifferenceKind::Count: break;
   }
   return "?";
 }
@@ -275,7 +278,17 @@ constexpr BugText kBugs[] = {
     {"pow2_as_fractional_even", "pow2 not mapped to integer (tessellated as fractional_even)", "pow2 partitioning"},
     {"pow2_as_fractional_odd", "pow2 not mapped to integer (tessellated as fractional_odd)", "pow2 partitioning"},
     {"winding_swapped", "GL/D3D winding swapped (GL cw is D3D triangle_ccw)", "winding"},
+    {"outer_factors_rotated", "outer factors on the wrong edges, rotated round the domain", "edge bookkeeping"},
+    {"outer_factors_mirrored", "outer factors on the wrong edges, mirrored", "edge bookkeeping"},
+    {"outer_factors_v_flipped", "Veq0 and Veq1 factors swapped (the v axis flipped, as with Vulkan's upper-left "
+                                "domain origin against GL's lower-left)", "edge bookkeeping"},
+    {"domain_v_flipped", "the output's v written as 1 - v (the domain's v axis flipped)", "output bookkeeping"},
+    {"uv_swapped", "the output's u and v swapped", "output bookkeeping"},
+    {"inside_factors_swapped", "insideU and insideV swapped", "edge bookkeeping"},
+    {"tri_barycentrics_permuted", "the output's (u, v) taken from another pair of the barycentrics (u, v, w)",
+     "output bookkeeping"},
 };
+static_assert(std::size(kBugs) == size_t(PortBug::Count), "a name for every PortBug");
 } // namespace
 
 const char* toString(PortBug b) { return size_t(b) < std::size(kBugs) ? kBugs[size_t(b)].name : "?"; }

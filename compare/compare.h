@@ -41,11 +41,14 @@ enum class DifferenceKind : uint8_t {
   PointsDiffer,      // the sets of distinct points differ
   Multiplicity,      // the same distinct points (or primitives), each a different number of times
   WindingOnly,       // the same triangles up to winding
-  PrimitivesDiffer,  // the same points, different triangles (or segments)
-  OrderDiffers,      // strictOrder only: the same multisets in another order or with another first vertex
+  PrimitivesDiffer,  // the same points, different segments (isoline lines, quad/tri line output)
+  OrderDiffers,      // strictOrder only: the same multisets in another order
+  TriangulationDiffers, // the same distinct points, joined into other triangles (triangleDiff lists them)
+  Rotated,           // strictOrder only: the same triangles in the same order, some starting at another vertex
+  Count
 };
 // culled_in_capture, culled_in_reference, points_differ, multiplicity, winding_only, primitives_differ,
-// order_differs, same. Any other value: "?".
+// order_differs, triangulation_differs, rotated, same. Any other value: "?".
 const char* toString(DifferenceKind k);
 
 // Typical bugs of a tessellator port. The whole patch is re-computed under the bug and compared with the capture.
@@ -59,6 +62,14 @@ enum class PortBug : uint8_t {
   Pow2AsFractionalEven, // pow2 not mapped to integer, tessellated as fractional_even (step: pow2 partitioning)
   Pow2AsFractionalOdd,  // pow2 partitioning not mapped to integer, tessellated as fractional_odd
   WindingSwapped,       // GL/D3D winding swapped: GL cw is D3D triangle_ccw (step: winding)
+  // Bookkeeping bugs: the arithmetic is right, the factors or the coordinates go to the wrong place.
+  OuterFactorsRotated,     // outer factors on the wrong edges, shifted round the domain (quad: by 1, 2 or 3; tri: 1, 2)
+  OuterFactorsMirrored,    // outer factors on the wrong edges, reflected (quad: Ueq0<->Ueq1, transposed, reversed)
+  OuterFactorsVFlipped,    // quad: Veq0 and Veq1 swapped (Vulkan's upper-left domain origin against GL's lower-left)
+  DomainVFlipped,          // quad/isoline: the output's v written as 1 - v (the domain's v axis flipped)
+  UvSwapped,               // the output's u and v swapped
+  InsideFactorsSwapped,    // quad: insideU and insideV swapped
+  TriBarycentricsPermuted, // tri: the output (u, v) taken from another pair of the barycentrics (u, v, w)
   Count
 };
 // float_division, no_mirroring, no_special_midpoint, lerp_not_rounded, factors_not_snapped, denormals_flushed,
@@ -118,7 +129,7 @@ float buggyEdgeParam(PortBug b, const EdgeTrace& trace, int k, float rawFactor);
 // Running totals over a whole comparison.
 struct CompareSummary {
   int64_t patches = 0, same = 0, differing = 0;
-  int64_t byKind[8] = {};                  // indexed by DifferenceKind
+  int64_t byKind[size_t(DifferenceKind::Count)] = {}; // indexed by DifferenceKind
   int64_t byBug[int(PortBug::Count)] = {}; // differing patches each bug reproduces
   int64_t pointsCompared = 0;
   void add(const PatchComparison& c, int points);
