@@ -68,11 +68,18 @@ json vertexJson(CapturedVertex v) {
       {"u", floatOf(v.u)}, {"v", floatOf(v.v)}, {"u_bits", "0x" + hex8(v.u)}, {"v_bits", "0x" + hex8(v.v)}};
 }
 
-void describePatch(std::string& o, ordered_json& list, int64_t index, int line, const std::string& batch,
-                   const PatchComparison& c, bool asJson) {
+// Where a patch is: "FILE:LINE", or "COMMAND, line LINE" for a generated batch.
+std::string placeOf(const std::string& batch, bool generated, int line) {
+  if (line <= 0) return batch;
+  return batch + (generated ? ", line " : ":") + std::to_string(line);
+}
+
+void describePatch(std::string& o, ordered_json& list, int64_t index, const std::string& place, const Patch& patch,
+                   int line, const PatchComparison& c, bool asJson) {
   if (asJson) {
     json j{{"patch", index},
            {"line", line},
+           {"batch_line", formatBatchLine(patch)},
            {"kind", toString(c.kind)},
            {"reference_primitives", c.referencePrimitives},
            {"capture_primitives", c.capturePrimitives},
@@ -96,15 +103,14 @@ void describePatch(std::string& o, ordered_json& list, int64_t index, int line, 
     list.push_back(j);
     return;
   }
-  o += "patch " + std::to_string(index) + " (" + batch + (line > 0 ? ":" + std::to_string(line) : "") +
-       "): " + toString(c.kind) + ": " + std::to_string(c.referencePrimitives) + " reference " +
+  o += "patch " + std::to_string(index) + " (" + place + "): " + toString(c.kind) + ": " + std::to_string(c.referencePrimitives) + " reference " +
        (c.verticesPerPrimitive == 1 ? "points" : "primitives") + ", " + std::to_string(c.capturePrimitives) +
        " in the capture";
   if (c.kind == DifferenceKind::PointsDiffer)
     o += "; " + std::to_string(c.missingPoints) + " reference points missing, " + std::to_string(c.extraPoints) +
          " points the reference lacks";
   if (c.kind == DifferenceKind::WindingOnly) o += "; " + std::to_string(c.flippedTriangles) + " triangles flipped";
-  o += "\n";
+  o += "\n  batch line: " + formatBatchLine(patch) + "\n";
   for (const auto& d : c.points) {
     o += "  " + vertexText(d.got) + ": nearest reference point " + vertexText(d.nearest) + ", du " +
          formatNumber(d.du) + " dv " + formatNumber(d.dv) + " (16.16 units)\n";
@@ -115,14 +121,15 @@ void describePatch(std::string& o, ordered_json& list, int64_t index, int line, 
 
 } // namespace
 
-CompareReporter::CompareReporter(bool asJson, int show, bool strict, std::string batch)
-    : json_(asJson), strict_(strict), show_(show), batch_(std::move(batch)), listed_(ordered_json::array()) {}
+CompareReporter::CompareReporter(bool asJson, int show, bool strict, std::string batch, const char* kind)
+    : json_(asJson), strict_(strict), kind_(kind), show_(show), batch_(std::move(batch)),
+      listed_(ordered_json::array()) {}
 
-void CompareReporter::add(int64_t index, int line, const PatchComparison& c) {
+void CompareReporter::add(int64_t index, int line, const Patch& patch, const PatchComparison& c) {
   sum_.add(c, c.referencePrimitives * c.verticesPerPrimitive);
   if (c.kind != DifferenceKind::Same && shown_ < show_) {
     ++shown_;
-    describePatch(text_, listed_, index, line, batch_, c, json_);
+    describePatch(text_, listed_, index, placeOf(batch_, generated_, line), patch, line, c, json_);
   }
 }
 
@@ -130,7 +137,11 @@ void CompareReporter::finish(const std::string& format, const std::string& heade
   if (!json_) text_ = header + text_;
   const auto all = sum_.explainingAll();
   if (json_) {
-    json j{{"patches", sum_.patches},     {"same", sum_.same},
+    json j{{"version", kCompareReportVersion},
+           {"kind", kind_},
+           {"fftess_version", FFTESS_VERSION},
+           {generated_ ? "generated_by" : "batch", batch_},
+           {"patches", sum_.patches},     {"same", sum_.same},
            {"differing", sum_.differing}, {"points_compared", sum_.pointsCompared},
            {"strict_order", strict_},     {"format", format}};
     if (!header.empty()) j["source"] = header.substr(0, header.size() - 1); // the one header line, without '\n'
@@ -220,7 +231,7 @@ int runCompare(const CompareArgs& a) {
       } catch (const CaptureError& e) {
         throw CaptureError(a.capture + ":" + std::to_string(got.line) + ": " + e.what());
       }
-      reporter.add(index, line, c);
+      reporter.add(index, line, p, c);
       if (present) haveGot = capture.next(got);
     }
     if (haveGot)

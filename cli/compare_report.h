@@ -11,17 +11,29 @@
 
 namespace fftess::cli {
 
+// "version" of the compare and driver-check JSON reports (docs/compare.md); bumped on any change of their schema.
+// 1: the first versioned schema: "version", "kind", "fftess_version", "batch" or "generated_by", per listed patch
+//    "batch_line".
+constexpr int kCompareReportVersion = 1;
+
 // The report of compare and driver-check: per-patch lines for the first 'show' differing patches, the summary, the
 // verdict; text or JSON (docs/compare.md). finish() writes it to stdout.
+// batch: the batch file's name; kind: the JSON "kind" ("compare", "driver-check").
 class CompareReporter {
 public:
-  CompareReporter(bool json, int show, bool strictOrder, std::string batch);
-  void add(int64_t index, int line, const PatchComparison& c);
+  CompareReporter(bool json, int show, bool strictOrder, std::string batch, const char* kind = "compare");
+  // The batch is not a file but the command that writes it (`fftess gen ...`): patches are named "(COMMAND, line N)"
+  // and the JSON says "generated_by" instead of "batch".
+  void setGenerated() { generated_ = true; }
+  // index: 0-based patch number; line: its line in the batch; patch: what was compared (a differing one is printed
+  // as its batch line, so it can be re-run alone).
+  void add(int64_t index, int line, const Patch& patch, const PatchComparison& c);
   void finish(const std::string& format, const std::string& header);
   const CompareSummary& summary() const { return sum_; }
 
 private:
-  bool json_, strict_;
+  bool json_, strict_, generated_ = false;
+  const char* kind_;
   int show_, shown_ = 0;
   std::string batch_, text_;
   nlohmann::ordered_json listed_;

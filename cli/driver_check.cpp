@@ -3,6 +3,7 @@
 // captures through the same comparison as `fftess compare` (compare/compare.h).
 #include "common.h"
 #include "compare_report.h"
+#include "random_batch.h"
 
 #include <CLI/CLI.hpp>
 
@@ -11,7 +12,6 @@
 
 #ifdef FFTESS_HAVE_GL
 #include "gl/gl_capture.h"
-#include "gl/random_patches.h"
 #endif
 
 #include <cstring>
@@ -32,6 +32,8 @@ CLI::App* addDriverCheck(CLI::App& app, DriverCheckArgs& a) {
   sub->add_flag("--flush-denormals", a.flushDenormals, "Reference flushes denormal factors (as llvmpipe and GPUs do)");
   sub->add_flag("--json", a.json, "JSON report on stdout");
   sub->add_option("--show", a.show, "Differing patches listed in full (default 20)");
+  sub->add_option("--write-batch", a.writeBatch, "The patches checked, as a batch file (--random: what fftess gen "
+                                                 "writes for the same N and seed)");
   sub->footer(
       "Example:\n  fftess driver-check --random 2000 --seed 7\n  fftess driver-check docs/examples/compare_port.batch\n"
       "Exit status: 0 same, 1 differs, 2 bad usage or input, 3 no GL driver or internal error.");
@@ -44,24 +46,6 @@ int runDriverCheck(const DriverCheckArgs&) {
 }
 #else
 namespace {
-
-oracle::Patch toGl(const Patch& p) {
-  oracle::Patch g;
-  g.domain = static_cast<oracle::Domain>(static_cast<uint8_t>(p.domain));
-  g.partitioning = static_cast<oracle::Partitioning>(static_cast<uint8_t>(p.partitioning));
-  g.topology = static_cast<oracle::Topology>(static_cast<uint8_t>(p.primitive));
-  std::memcpy(g.factorBits, p.factors, sizeof g.factorBits);
-  return g;
-}
-
-Patch fromGl(const oracle::Patch& g) {
-  Patch p;
-  p.domain = static_cast<Domain>(static_cast<uint8_t>(g.domain));
-  p.partitioning = static_cast<Partitioning>(static_cast<uint8_t>(g.partitioning));
-  p.primitive = static_cast<OutputPrimitive>(static_cast<uint8_t>(g.topology));
-  std::memcpy(p.factors, g.factorBits, sizeof p.factors);
-  return p;
-}
 
 // What the driver gave, as a capture: its primitives where GL draws them, else its point array.
 CapturedPatch toCapture(const oracle::Result& r, int64_t index) {
@@ -76,47 +60,66 @@ CapturedPatch toCapture(const oracle::Result& r, int64_t index) {
 
 struct Item {
   Patch patch; // hardware-stage patch (an hlsl-stage line is preconditioned here, the driver gets the result)
-  int line = 0;
+  int line = 0; // its line in PATCHES, or (--random) in the batch `fftess gen` writes
 };
+
+// The patches of a batch file (PATCHES, "-" for stdin), each with its line.
+std::vector<Item> readItems(const std::string& path) {
+  std::vector<Item> items;
+  std::unique_ptr<std::ifstream> file;
+  std::istream* in = &std::cin;
+  if (path != "-") {
+    file = std::make_unique<std::ifstream>(path);
+    if (!*file) throw UsageError("PATCHES '" + path + "': cannot open");
+    in = file.get();
+  }
+  std::string s;
+  for (int lineNo = 1; std::getline(*in, s); ++lineNo) {
+    if (auto hash = s.find('#'); hash != std::string::npos) s.erase(hash);
+    if (isBatchSkippable(s)) continue;
+    Item it;
+    BatchError be;
+    if (!parseBatchLine(s, it.patch, be))
+      throw UsageError(path + ":" + std::to_string(lineNo) + ": " +
+                       (be.token.empty() ? "" : "token " + std::to_string(be.column) + " " + quoteToken(be.token) + ": ") +
+                       be.message);
+    if (it.patch.stage.hlsl) {
+      const HlslFactors h = processHlslFactors(it.patch.domain, it.patch.partitioning, it.patch.stage, it.patch.factors);
+      std::memcpy(it.patch.factors, h.rounded, sizeof h.rounded);
+      it.patch.stage = Stage{};
+    }
+    it.line = lineNo;
+    items.push_back(it);
+  }
+  return items;
+}
+
+// --write-batch: the patches checked; for --random the bytes `fftess gen` writes (its header names the command).
+void writeBatch(const DriverCheckArgs& a, const std::vector<Item>& items) {
+  BatchFileWriter out(a.writeBatch);
+  out.text(a.patches.empty() ? genHeader(GenSpec{a.random, a.seed, false})
+                             : "# the hardware-stage patches fftess driver-check checked from " +
+                                   (a.patches == "-" ? std::string("standard input") : quotePath(a.patches)) + "\n");
+  for (const Item& it : items) out.add(it.patch);
+  out.commit();
+}
 
 } // namespace
 
 int runDriverCheck(const DriverCheckArgs& a) {
+  if (a.writeBatch == "-") throw UsageError("--write-batch '-': stdout carries the report; give a file");
+  refuseSameFiles({{"--write-batch", a.writeBatch}}, {{"PATCHES", a.patches}});
   std::vector<Item> items;
   std::string source;
   if (!a.patches.empty()) {
-    std::unique_ptr<std::ifstream> file;
-    std::istream* in = &std::cin;
-    if (a.patches != "-") {
-      file = std::make_unique<std::ifstream>(a.patches);
-      if (!*file) throw UsageError("PATCHES '" + a.patches + "': cannot open");
-      in = file.get();
-    }
-    std::string s;
-    for (int lineNo = 1; std::getline(*in, s); ++lineNo) {
-      if (auto hash = s.find('#'); hash != std::string::npos) s.erase(hash);
-      if (isBatchSkippable(s)) continue;
-      Item it;
-      BatchError be;
-      if (!parseBatchLine(s, it.patch, be))
-        throw UsageError(
-            a.patches + ":" + std::to_string(lineNo) + ": " +
-            (be.token.empty() ? "" : "token " + std::to_string(be.column) + " " + quoteToken(be.token) + ": ") +
-            be.message);
-      if (it.patch.stage.hlsl) {
-        const HlslFactors h =
-            processHlslFactors(it.patch.domain, it.patch.partitioning, it.patch.stage, it.patch.factors);
-        std::memcpy(it.patch.factors, h.rounded, sizeof h.rounded);
-        it.patch.stage = Stage{};
-      }
-      it.line = lineNo;
-      items.push_back(it);
-    }
+    items = readItems(a.patches);
     source = a.patches;
   } else {
-    for (const oracle::Patch& g : oracle::generatePatches(a.random, a.seed, false)) items.push_back(Item{fromGl(g), 0});
-    source = "random(seed " + std::to_string(a.seed) + ")";
+    forEachGenPatch(GenSpec{a.random, a.seed, false},
+                    [&](int64_t i, const Patch& p) { items.push_back(Item{p, genLineOf(i)}); });
+    source = genCommand(GenSpec{a.random, a.seed, false});
   }
+  if (!a.writeBatch.empty()) writeBatch(a, items);
   std::string error;
   auto gl = oracle::GlOracle::create(error, a.hardware);
   if (!gl) {
@@ -126,7 +129,8 @@ int runDriverCheck(const DriverCheckArgs& a) {
   CompareOptions opt;
   opt.strictOrder = a.strictOrder;
   opt.emulator.flushDenormals = a.flushDenormals;
-  CompareReporter reporter(a.json, a.show, a.strictOrder, source);
+  CompareReporter reporter(a.json, a.show, a.strictOrder, source, "driver-check");
+  if (a.patches.empty()) reporter.setGenerated();
   Tessellator tess;
   constexpr size_t kChunk = 4096; // patches per capture round: bounded memory for any count
   std::vector<oracle::Patch> glPatches;
@@ -134,7 +138,7 @@ int runDriverCheck(const DriverCheckArgs& a) {
   for (size_t begin = 0; begin < items.size(); begin += kChunk) {
     const size_t end = std::min(items.size(), begin + kChunk);
     glPatches.clear();
-    for (size_t i = begin; i < end; ++i) glPatches.push_back(toGl(items[i].patch));
+    for (size_t i = begin; i < end; ++i) glPatches.push_back(toOracle(items[i].patch));
     if (!gl->run(glPatches, results, error)) {
       std::fprintf(stderr, "fftess: error: driver-check: the capture on %s failed: %s\n", gl->renderer().c_str(),
                    error.c_str());
@@ -142,7 +146,7 @@ int runDriverCheck(const DriverCheckArgs& a) {
     }
     for (size_t i = begin; i < end; ++i) {
       const CapturedPatch c = toCapture(results[i - begin], int64_t(i));
-      reporter.add(int64_t(i), items[i].line, comparePatch(items[i].patch, &c, opt, tess));
+      reporter.add(int64_t(i), items[i].line, items[i].patch, comparePatch(items[i].patch, &c, opt, tess));
     }
   }
   reporter.finish("gl", "driver: " + gl->renderer() + " (" + gl->version() + "), " + std::to_string(items.size()) +

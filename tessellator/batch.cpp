@@ -130,6 +130,16 @@ bool parseBatchLine(const std::string& line, Patch& patch, BatchError& err) {
   return true;
 }
 
+std::string formatBatchLine(const Patch& patch) {
+  std::string out = std::string(toString(patch.domain)) + ' ' + toString(patch.partitioning) + ' ' +
+                    toString(patch.primitive) + ' ' + toString(patch.stage);
+  for (float f : patch.factors) {
+    out += " 0x";
+    appendHex8(out, fx::bitsOf(f));
+  }
+  return out;
+}
+
 int indicesPerLine(const Patch& patch) {
   if (patch.primitive == OutputPrimitive::Point) return 1;
   if (patch.domain == Domain::Isoline || patch.primitive == OutputPrimitive::Line) return 2;

@@ -32,6 +32,14 @@ bool isBatchSkippable(const std::string& line);
 // 10 tokens (token empty, column = the first missing one); extra tokens after f5; a bad factor.
 bool parseBatchLine(const std::string& line, Patch& patch, BatchError& err);
 
+// The batch line of a patch (no '\n'): "DOMAIN PARTITIONING TOPOLOGY STAGE" in the names of names.h (an hlsl stage
+// with its stage word, e.g. hlsl-max-1axis), then the 6 factors as 0x + 8 lowercase hex digits of their IEEE-754 bits
+// (NaN payloads, -0 and denormals kept), single spaces: "quad integer triangle_cw hw 0x40000000 ...". parseBatchLine
+// reads it back to the same patch, bit for bit, for every patch it can read (an isoline patch with a triangle
+// topology, which it refuses, is written but not read back; the hw stage's unused reduction and axes read back as
+// the defaults).
+std::string formatBatchLine(const Patch& patch);
+
 // Parses one factor token: a decimal float (std::strtof, whole token consumed: correctly rounded; nan/inf accepted;
 // out-of-range decimals become +-inf, denormals or zero) or 0x + exactly 8 hex digits (the IEEE-754 bits). C99 hex
 // floats ("0x1p3", "-0x40800000") are not decimals and are refused. why (optional): the reason on failure.
