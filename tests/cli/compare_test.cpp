@@ -83,3 +83,29 @@ TEST_CASE("compare: every golden .out file is the reference's output for its .in
     CHECK(r.out.find("verdict: same") != std::string::npos);
   }
 }
+
+TEST_CASE("compare: the JSON names its schema, kind, fftess version and batch, and each listed patch's batch line",
+          "[cli]") {
+  const std::string batch = clitest::source("docs/examples/compare_port.batch");
+  const auto j = run({"compare", "--json", batch, clitest::source("docs/examples/compare_port_bug.csv")});
+  REQUIRE(j.status == 1);
+  const json doc = json::parse(j.out);
+  CHECK(doc["version"] == 1);
+  CHECK(doc["kind"] == "compare");
+  CHECK(run({"--version"}).out == "fftess " + doc["fftess_version"].get<std::string>() + "\n");
+  CHECK(doc["batch"] == batch);
+  CHECK_FALSE(doc.contains("generated_by"));
+  REQUIRE(doc["listed"].size() == 2);
+  // Lines 3 and 4 of the file, "quad integer point hw 3 3 3 3 3 3" and "... triangle_cw hw 5 7 5 7 6 5", hex factors.
+  CHECK(doc["listed"][0]["line"] == 3);
+  CHECK(doc["listed"][0]["batch_line"] ==
+        "quad integer point hw 0x40400000 0x40400000 0x40400000 0x40400000 0x40400000 0x40400000");
+  CHECK(doc["listed"][1]["line"] == 4);
+  CHECK(doc["listed"][1]["batch_line"] ==
+        "quad integer triangle_cw hw 0x40a00000 0x40e00000 0x40a00000 0x40e00000 0x40c00000 0x40a00000");
+  const auto text = run({"compare", batch, clitest::source("docs/examples/compare_port_bug.csv")});
+  CHECK(text.out.find("patch 1 (" + batch + ":4): points_differ: 62 reference primitives, 62 in the capture; 40 "
+                      "reference points missing, 40 points the reference lacks\n  batch line: quad integer "
+                      "triangle_cw hw 0x40a00000 0x40e00000 0x40a00000 0x40e00000 0x40c00000 0x40a00000\n") !=
+        std::string::npos);
+}

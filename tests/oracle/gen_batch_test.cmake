@@ -5,7 +5,7 @@
 #  3. every listed patch's "line" is the line of F that holds it, "batch_line" that line's text, and the text report
 #     prints it under the patch ("batch line: ...") named "(fftess gen --random N --seed S, line L)".
 # No OpenGL context: a visible skip ("ORACLE-SKIPPED"), a failure when CI is set. Variables: FFTESS, OUT.
-set(N 400)
+set(N 1000)
 set(S 7)
 file(MAKE_DIRECTORY ${OUT})
 set(gen ${OUT}/gen.batch)
