@@ -15,6 +15,17 @@ execute_process(COMMAND ${FFTESS} gen --random ${N} --seed ${S} -o ${gen} RESULT
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "fftess gen failed (${rc})")
 endif()
+# Bad --write-batch paths: exit 2 naming the option, nothing written, before any driver is asked (no context needed).
+file(WRITE ${OUT}/input.batch "quad integer point hw 3 3 3 3 3 3\n")
+foreach(bad "-" "${OUT}/input.batch" "${OUT}/no-such-dir/x.batch")
+  execute_process(COMMAND ${FFTESS} driver-check ${OUT}/input.batch --write-batch ${bad}
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  file(READ ${OUT}/input.batch input)
+  if(NOT rc EQUAL 2 OR NOT out STREQUAL "" OR NOT err MATCHES "'${bad}'" OR EXISTS ${OUT}/no-such-dir
+     OR NOT input STREQUAL "quad integer point hw 3 3 3 3 3 3\n")
+    message(FATAL_ERROR "driver-check --write-batch ${bad}: exit ${rc}, stdout '${out}', stderr '${err}'")
+  endif()
+endforeach()
 execute_process(COMMAND ${FFTESS} driver-check --random ${N} --seed ${S} --json --write-batch ${kept}
                 RESULT_VARIABLE rc1 OUTPUT_VARIABLE random ERROR_VARIABLE err)
 if(err MATCHES "no OpenGL 4.5 context")
