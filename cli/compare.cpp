@@ -103,9 +103,9 @@ void describePatch(std::string& o, ordered_json& list, int64_t index, const std:
     list.push_back(j);
     return;
   }
-  o += "patch " + std::to_string(index) + " (" + place + "): " + toString(c.kind) + ": " + std::to_string(c.referencePrimitives) + " reference " +
-       (c.verticesPerPrimitive == 1 ? "points" : "primitives") + ", " + std::to_string(c.capturePrimitives) +
-       " in the capture";
+  o += "patch " + std::to_string(index) + " (" + place + "): " + toString(c.kind) + ": " +
+       std::to_string(c.referencePrimitives) + " reference " + (c.verticesPerPrimitive == 1 ? "points" : "primitives") +
+       ", " + std::to_string(c.capturePrimitives) + " in the capture";
   if (c.kind == DifferenceKind::PointsDiffer)
     o += "; " + std::to_string(c.missingPoints) + " reference points missing, " + std::to_string(c.extraPoints) +
          " points the reference lacks";

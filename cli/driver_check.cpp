@@ -63,37 +63,6 @@ struct Item {
   int line = 0; // its line in PATCHES, or (--random) in the batch `fftess gen` writes
 };
 
-// The patches of a batch file (PATCHES, "-" for stdin), each with its line.
-std::vector<Item> readItems(const std::string& path) {
-  std::vector<Item> items;
-  std::unique_ptr<std::ifstream> file;
-  std::istream* in = &std::cin;
-  if (path != "-") {
-    file = std::make_unique<std::ifstream>(path);
-    if (!*file) throw UsageError("PATCHES '" + path + "': cannot open");
-    in = file.get();
-  }
-  std::string s;
-  for (int lineNo = 1; std::getline(*in, s); ++lineNo) {
-    if (auto hash = s.find('#'); hash != std::string::npos) s.erase(hash);
-    if (isBatchSkippable(s)) continue;
-    Item it;
-    BatchError be;
-    if (!parseBatchLine(s, it.patch, be))
-      throw UsageError(path + ":" + std::to_string(lineNo) + ": " +
-                       (be.token.empty() ? "" : "token " + std::to_string(be.column) + " " + quoteToken(be.token) + ": ") +
-                       be.message);
-    if (it.patch.stage.hlsl) {
-      const HlslFactors h = processHlslFactors(it.patch.domain, it.patch.partitioning, it.patch.stage, it.patch.factors);
-      std::memcpy(it.patch.factors, h.rounded, sizeof h.rounded);
-      it.patch.stage = Stage{};
-    }
-    it.line = lineNo;
-    items.push_back(it);
-  }
-  return items;
-}
-
 // --write-batch: the patches checked; for --random the bytes `fftess gen` writes (its header names the command).
 void writeBatch(const DriverCheckArgs& a, const std::vector<Item>& items) {
   BatchFileWriter out(a.writeBatch);
@@ -112,7 +81,33 @@ int runDriverCheck(const DriverCheckArgs& a) {
   std::vector<Item> items;
   std::string source;
   if (!a.patches.empty()) {
-    items = readItems(a.patches);
+    std::unique_ptr<std::ifstream> file;
+    std::istream* in = &std::cin;
+    if (a.patches != "-") {
+      file = std::make_unique<std::ifstream>(a.patches);
+      if (!*file) throw UsageError("PATCHES '" + a.patches + "': cannot open");
+      in = file.get();
+    }
+    std::string s;
+    for (int lineNo = 1; std::getline(*in, s); ++lineNo) {
+      if (auto hash = s.find('#'); hash != std::string::npos) s.erase(hash);
+      if (isBatchSkippable(s)) continue;
+      Item it;
+      BatchError be;
+      if (!parseBatchLine(s, it.patch, be))
+        throw UsageError(
+            a.patches + ":" + std::to_string(lineNo) + ": " +
+            (be.token.empty() ? "" : "token " + std::to_string(be.column) + " " + quoteToken(be.token) + ": ") +
+            be.message);
+      if (it.patch.stage.hlsl) {
+        const HlslFactors h =
+            processHlslFactors(it.patch.domain, it.patch.partitioning, it.patch.stage, it.patch.factors);
+        std::memcpy(it.patch.factors, h.rounded, sizeof h.rounded);
+        it.patch.stage = Stage{};
+      }
+      it.line = lineNo;
+      items.push_back(it);
+    }
     source = a.patches;
   } else {
     forEachGenPatch(GenSpec{a.random, a.seed, false},
