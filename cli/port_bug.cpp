@@ -29,7 +29,8 @@ SimulatedPortBug::SimulatedPortBug(const std::string& value) {
   const std::string name = value.substr(0, colon);
   std::string accepted;
   for (int b = 0; b < int(PortBug::Count); ++b)
-    if (portBugTransformsPatch(PortBug(b))) accepted += std::string(accepted.empty() ? "" : ", ") + toString(PortBug(b));
+    if (portBugTransformsPatch(PortBug(b)))
+      accepted += std::string(accepted.empty() ? "" : ", ") + toString(PortBug(b));
   if (!parsePortBug(name.c_str(), bug_))
     throw UsageError("--port-bug " + quoteToken(name) + ": not a port bug; accepted: " + accepted);
   if (!portBugTransformsPatch(bug_))

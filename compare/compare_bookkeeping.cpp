@@ -148,7 +148,8 @@ Patch portBugInput(PortBug b, int variant, const Patch& patch, const Options& op
   case PortBug::Pow2AsFractionalEven: p.partitioning = Partitioning::FractionalEven; break;
   case PortBug::Pow2AsFractionalOdd: p.partitioning = Partitioning::FractionalOdd; break;
   case PortBug::WindingSwapped:
-    p.primitive = p.primitive == OutputPrimitive::TriangleCw ? OutputPrimitive::TriangleCcw : OutputPrimitive::TriangleCw;
+    p.primitive =
+        p.primitive == OutputPrimitive::TriangleCw ? OutputPrimitive::TriangleCcw : OutputPrimitive::TriangleCw;
     break;
   default:
     if (movesFactors(b)) {

@@ -93,7 +93,8 @@ void flip(CapturedPatch& c) {
 
 } // namespace
 
-TEST_CASE("every bookkeeping bug and form is named on seeded random patches of its domains", "[compare]") {
+TEST_CASE("compare: every bookkeeping bug and form is named on seeded random patches of its domains",
+          "[compare][bookkeeping]") {
   std::mt19937 rng(20261202);
   int named[int(PortBug::Count)] = {}, differing[int(PortBug::Count)] = {};
   for (int i = 0; i < 400; ++i) {
@@ -127,7 +128,8 @@ TEST_CASE("every bookkeeping bug and form is named on seeded random patches of i
   }
 }
 
-TEST_CASE("a coordinate bug is named whether or not the port also flips the winding", "[compare]") {
+TEST_CASE("compare: a coordinate bug is named whether or not the port also flips the winding",
+          "[compare][bookkeeping]") {
   std::mt19937 rng(7);
   int checked = 0;
   for (int i = 0; i < 200; ++i) {
@@ -149,7 +151,8 @@ TEST_CASE("a coordinate bug is named whether or not the port also flips the wind
   CHECK(checked > 100);
 }
 
-TEST_CASE("the forms of each bug: counts per domain and the names the report prints", "[compare]") {
+TEST_CASE("compare: the forms of each bug: counts per domain and the names the report prints",
+          "[compare][bookkeeping]") {
   const Patch quad = patchOf("quad integer triangle_cw hw 1 2 3 4 5 6");
   const Patch tri = patchOf("tri integer triangle_cw hw 1 2 3 4 0 0");
   const Patch iso = patchOf("isoline integer line hw 3 4 0 0 0 0");
@@ -228,7 +231,8 @@ double area2(const std::vector<CapturedVertex>& v, size_t i) {
 
 } // namespace
 
-TEST_CASE("each bookkeeping bug on a tiny patch gives the points worked out by hand and is named", "[compare]") {
+TEST_CASE("compare: each bookkeeping bug on a tiny patch gives the points worked out by hand and is named",
+          "[compare][bookkeeping]") {
   for (const HandCase& h : kHandCases) {
     const Patch p = patchOf(h.patch);
     INFO(h.patch << ": " << toString(h.bug));
@@ -249,7 +253,8 @@ TEST_CASE("each bookkeeping bug on a tiny patch gives the points worked out by h
   }
 }
 
-TEST_CASE("domain_v_flipped mirrors every triangle; only the flip, not the v-flipped factors, is named", "[compare]") {
+TEST_CASE("compare: domain_v_flipped mirrors every triangle and only the flip, not the v-flipped factors, is named",
+          "[compare][bookkeeping]") {
   const Patch p = patchOf("quad integer triangle_cw hw 2 4 1 1 2 2");
   const CapturedPatch ref = referenceCapture(p, 0, {});
   const CapturedPatch c = portBugCapture(PortBug::DomainVFlipped, 0, p, 0, {});
