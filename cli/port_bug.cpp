@@ -18,8 +18,8 @@ Patch formSample(Domain d) {
   return p;
 }
 
-constexpr Domain kDomains[] = {Domain::Quad, Domain::Tri, Domain::Isoline};
-const char* const kDomainNames[] = {"quad", "tri", "isoline"};
+constexpr Domain kFormDomains[] = {Domain::Quad, Domain::Tri, Domain::Isoline};
+const char* const kFormDomainNames[] = {"quad", "tri", "isoline"};
 
 } // namespace
 
@@ -41,7 +41,7 @@ SimulatedPortBug::SimulatedPortBug(const std::string& value) {
     const std::string form = value.substr(colon + 1);
     const bool digits = !form.empty() && form.size() <= 2 && form.find_first_not_of("0123456789") == std::string::npos;
     int forms = 0;
-    for (Domain d : kDomains) forms = std::max(forms, portBugVariants(bug_, formSample(d)));
+    for (Domain d : kFormDomains) forms = std::max(forms, portBugVariants(bug_, formSample(d)));
     const int k = digits ? std::stoi(form) : 0;
     if (k < 1 || k > forms)
       throw UsageError("--port-bug " + quoteToken(value) + ": FORM after ':' must be a number from 1 to " +
@@ -54,9 +54,9 @@ SimulatedPortBug::SimulatedPortBug(const std::string& value) {
 std::string SimulatedPortBug::header() const {
   if (!active_) return "";
   std::string forms;
-  for (size_t i = 0; i < std::size(kDomains); ++i) {
-    const std::string f = portBugVariantName(bug_, formSample(kDomains[i]), form_);
-    if (!f.empty()) forms += std::string(forms.empty() ? "" : ", ") + kDomainNames[i] + ": " + f;
+  for (size_t i = 0; i < std::size(kFormDomains); ++i) {
+    const std::string f = portBugVariantName(bug_, formSample(kFormDomains[i]), form_);
+    if (!f.empty()) forms += std::string(forms.empty() ? "" : "; ") + kFormDomainNames[i] + ": " + f;
   }
   return std::string("simulated port bug: ") + toString(bug_) + " (" + describe(bug_) + "), form " +
          std::to_string(form_ + 1) + (forms.empty() ? "" : " (" + forms + ")") +
