@@ -90,6 +90,7 @@ void describePatch(std::string& o, ordered_json& list, int64_t index, const std:
     json bugs = json::array();
     for (PortBug b : c.bugs) bugs.push_back(toString(b));
     j["bugs"] = bugs;
+    j["bug_forms"] = c.bugVariants; // parallel to bugs: the form that reproduces ("" for bugs with one)
     json pts = json::array();
     for (const auto& d : c.points)
       pts.push_back(json{{"got", vertexJson(d.got)},
@@ -116,7 +117,11 @@ void describePatch(std::string& o, ordered_json& list, int64_t index, const std:
          formatNumber(d.du) + " dv " + formatNumber(d.dv) + " (16.16 units)\n";
     o += "    " + d.where + ": " + d.detail + "\n";
   }
-  for (PortBug b : c.bugs) o += std::string("  reproduced by ") + toString(b) + ": " + describe(b) + "\n";
+  for (size_t i = 0; i < c.bugs.size(); ++i) {
+    const std::string& form = i < c.bugVariants.size() ? c.bugVariants[i] : std::string();
+    o += std::string("  reproduced by ") + toString(c.bugs[i]) + (form.empty() ? "" : " (" + form + ")") + ": " +
+         describe(c.bugs[i]) + "\n";
+  }
 }
 
 } // namespace
@@ -144,7 +149,8 @@ void CompareReporter::finish(const std::string& format, const std::string& heade
            {"patches", sum_.patches},     {"same", sum_.same},
            {"differing", sum_.differing}, {"points_compared", sum_.pointsCompared},
            {"strict_order", strict_},     {"format", format}};
-    if (!header.empty()) j["source"] = header.substr(0, header.size() - 1); // the one header line, without '\n'
+    if (!header.empty()) j["source"] = header.substr(0, header.find('\n')); // the first header line, without '\n'
+    for (const auto& [key, value] : extra_.items()) j[key] = value;
     json kinds = json::object();
     for (int k = 1; k < int(DifferenceKind::Count); ++k) kinds[toString(DifferenceKind(k))] = sum_.byKind[k];
     j["by_kind"] = kinds;

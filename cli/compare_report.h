@@ -30,6 +30,8 @@ public:
   void add(int64_t index, int line, const Patch& patch, const PatchComparison& c);
   void finish(const std::string& format, const std::string& header);
   const CompareSummary& summary() const { return sum_; }
+  // A top-level key of the JSON report (after "source"), e.g. driver-check's "port_bug".
+  void addJsonField(const std::string& key, nlohmann::ordered_json value) { extra_[key] = std::move(value); }
 
 private:
   bool json_, strict_, generated_ = false;
@@ -37,6 +39,7 @@ private:
   int show_, shown_ = 0;
   std::string batch_, text_;
   nlohmann::ordered_json listed_;
+  nlohmann::ordered_json extra_ = nlohmann::ordered_json::object();
   CompareSummary sum_;
 };
 

@@ -4,6 +4,7 @@
 #include "common.h"
 #include "compare_report.h"
 #include "random_batch.h"
+#include "port_bug.h"
 
 #include <CLI/CLI.hpp>
 
@@ -34,6 +35,8 @@ CLI::App* addDriverCheck(CLI::App& app, DriverCheckArgs& a) {
   sub->add_option("--show", a.show, "Differing patches listed in full (default 20)");
   sub->add_option("--write-batch", a.writeBatch, "The patches checked, as a batch file (--random: what fftess gen "
                                                  "writes for the same N and seed)");
+  sub->add_option("--port-bug", a.portBug, "Run the driver as a port with this whole-patch bug (NAME[:FORM], "
+                                           "docs/compare.md): its factors and coordinates moved around the driver");
   sub->footer(
       "Example:\n  fftess driver-check --random 2000 --seed 7\n  fftess driver-check docs/examples/compare_port.batch\n"
       "Exit status: 0 same, 1 differs, 2 bad usage or input, 3 no GL driver or internal error.");
@@ -78,6 +81,7 @@ void writeBatch(const DriverCheckArgs& a, const std::vector<Item>& items) {
 int runDriverCheck(const DriverCheckArgs& a) {
   if (a.writeBatch == "-") throw UsageError("--write-batch '-': stdout carries the report; give a file");
   refuseSameFiles({{"--write-batch", a.writeBatch}}, {{"PATCHES", a.patches}});
+  const SimulatedPortBug simulated(a.portBug);
   std::vector<Item> items;
   std::string source;
   if (!a.patches.empty()) {
@@ -126,6 +130,8 @@ int runDriverCheck(const DriverCheckArgs& a) {
   opt.emulator.flushDenormals = a.flushDenormals;
   CompareReporter reporter(a.json, a.show, a.strictOrder, source, "driver-check");
   if (a.patches.empty()) reporter.setGenerated();
+  if (simulated.active())
+    reporter.addJsonField("port_bug", {{"name", toString(simulated.bug())}, {"form", simulated.form()}});
   Tessellator tess;
   constexpr size_t kChunk = 4096; // patches per capture round: bounded memory for any count
   std::vector<oracle::Patch> glPatches;
@@ -133,19 +139,20 @@ int runDriverCheck(const DriverCheckArgs& a) {
   for (size_t begin = 0; begin < items.size(); begin += kChunk) {
     const size_t end = std::min(items.size(), begin + kChunk);
     glPatches.clear();
-    for (size_t i = begin; i < end; ++i) glPatches.push_back(toOracle(items[i].patch));
+    for (size_t i = begin; i < end; ++i) glPatches.push_back(toOracle(simulated.input(items[i].patch)));
     if (!gl->run(glPatches, results, error)) {
       std::fprintf(stderr, "fftess: error: driver-check: the capture on %s failed: %s\n", gl->renderer().c_str(),
                    error.c_str());
       return kExitInternal;
     }
     for (size_t i = begin; i < end; ++i) {
-      const CapturedPatch c = toCapture(results[i - begin], int64_t(i));
+      CapturedPatch c = toCapture(results[i - begin], int64_t(i));
+      simulated.output(items[i].patch, c);
       reporter.add(int64_t(i), items[i].line, items[i].patch, comparePatch(items[i].patch, &c, opt, tess));
     }
   }
   reporter.finish("gl", "driver: " + gl->renderer() + " (" + gl->version() + "), " + std::to_string(items.size()) +
-                            " patches from " + source + "\n");
+                            " patches from " + source + "\n" + simulated.header());
   return reporter.summary().differing ? kExitFindings : kExitClean;
 }
 #endif

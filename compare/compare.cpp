@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 
 #include "tessellator/batch.h"
 #include "compare/compare_internal.h"
@@ -57,9 +58,13 @@ template <class T> int differenceSize(const std::vector<T>& a, const std::vector
   return int(d.size());
 }
 
+} // namespace
+
 bool sameOrderInsensitive(const Verts& a, const Verts& b, int arity) {
   return a.size() == b.size() && primitives(a, arity, false) == primitives(b, arity, false);
 }
+
+namespace {
 
 // Every vertex of 'got' pairs with its own vertex of 'model' within tol in u and v (multisets of vertices).
 bool nearSame(const Verts& model, const Verts& got, float tol) {
@@ -84,6 +89,8 @@ bool nearSame(const Verts& model, const Verts& got, float tol) {
   return true;
 }
 
+} // namespace
+
 void outputOf(const Tessellator& t, int arity, Verts& out) {
   out.clear();
   const auto& pts = t.points();
@@ -95,13 +102,7 @@ void outputOf(const Tessellator& t, int arity, Verts& out) {
   for (int32_t i : t.indices()) out.push_back(vert(size_t(i)));
 }
 
-bool hasDenormal(const Patch& p) {
-  for (float f : p.factors) {
-    const uint32_t b = fx::bitsOf(f) & ~fx::kSignBit;
-    if (b != 0 && b < fx::kMinNormal) return true;
-  }
-  return false;
-}
+namespace {
 
 std::string num(double v) {
   char buf[40];
@@ -109,8 +110,20 @@ std::string num(double v) {
   return buf;
 }
 
+// The end of a point's sentence when no per-point bug explains it: the first whole-patch bug that reproduces the
+// patch (c.bugs[whole]), if one does (whole < 0: none).
+std::string wholePatchCredit(const PatchComparison& c, int whole, PointDifference& d) {
+  if (whole < 0) return "; no typical port bug gives this value";
+  const PortBug b = c.bugs[size_t(whole)];
+  const std::string& form = c.bugVariants[size_t(whole)];
+  d.step = stepOf(b);
+  return std::string("; what the whole patch re-computed with ") + toString(b) + " gives (" + describe(b) +
+         (form.empty() ? "" : "; " + form) + "): " + stepOf(b);
+}
+
 // The step that explains capture coordinate 'got' where the reference has 'ref' on this axis, and the sentence.
-void explainCoordinate(const Axis& axis, int k, float ref, float got, const char* coord, PointDifference& d) {
+void explainCoordinate(const Axis& axis, int k, float ref, float got, const char* coord, const PatchComparison& c,
+                       int whole, PointDifference& d) {
   d.where = std::string(axis.name) + " point " + std::to_string(k) + " of " + std::to_string(axis.trace.count);
   const EdgePointTrace& p = axis.trace.points[k];
   std::string sentence = std::string(coord) + " = " + num(got) + " where the reference has " + num(ref) + " (16.16 " +
@@ -136,11 +149,13 @@ void explainCoordinate(const Axis& axis, int k, float ref, float got, const char
       }
     }
   }
-  d.detail = sentence + "; no typical port bug gives this value";
+  d.detail = sentence + wholePatchCredit(c, whole, d);
 }
 
 void pointDetails(const Patch& patch, const Options& options, const Verts& ref, const Verts& got, int maxDetails,
                   PatchComparison& c) {
+  const auto wholeIt = std::find_if(c.bugs.begin(), c.bugs.end(), portBugTransformsPatch);
+  const int whole = wholeIt == c.bugs.end() ? -1 : int(wholeIt - c.bugs.begin());
   const auto dr = distinctPoints(ref), dg = distinctPoints(got);
   std::vector<uint64_t> extra, missing;
   std::set_difference(dg.begin(), dg.end(), dr.begin(), dr.end(), std::back_inserter(extra));
@@ -172,9 +187,10 @@ void pointDetails(const Patch& patch, const Options& options, const Verts& ref, 
       if (k < 0) {
         d.where = "a point not on one edge";
         d.detail = std::string(coord ? "v" : "u") + " differs; the reference point is not placed by one edge";
+        if (whole >= 0) d.detail += wholePatchCredit(c, whole, d);
         continue;
       }
-      explainCoordinate(*axis, k, fx::floatOf(rb), fx::floatOf(gb), coord ? "v" : "u", d);
+      explainCoordinate(*axis, k, fx::floatOf(rb), fx::floatOf(gb), coord ? "v" : "u", c, whole, d);
     }
     c.points.push_back(d);
   }
@@ -189,26 +205,7 @@ void recognise(const Patch& patch, const Options& options, const Verts& ref, con
     outputOf(tess, arity, model);
     return sameOrderInsensitive(model, got, arity);
   };
-  const bool triangles =
-      patch.primitive == OutputPrimitive::TriangleCw || patch.primitive == OutputPrimitive::TriangleCcw;
-  if (triangles && arity == 3) {
-    Patch p = patch;
-    p.primitive =
-        patch.primitive == OutputPrimitive::TriangleCw ? OutputPrimitive::TriangleCcw : OutputPrimitive::TriangleCw;
-    if (rerun(p, options)) c.bugs.push_back(PortBug::WindingSwapped);
-  }
-  if (hasDenormal(patch) && !options.flushDenormals) {
-    Options o = options;
-    o.flushDenormals = true;
-    if (rerun(patch, o)) c.bugs.push_back(PortBug::DenormalsFlushed);
-  }
-  if (patch.partitioning == Partitioning::Pow2) {
-    Patch p = patch;
-    p.partitioning = Partitioning::FractionalEven;
-    if (rerun(p, options)) c.bugs.push_back(PortBug::Pow2AsFractionalEven);
-    p.partitioning = Partitioning::FractionalOdd;
-    if (rerun(p, options)) c.bugs.push_back(PortBug::Pow2AsFractionalOdd);
-  }
+  recogniseWholePatch(patch, options, ref, got, arity, tess, c);
   // Unsnapped fractional factors change point counts where a factor lies between two 16.16 values: a port comparing
   // the float (f > 2) places points the 16.16 value (== 2) does not. Modelled as the factors moved to the next 16.16
   // value up (the blend fraction then differs by less than a unit); per-point differences: the edge model below.
@@ -225,7 +222,7 @@ void recognise(const Patch& patch, const Options& options, const Verts& ref, con
     }
   }
   bool unsnapped = offGrid && rerun(up, options);
-  if (unsnapped) c.bugs.push_back(PortBug::FactorsNotSnapped);
+  if (unsnapped) nameBug(c, PortBug::FactorsNotSnapped);
   if (ref.empty() || ref.size() != got.size()) return;
   const PatchAxes axes = patchAxes(patch, options);
   for (PortBug b : {PortBug::FloatDivision, PortBug::NoMirroring, PortBug::NoSpecialMidpoint, PortBug::LerpNotRounded,
@@ -236,7 +233,7 @@ void recognise(const Patch& patch, const Options& options, const Verts& ref, con
       for (CapturedVertex r : ref) model.push_back(applyBug(axes, b, r, corners));
       if (model == ref) continue; // the bug changes nothing in this patch
       if (sameOrderInsensitive(model, got, arity) || nearSame(model, got, 0x1p-20f)) {
-        c.bugs.push_back(b);
+        nameBug(c, b);
         break;
       }
     }
@@ -292,6 +289,14 @@ static_assert(std::size(kBugs) == size_t(PortBug::Count), "a name for every Port
 } // namespace
 
 const char* toString(PortBug b) { return size_t(b) < std::size(kBugs) ? kBugs[size_t(b)].name : "?"; }
+bool parsePortBug(const char* s, PortBug& out) {
+  for (size_t i = 0; i < std::size(kBugs); ++i)
+    if (std::strcmp(s, kBugs[i].name) == 0) {
+      out = PortBug(i);
+      return true;
+    }
+  return false;
+}
 const char* describe(PortBug b) { return size_t(b) < std::size(kBugs) ? kBugs[size_t(b)].sentence : "?"; }
 const char* stepOf(PortBug b) { return size_t(b) < std::size(kBugs) ? kBugs[size_t(b)].step : "?"; }
 
@@ -338,10 +343,10 @@ PatchComparison comparePatch(const Patch& patch, const CapturedPatch* got, const
       c.kind = ur == uc ? DifferenceKind::Multiplicity : DifferenceKind::PrimitivesDiffer;
     }
   }
-  if (c.kind == DifferenceKind::PointsDiffer)
-    pointDetails(patch, options.emulator, ref, cap, options.maxPointDetails, c);
   if (options.recognise && c.kind != DifferenceKind::OrderDiffers)
     recognise(patch, options.emulator, ref, cap, arity, tess, c);
+  if (c.kind == DifferenceKind::PointsDiffer) // after recognise: a whole-patch bug explains the points it moves
+    pointDetails(patch, options.emulator, ref, cap, options.maxPointDetails, c);
   return c;
 }
 

@@ -73,12 +73,51 @@ enum class PortBug : uint8_t {
   Count
 };
 // float_division, no_mirroring, no_special_midpoint, lerp_not_rounded, factors_not_snapped, denormals_flushed,
-// pow2_as_fractional_even, pow2_as_fractional_odd, winding_swapped. Any other value: "?".
+// pow2_as_fractional_even, pow2_as_fractional_odd, winding_swapped, outer_factors_rotated, outer_factors_mirrored,
+// outer_factors_v_flipped, domain_v_flipped, uv_swapped, inside_factors_swapped, tri_barycentrics_permuted.
+// Any other value: "?".
 const char* toString(PortBug b);
+// The bug named s (toString's names); false for any other string.
+bool parsePortBug(const char* s, PortBug& out);
 // The bug in a sentence ("float division instead of the 16.16 reciprocal table").
 const char* describe(PortBug b);
 // The step of the edge's fixed-point computation the bug gets wrong, in `explain`'s words ("reciprocal rounding").
 const char* stepOf(PortBug b);
+
+// Whole-patch bugs as a port makes them (compare_bookkeeping.cpp): a change of the patch its fixed-function stage
+// gets (portBugInput) and of the coordinates it writes (portBugOutput); any tessellator run between the two, the
+// emulator (portBugCapture) or a GPU driver (driver-check --port-bug), behaves as a port with the bug.
+//   outer_factors_rotated    quad: edge e gets the factor of edge (e + r) % 4, variants r = 1, 2, 3 (order Ueq0 Veq0
+//                            Ueq1 Veq1 goes round the domain); tri: (e + r) % 3, r = 1, 2
+//   outer_factors_mirrored   quad: Ueq0<->Ueq1, transposed (Ueq0<->Veq0, Ueq1<->Veq1), reversed (Ueq0<->Veq1,
+//                            Veq0<->Ueq1); tri: Ueq0<->Veq0, Veq0<->Weq0, Ueq0<->Weq0
+//   outer_factors_v_flipped  quad: Veq0<->Veq1          inside_factors_swapped  quad: insideU<->insideV
+//   domain_v_flipped         quad, isoline: (u, v) written as (u, 1 - v)
+//   uv_swapped               any domain: (u, v) written as (v, u)
+//   tri_barycentrics_permuted tri: (u, v) written as (u, w), (v, u), (v, w), (w, u), (w, v); w = (1 - u) - v in
+//                            float, exact for 16.16 coordinates (as are 1 - v and the swaps: no rounding anywhere)
+//   winding_swapped          triangles: the other triangle_cw / triangle_ccw
+//   denormals_flushed        a denormal factor: every factor flushed to (signed) zero
+//   pow2_as_fractional_even / _odd   pow2: that fractional partitioning
+// The factor bugs act on the factors of the hardware stage: an hlsl-stage patch is preconditioned first (with
+// 'options') and the result is a hardware-stage patch. The coordinate bugs keep the primitives' vertex order (a port
+// that also flips the winding is recognised too: comparePatch tries both).
+// True for the bugs above; false for the per-point arithmetic bugs (float_division ... factors_not_snapped).
+bool portBugTransformsPatch(PortBug b);
+// The number of forms of the bug for this patch: 0 when it does not apply (domain, topology, partitioning, no
+// denormal factor; and every per-point arithmetic bug). Whether a form changes the output depends on the factors.
+int portBugVariants(PortBug b, const Patch& patch);
+// A form in words ("by 1: Ueq0 gets Veq0's factor", "(u, v) as (v, w)"); "" for bugs with one form.
+std::string portBugVariantName(PortBug b, const Patch& patch, int variant);
+// The patch a port with the bug feeds its fixed-function stage. A variant outside [0, portBugVariants) changes
+// nothing (the patch is returned as it is).
+Patch portBugInput(PortBug b, int variant, const Patch& patch, const Options& options = {});
+// The port's output coordinates from the fixed-function stage's 'capture' (rewritten in place); 'patch' is the
+// original patch. Only the coordinate bugs change anything.
+void portBugOutput(PortBug b, int variant, const Patch& patch, CapturedPatch& capture);
+// The output of an emulator port with the bug: portBugInput, tessellate with 'options', portBugOutput.
+CapturedPatch portBugCapture(PortBug b, int variant, const Patch& patch, int64_t index, const Options& options,
+                             bool pointList = false);
 
 // One capture point that the reference does not have.
 struct PointDifference {
@@ -106,6 +145,9 @@ struct PatchComparison {
   int flippedTriangles = 0;            // WindingOnly: triangles whose winding differs
   std::vector<PointDifference> points; // at most maxPointDetails
   std::vector<PortBug> bugs; // the port bugs that reproduce the capture exactly (or within 2^-20 per coordinate)
+  // Parallel to bugs: the form that reproduces it (portBugVariantName, and ", winding flipped too" for a coordinate
+  // bug whose port also flips the triangles); "" for bugs with one form.
+  std::vector<std::string> bugVariants;
 };
 
 // Compares one patch. got: null when the capture lacks the patch (treated as no output: culled in the capture).

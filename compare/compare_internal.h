@@ -1,4 +1,5 @@
-// Internal header of the comparison (compare.cpp, compare_bugs.cpp): the axes of a patch as traced edges.
+// Internal header of the comparison (compare.cpp, compare_bugs.cpp, compare_bookkeeping.cpp): the axes of a patch
+// as traced edges, the output helpers the bug models share.
 #pragma once
 
 #include "compare/compare.h"
@@ -30,5 +31,16 @@ int pointOnAxis(const Axis& axis, uint32_t bits);
 // corners: also re-place the corners an edge reaches by mirroring (else they stay: a port that writes them as
 // constants).
 CapturedVertex applyBug(const PatchAxes& a, PortBug b, CapturedVertex r, bool corners);
+
+// The tessellator's output as vertices: its primitives (arity 2 or 3), or its point array (arity 1).
+void outputOf(const Tessellator& t, int arity, std::vector<CapturedVertex>& out);
+// The same multiset of primitives (triangles compared up to their first vertex, segments unordered).
+bool sameOrderInsensitive(const std::vector<CapturedVertex>& a, const std::vector<CapturedVertex>& b, int arity);
+// Adds bug b (and its form, "" for none) to the bugs that reproduce the capture.
+void nameBug(PatchComparison& c, PortBug b, const std::string& form = "");
+// The whole-patch bugs (compare_bookkeeping.cpp): each bug and form of portBugVariants re-computed through the
+// emulator; a bug is named (once, with the first form that matches) when its output is the capture's.
+void recogniseWholePatch(const Patch& patch, const Options& options, const std::vector<CapturedVertex>& ref,
+                         const std::vector<CapturedVertex>& got, int arity, Tessellator& tess, PatchComparison& c);
 
 } // namespace fftess
