@@ -21,7 +21,7 @@ constexpr int kCompareReportVersion = 1;
 // batch: the batch file's name; kind: the JSON "kind" ("compare", "driver-check").
 class CompareReporter {
 public:
-  CompareReporter(bool json, int show, bool strictOrder, std::string batch, const char* kind = "compare");
+  CompareReporter(bool asJson, int show, bool strictOrder, std::string batch, const char* kind = "compare");
   // The batch is not a file but the command that writes it (`fftess gen ...`): patches are named "(COMMAND, line N)"
   // and the JSON says "generated_by" instead of "batch".
   void setGenerated() { generated_ = true; }
