@@ -115,19 +115,28 @@ bool fileByPatch(const std::vector<uint32_t>& words, int perPrim, const std::vec
 void indicesByCoordinates(Result& r) {
   r.indices.clear();
   if (r.primitives.empty()) return;
-  std::vector<std::pair<uint64_t, int32_t>> byKey; // (u, v) bits -> index in the point array
-  byKey.reserve(r.points.size() / 2);
-  for (int i = 0; i < r.pointCount(); ++i) byKey.emplace_back(pointKey(r.points[2 * i], r.points[2 * i + 1]), i);
-  std::sort(byKey.begin(), byKey.end());
-  for (size_t i = 1; i < byKey.size(); ++i)
-    if (byKey[i].first == byKey[i - 1].first) return; // coincident points: which one a vertex is, is not observable
+  // (u, v) bits -> index in the point array: open addressing, linear probing, at most half full.
+  size_t size = 16;
+  while (size < 2 * static_cast<size_t>(r.pointCount())) size *= 2;
+  std::vector<uint64_t> keys(size);
+  std::vector<int32_t> slots(size, -1);
+  auto find = [&](uint64_t key) {
+    size_t h = static_cast<size_t>(SplitMix64::mix(key)) & (size - 1);
+    while (slots[h] >= 0 && keys[h] != key) h = (h + 1) & (size - 1);
+    return h;
+  };
+  for (int i = 0; i < r.pointCount(); ++i) {
+    const uint64_t key = pointKey(r.points[2 * i], r.points[2 * i + 1]);
+    const size_t h = find(key);
+    if (slots[h] >= 0) return; // coincident points: which one a vertex is, is not observable
+    keys[h] = key, slots[h] = i;
+  }
   std::vector<int32_t> indices;
   indices.reserve(r.primitives.size() / 2);
   for (size_t k = 0; k + 1 < r.primitives.size(); k += 2) {
-    const uint64_t key = pointKey(r.primitives[k], r.primitives[k + 1]);
-    const auto it = std::lower_bound(byKey.begin(), byKey.end(), std::make_pair(key, int32_t(-1)));
-    if (it == byKey.end() || it->first != key) return; // a vertex that is no point of the point capture
-    indices.push_back(it->second);
+    const size_t h = find(pointKey(r.primitives[k], r.primitives[k + 1]));
+    if (slots[h] < 0) return; // a vertex that is no point of the point capture
+    indices.push_back(slots[h]);
   }
   r.indices = std::move(indices);
 }
