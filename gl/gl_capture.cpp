@@ -396,7 +396,8 @@ bool GlOracle::Impl::splitPointsInOrder(const std::vector<int>& members, int beg
       return false;
     }
     if (local < last) {
-      error = "point capture out of patch order (patch " + std::to_string(local) + " after " + std::to_string(last) + ")";
+      error = "point capture out of patch order (patch " + std::to_string(local) + " after " + std::to_string(last) +
+              ")";
       orderMismatch = true;
       return false;
     }
@@ -485,7 +486,8 @@ bool GlOracle::Impl::readPrimitiveBatch(const std::vector<Patch>& patches, const
   for (size_t v = 0; v < captured.size(); v += primWords) {
     const int local = static_cast<int>(captured[v + 2]);
     if (begin + local >= end) {
-      error = "a captured primitive names patch " + std::to_string(local) + " of a draw of " + std::to_string(end - begin);
+      error = "a captured primitive names patch " + std::to_string(local) + " of a draw of " +
+              std::to_string(end - begin);
       return false;
     }
     if (local < last) {

@@ -16,7 +16,8 @@ if(rc EQUAL 3 AND err MATCHES "no OpenGL 4.5 context")
   return()
 endif()
 if(NOT rc EQUAL 0 OR NOT out MATCHES "summary: 1500 patches, 1500 same, 0 differ" OR NOT out MATCHES "verdict: same")
-  message(FATAL_ERROR "driver_check_order: permuted capture: expected exit 0 and 1500 same; got exit ${rc}:\n${out}\n${err}")
+  message(FATAL_ERROR "driver_check_order: permuted capture: expected exit 0 and 1500 same; got exit ${rc}:\n"
+                      "${out}\n${err}")
 endif()
 
 execute_process(COMMAND ${FFTESS} ${args} --permute-capture 3 --strict-order RESULT_VARIABLE rc OUTPUT_VARIABLE out
@@ -29,6 +30,7 @@ endif()
 
 execute_process(COMMAND ${FFTESS} ${args} --strict-order RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT rc EQUAL 0 OR NOT out MATCHES "1500 same")
-  message(FATAL_ERROR "driver_check_order: --strict-order on llvmpipe: expected exit 0; got exit ${rc}:\n${out}\n${err}")
+  message(FATAL_ERROR "driver_check_order: --strict-order on llvmpipe: expected exit 0; got exit ${rc}:\n"
+                      "${out}\n${err}")
 endif()
 message("driver_check_order: permuted capture same; strict order refused it with: ${err}")
