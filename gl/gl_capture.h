@@ -85,8 +85,9 @@ public:
   bool isLlvmpipe() const { return renderer_.find("llvmpipe") != std::string::npos; }
 
   // Tessellates every patch; results[i] belongs to patches[i]. Returns false and sets 'error' if the driver did
-  // something the harness cannot trust (GL error, transform feedback overflow, a vertex id that does not match
-  // the observed point array, ...). Patches are grouped per program and drawn many per draw call.
+  // something the harness cannot trust (GL error, transform feedback overflow, a record naming a patch outside its
+  // draw, more points than the bound; Strict also: a vertex id that does not match the observed point array, ...).
+  // Patches are grouped per program and drawn many per draw call. options.order: see CaptureOrder (default Strict).
   bool run(const std::vector<Patch>& patches, std::vector<Result>& results, std::string& error,
            const RunOptions& options = {});
 
