@@ -141,6 +141,7 @@ struct DriverCheckArgs {
   std::string portBug;     // --port-bug NAME: run the driver as a port with that bug would (the bug must be named)
   std::string writeBatch;  // --write-batch FILE: the patches checked, as a batch file
   std::string svg;         // --svg FILE, as compare's
+  uint64_t permuteCapture = 0; // --permute-capture SEED (test): the driver's records permuted before they are grouped
 };
 // fftess driver-check (cli/driver_check.cpp): the local GL driver's tessellator through the comparison of compare.
 CLI::App* addDriverCheck(CLI::App& app, DriverCheckArgs& a);

@@ -15,6 +15,7 @@
 #include "gl/gl_capture.h"
 #endif
 
+#include <cstdint>
 #include <cstring>
 #include <fstream>
 #include <iostream>
@@ -29,7 +30,9 @@ CLI::App* addDriverCheck(CLI::App& app, DriverCheckArgs& a) {
       ->check(CLI::Range(1, 10000000));
   sub->add_option("--seed", a.seed, "Seed of --random (default 1)");
   sub->add_flag("--hardware", a.hardware, "Prefer a GPU's EGL device over Mesa's software one");
-  sub->add_flag("--strict-order", a.strictOrder, "Same primitives in the same order with the same first vertex");
+  sub->add_flag("--strict-order", a.strictOrder,
+                "Capture and compare in the reference's order: same primitives in the same order with the same first "
+                "vertex (needs a driver that emits in that order, llvmpipe)");
   sub->add_flag("--flush-denormals", a.flushDenormals, "Reference flushes denormal factors (as llvmpipe and GPUs do)");
   sub->add_flag("--json", a.json, "JSON report on stdout");
   sub->add_option("--show", a.show, "Differing patches listed in full (default 20)");
@@ -37,9 +40,14 @@ CLI::App* addDriverCheck(CLI::App& app, DriverCheckArgs& a) {
                                                  "writes for the same N and seed)");
   sub->add_option("--port-bug", a.portBug, "Run the driver as a port with this whole-patch bug (NAME[:FORM], "
                                            "docs/compare.md): its factors and coordinates moved around the driver");
+  sub->add_option("--permute-capture", a.permuteCapture,
+                  "Test: permute the driver's captured records (seeded, nonzero) and rotate its triangles before they "
+                  "are grouped, as a driver with its own order would emit them")
+      ->check(CLI::Range(uint64_t(1), UINT64_MAX));
   sub->footer(
       "Example:\n  fftess driver-check --random 2000 --seed 7\n  fftess driver-check docs/examples/compare_port.batch\n"
-      "Exit status: 0 same, 1 differs, 2 bad usage or input, 3 no GL driver or internal error.");
+      "Exit status: 0 same, 1 differs, 2 bad usage or input, 3 no GL driver, internal error, or --strict-order on a "
+      "driver that emits in its own order.");
   return sub;
 }
 
@@ -125,6 +133,12 @@ int runDriverCheck(const DriverCheckArgs& a) {
     std::fprintf(stderr, "fftess: error: driver-check: no OpenGL 4.5 context: %s\n", error.c_str());
     return kExitInternal;
   }
+  if (a.hardware && gl->isLlvmpipe())
+    std::fprintf(stderr, "fftess: note: driver-check --hardware: no GPU's EGL device gave an OpenGL 4.5 context; "
+                         "running on %s\n", gl->renderer().c_str());
+  oracle::RunOptions run;
+  run.order = a.strictOrder ? oracle::CaptureOrder::Strict : oracle::CaptureOrder::Free;
+  run.permuteSeed = a.permuteCapture;
   CompareOptions opt;
   opt.strictOrder = a.strictOrder;
   opt.emulator.flushDenormals = a.flushDenormals;
@@ -140,9 +154,14 @@ int runDriverCheck(const DriverCheckArgs& a) {
     const size_t end = std::min(items.size(), begin + kChunk);
     glPatches.clear();
     for (size_t i = begin; i < end; ++i) glPatches.push_back(toOracle(simulated.input(items[i].patch)));
-    if (!gl->run(glPatches, results, error)) {
-      std::fprintf(stderr, "fftess: error: driver-check: the capture on %s failed: %s\n", gl->renderer().c_str(),
-                   error.c_str());
+    if (!gl->run(glPatches, results, error, run)) {
+      if (gl->orderMismatch())
+        std::fprintf(stderr, "fftess: error: driver-check: --strict-order needs a driver that emits in the reference "
+                             "order (llvmpipe); %s does not%s (%s)\n", gl->renderer().c_str(),
+                     a.permuteCapture ? " with --permute-capture" : "", error.c_str());
+      else
+        std::fprintf(stderr, "fftess: error: driver-check: the capture on %s failed: %s\n", gl->renderer().c_str(),
+                     error.c_str());
       return kExitInternal;
     }
     for (size_t i = begin; i < end; ++i) {

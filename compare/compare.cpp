@@ -21,8 +21,8 @@ uint64_t key(CapturedVertex v) { return (uint64_t(v.u) << 32) | v.v; }
 float fu(CapturedVertex v) { return fx::floatOf(v.u); }
 float fv(CapturedVertex v) { return fx::floatOf(v.v); }
 
-// Primitives as sortable keys. rotate: triangles rotated to their smallest vertex (winding kept); sortAll: vertices
-// of each primitive sorted (winding ignored; segments are always unordered).
+// Primitives as sortable keys: triangles in their lexicographically smallest rotation (winding kept); sortAll:
+// vertices of each primitive sorted (winding ignored; segments are always unordered).
 std::vector<Prim> primitives(const Verts& v, int arity, bool sortAll) {
   std::vector<Prim> out;
   if (arity <= 0) return out;
@@ -33,8 +33,10 @@ std::vector<Prim> primitives(const Verts& v, int arity, bool sortAll) {
     if (arity == 2 || sortAll) {
       std::sort(p.begin(), p.begin() + arity);
     } else if (arity == 3) {
-      const size_t m = size_t(std::min_element(p.begin(), p.end()) - p.begin());
-      std::rotate(p.begin(), p.begin() + long(m), p.end());
+      // The lexicographically smallest rotation, not "the smallest vertex first": with two coincident vertices
+      // (A, A, B), the rotations (A, A, B) and (A, B, A) both start at A and are one triangle (a driver that starts
+      // triangles at its own vertex gives either; docs/oracle.md "Real hardware").
+      p = std::min({p, Prim{p[1], p[2], p[0]}, Prim{p[2], p[0], p[1]}});
     }
     out.push_back(p);
   }

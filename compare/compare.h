@@ -10,7 +10,7 @@
 //
 // What "the same" means (docs/compare.md):
 //   * default, order-insensitive: the multisets of points (point lists), of segments (unordered vertex pairs) or of
-//     triangles (each rotated so its smallest vertex comes first: the winding is kept, the first vertex is not) are
+//     triangles (each in its lexicographically smallest rotation: the winding is kept, the first vertex is not) are
 //     equal, every coordinate compared as IEEE bits;
 //   * strictOrder: the same primitives in the same order with the same first vertex (what llvmpipe gives).
 // A capture that is a point list (one vertex per primitive) is compared with the reference's point array whatever

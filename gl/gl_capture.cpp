@@ -1,12 +1,12 @@
 // Capture of a real OpenGL tessellator (Mesa llvmpipe) through transform feedback. See gl_capture.h and
 // docs/oracle.md.
 #include "gl_capture.h"
+#include "capture_records.h"
 #include "gl_context.h"
 
-#include "base/bits.h"
+#include "base/splitmix64.h"
 
 #include <algorithm>
-#include <cmath>
 #include <cstring>
 #include <map>
 #include <tuple>
@@ -19,28 +19,17 @@ namespace {
 
 using gltest::GlFunctions;
 
+using records::kCaptureStride; // uvec4 per vertex: u bits, v bits, patch in draw, vertex id (Strict) or 0
+
 // llvmpipe numbers the tessellated vertices of one draw with 16-bit indices (each patch padded to a multiple of 4):
 // past 65536 domain points per draw it captures wrong vertices without any error (shared facts). Stay well below.
-constexpr int kDrawPointBudget = 60000;
+// Other drivers take more (tests/tools/nvidia_compare draws 200,000 on NVIDIA).
+constexpr int kSoftwareDrawPointBudget = 60000;
+constexpr int kHardwareDrawPointBudget = 200000;
 constexpr int kMaxPatchesPerDraw = 2048;
-// Transform feedback room per draw, in captured vertices (a triangle list has < 2 triangles per point: 6 vertices).
-constexpr int kCaptureVertices = 8 * kDrawPointBudget;
-constexpr int kCaptureStride = 4; // uvec4 per vertex: u bits, v bits, patch in draw, vertex id
-
-// Segments an edge can have for this factor, never underestimated: clamp to [.., 64] (NaN and +Inf as 64),
-// +1 for the rounding up to even/odd of the fractional partitionings, at least 2.
-int segmentBound(uint32_t bits) {
-  const float f = floatOf(bits);
-  if (std::isnan(f) || !(f < 64.0f)) return 64;
-  const int s = static_cast<int>(std::ceil(std::max(f, 0.0f))) + 1;
-  return std::max(2, std::min(64, s));
-}
-
-// GL 4.5 section 11.2.2: a patch whose relevant outer levels include one <= 0 or NaN is discarded.
-bool outerDiscards(uint32_t bits) {
-  const float f = floatOf(bits);
-  return std::isnan(f) || !(f > 0.0f);
-}
+// Transform feedback room per draw, in captured vertices per budget point (a triangle list has < 2 triangles per
+// point: 6 vertices).
+constexpr int kCaptureVerticesPerPoint = 8;
 
 int padTo4(int n) { return (n + 3) & ~3; }
 
@@ -51,8 +40,9 @@ struct ProgramKey {
   Domain domain;
   int spacing; // 0 equal, 1 fractional_odd, 2 fractional_even
   Capture capture;
+  bool ids; // primitives with vertex ids (CaptureOrder::Strict); points and order-free primitives have none
   bool operator<(const ProgramKey& o) const {
-    return std::tie(domain, spacing, capture) < std::tie(o.domain, o.spacing, o.capture);
+    return std::tie(domain, spacing, capture, ids) < std::tie(o.domain, o.spacing, o.capture, o.ids);
   }
 };
 
@@ -84,7 +74,7 @@ std::string evaluationShader(const ProgramKey& k) {
   if (k.capture == Capture::TrianglesGlCcw) layout += ", ccw";
   if (k.capture == Capture::Points) layout += ", point_mode";
   std::string s = "#version 450 core\nlayout(" + layout + ") in;\nflat out uvec4 cap;\n";
-  if (k.capture == Capture::Points) {
+  if (!k.ids) {
     s += R"(void main() {
   cap = uvec4(floatBitsToUint(gl_TessCoord.xy), uint(gl_PrimitiveID), 0u);
   gl_Position = vec4(0.0);
@@ -112,41 +102,6 @@ void main() {
 
 } // namespace
 
-int pointBound(const Patch& p) {
-  const uint32_t* f = p.factorBits;
-  switch (p.domain) {
-  case Domain::Quad: {
-    for (int i = 0; i < 4; ++i)
-      if (outerDiscards(f[i])) return 0;
-    int n = 0;
-    for (int i = 0; i < 4; ++i) n += segmentBound(f[i]);
-    return n + (segmentBound(f[4]) + 1) * (segmentBound(f[5]) + 1);
-  }
-  case Domain::Tri: {
-    for (int i = 0; i < 3; ++i)
-      if (outerDiscards(f[i])) return 0;
-    int n = 0;
-    for (int i = 0; i < 3; ++i) n += segmentBound(f[i]);
-    return n + (segmentBound(f[3]) + 1) * (segmentBound(f[3]) + 1);
-  }
-  case Domain::Isoline:
-    if (outerDiscards(f[0]) || outerDiscards(f[1])) return 0;
-    return segmentBound(f[0]) * (segmentBound(f[1]) + 1);
-  }
-  return 0;
-}
-
-int glSpacing(Partitioning p) {
-  switch (p) {
-  // D3D11.3 spec 11.7: pow2 rounding is the HLSL compiler's; the fixed-function unit treats pow2 as integer.
-  case Partitioning::Integer:
-  case Partitioning::Pow2: return 0;
-  case Partitioning::FractionalOdd: return 1;
-  case Partitioning::FractionalEven: return 2;
-  }
-  return 0;
-}
-
 struct GlOracle::Impl {
   gltest::GlContext context;
   GlFunctions& gl = context.gl;
@@ -161,6 +116,10 @@ struct GlOracle::Impl {
   std::map<ProgramKey, Program> programs;
   std::vector<uint32_t> captured;
   int drawCalls = 0;
+  int drawPointBudget = kSoftwareDrawPointBudget;
+  GLint tesStorageBlocks = 0;
+  RunOptions options;        // of the current run()
+  bool orderMismatch = false; // the last run() failed on the reference order (Strict)
 
   Program* program(const ProgramKey& key, std::string& error) {
     auto it = programs.find(key);
@@ -196,13 +155,14 @@ struct GlOracle::Impl {
 
   bool checkGl(const char* what, std::string& error) { return gltest::checkGl(gl, what, error); }
 
-  // One draw of patches [first, first+count) of the group; 'stored' sizes per patch for the vertex-id pass.
-  // Appends the captured vertices (kCaptureStride words each) to 'captured'.
+  // One draw of patches [first, first+count) of the group; 'slotBases' (Strict primitives only, else empty): where
+  // each patch's vertex ids store their coordinates. Fills 'captured' with the draw's vertices (kCaptureStride words
+  // each), permuted when options.permuteSeed is set.
   bool draw(Program& prog, Capture capture, int first, int count, const std::vector<uint32_t>& slotBases,
             std::string& error) {
     gl.glUseProgram(prog.id);
     gl.glUniform1ui(prog.patchBase, static_cast<GLuint>(first));
-    if (capture != Capture::Points) {
+    if (!slotBases.empty()) { // vertex ids (Strict primitives): counters from 0, the slots of each patch
       std::vector<uint32_t> zeros(static_cast<size_t>(count), 0u);
       gl.glBindBuffer(GL_SHADER_STORAGE_BUFFER, counterBuf);
       gl.glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(zeros.size() * 4), zeros.data());
@@ -231,11 +191,11 @@ struct GlOracle::Impl {
       return false;
     }
     const size_t words = static_cast<size_t>(written) * perPrim * kCaptureStride;
-    const size_t old = captured.size();
-    captured.resize(old + words);
+    captured.assign(words, 0u);
     gl.glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     gl.glBindBuffer(GL_COPY_READ_BUFFER, captureBuf);
-    if (words) gl.glGetBufferSubData(GL_COPY_READ_BUFFER, 0, static_cast<GLsizeiptr>(words * 4), captured.data() + old);
+    if (words) gl.glGetBufferSubData(GL_COPY_READ_BUFFER, 0, static_cast<GLsizeiptr>(words * 4), captured.data());
+    if (options.permuteSeed) records::permute(captured, perPrim, SplitMix64::mix(options.permuteSeed + drawCalls));
     return checkGl("reading the transform feedback buffer", error);
   }
 
@@ -256,17 +216,20 @@ struct GlOracle::Impl {
   // Pass 1: point_mode, one captured vertex per domain point in the tessellator's order.
   bool capturePoints(const std::vector<Patch>& patches, const std::vector<int>& members, std::vector<Result>& results,
                      std::string& error);
+  // Strict: the draw's points filed under their patches, which must come in patch order (else orderMismatch).
+  bool splitPointsInOrder(const std::vector<int>& members, int begin, int end, std::vector<Result>& results,
+                          std::string& error);
   // Point and (quad/tri) line outputs, which GL cannot draw, derived from the points; returns the members (indices
   // into `members`) whose primitives pass 2 must capture.
   std::vector<int> derivePrimitives(const std::vector<Patch>& patches, const std::vector<int>& members,
                                     std::vector<Result>& results);
-  // Pass 2 for the selected members `sel` (one GL winding or isolines): draws in batches, checks each captured
-  // vertex against the point capture and the TES invocation order.
+  // Pass 2 for the selected members `sel` (one GL winding or isolines): draws in batches; Strict checks each
+  // captured vertex against the point capture and the TES invocation order, Free files the primitives by patch.
   bool capturePrimitives(const std::vector<Patch>& patches, const std::vector<int>& members,
                          const std::vector<int>& sel, const std::vector<uint32_t>& factors, Capture cap,
                          std::vector<Result>& results, std::string& error);
-  // One draw of pass 2: selected members [begin, end) with their slot bases; the captured primitives appended to
-  // their results.
+  // One draw of pass 2, Strict: selected members [begin, end) with their slot bases; the captured primitives
+  // appended to their results.
   bool readPrimitiveBatch(const std::vector<Patch>& patches, const std::vector<int>& members,
                           const std::vector<int>& sel, int begin, int end, int perPrim,
                           const std::vector<uint32_t>& slotBases, std::vector<Result>& results, std::string& error);
@@ -304,13 +267,9 @@ std::unique_ptr<GlOracle> GlOracle::create(std::string& error, bool hardwareFirs
   o->renderer_ = m.context.renderer();
   o->version_ = m.context.version();
 
-  GLint tesBlocks = 0;
-  gl.glGetIntegerv(GL_MAX_TESS_EVALUATION_SHADER_STORAGE_BLOCKS, &tesBlocks);
-  if (tesBlocks < 3) {
-    error = "the GL implementation (" + o->renderer_ + ") offers " + std::to_string(tesBlocks) +
-            " storage blocks to tessellation evaluation shaders; the oracle needs 3";
-    return nullptr;
-  }
+  // Strict primitives need 3 storage blocks in the evaluation shader (checked by run()); the order-free capture none.
+  gl.glGetIntegerv(GL_MAX_TESS_EVALUATION_SHADER_STORAGE_BLOCKS, &m.tesStorageBlocks);
+  m.drawPointBudget = m.context.isSoftware() ? kSoftwareDrawPointBudget : kHardwareDrawPointBudget;
 
   // Draws need a complete framebuffer; an attachment-less one will do under rasterizer discard.
   if (!gltest::prepareCaptureDraws(gl, m.fbo, m.vao, error)) return nullptr;
@@ -323,10 +282,11 @@ std::unique_ptr<GlOracle> GlOracle::create(std::string& error, bool hardwareFirs
   gl.glBindBuffer(GL_SHADER_STORAGE_BUFFER, m.slotBuf);
   gl.glBufferData(GL_SHADER_STORAGE_BUFFER, (kMaxPatchesPerDraw + 1) * 4, nullptr, GL_DYNAMIC_DRAW);
   gl.glBindBuffer(GL_SHADER_STORAGE_BUFFER, m.storedBuf);
-  gl.glBufferData(GL_SHADER_STORAGE_BUFFER, kDrawPointBudget * 8, nullptr, GL_DYNAMIC_READ);
+  gl.glBufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(m.drawPointBudget) * 8, nullptr, GL_DYNAMIC_READ);
   gl.glBindBuffer(GL_TRANSFORM_FEEDBACK_BUFFER, m.captureBuf);
-  gl.glBufferData(GL_TRANSFORM_FEEDBACK_BUFFER, static_cast<GLsizeiptr>(kCaptureVertices) * kCaptureStride * 4,
-                  nullptr, GL_DYNAMIC_READ);
+  gl.glBufferData(GL_TRANSFORM_FEEDBACK_BUFFER,
+                  static_cast<GLsizeiptr>(m.drawPointBudget) * kCaptureVerticesPerPoint * kCaptureStride * 4, nullptr,
+                  GL_DYNAMIC_READ);
   gl.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, m.counterBuf);
   gl.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, m.slotBuf);
   gl.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, m.storedBuf);
@@ -357,6 +317,8 @@ bool GlOracle::Impl::runGroup(const std::vector<Patch>& patches, const std::vect
                                                         : Capture::TrianglesGlCw;
     if (!capturePrimitives(patches, members, sel, factors, cap, results, error)) return false;
   }
+  if (options.order == CaptureOrder::Free)
+    for (int i : prim) records::indicesByCoordinates(results[members[i]]);
   return true;
 }
 
@@ -395,27 +357,21 @@ bool GlOracle::Impl::capturePoints(const std::vector<Patch>& patches, const std:
                                    std::vector<Result>& results, std::string& error) {
   const Patch& first = patches[members[0]];
   const int n = static_cast<int>(members.size());
-  Program* pointProg = program({first.domain, glSpacing(first.partitioning), Capture::Points}, error);
+  Program* pointProg = program({first.domain, glSpacing(first.partitioning), Capture::Points, false}, error);
   if (!pointProg) return false;
   std::vector<int> bounds(n);
   for (int i = 0; i < n; ++i) bounds[i] = pointBound(patches[members[i]]);
   for (int begin = 0; begin < n;) {
     int end = begin, budget = 0;
-    while (end < n && end - begin < kMaxPatchesPerDraw && budget + padTo4(bounds[end]) <= kDrawPointBudget)
+    while (end < n && end - begin < kMaxPatchesPerDraw && budget + padTo4(bounds[end]) <= drawPointBudget)
       budget += padTo4(bounds[end++]);
-    captured.clear();
     if (!draw(*pointProg, Capture::Points, begin, end - begin, {}, error)) return false;
-    int last = 0;
-    for (size_t v = 0; v < captured.size(); v += kCaptureStride) {
-      const int local = static_cast<int>(captured[v + 2]);
-      if (local < last || begin + local >= end) {
-        error = "point capture out of patch order (patch " + std::to_string(local) + " after " + std::to_string(last) + ")";
-        return false;
-      }
-      last = local;
-      Result& r = results[members[begin + local]];
-      r.points.push_back(captured[v]);
-      r.points.push_back(captured[v + 1]);
+    if (options.order == CaptureOrder::Free) {
+      std::vector<std::vector<uint32_t>*> out;
+      for (int i = begin; i < end; ++i) out.push_back(&results[members[i]].points);
+      if (!records::fileByPatch(captured, 1, out, error)) return false;
+    } else if (!splitPointsInOrder(members, begin, end, results, error)) {
+      return false;
     }
     for (int i = begin; i < end; ++i) {
       const int count = results[members[i]].pointCount();
@@ -426,6 +382,29 @@ bool GlOracle::Impl::capturePoints(const std::vector<Patch>& patches, const std:
       }
     }
     begin = end;
+  }
+  return true;
+}
+
+bool GlOracle::Impl::splitPointsInOrder(const std::vector<int>& members, int begin, int end,
+                                        std::vector<Result>& results, std::string& error) {
+  int last = 0;
+  for (size_t v = 0; v < captured.size(); v += kCaptureStride) {
+    const int local = static_cast<int>(captured[v + 2]);
+    if (begin + local >= end) {
+      error = "a captured point names patch " + std::to_string(local) + " of a draw of " + std::to_string(end - begin);
+      return false;
+    }
+    if (local < last) {
+      error = "point capture out of patch order (patch " + std::to_string(local) + " after " + std::to_string(last) +
+              ")";
+      orderMismatch = true;
+      return false;
+    }
+    last = local;
+    Result& r = results[members[begin + local]];
+    r.points.push_back(captured[v]);
+    r.points.push_back(captured[v + 1]);
   }
   return true;
 }
@@ -441,9 +420,11 @@ std::vector<int> GlOracle::Impl::derivePrimitives(const std::vector<Patch>& patc
       r.verticesPerPrimitive = 1;
       for (int k = 0; k < count; ++k) r.indices.push_back(k);
     } else if (p.topology == Topology::Line && p.domain != Domain::Isoline) {
-      // D3D quad/tri "line" output: the points joined in generation order. GL has no such output; derived here.
+      // D3D quad/tri "line" output: the points joined in generation order. GL has no such output; derived here from
+      // the reference order (Strict); an order-free capture does not know the generation order (indices empty).
       r.verticesPerPrimitive = 2;
-      for (int k = 0; k + 1 < count; ++k) r.indices.push_back(k), r.indices.push_back(k + 1);
+      if (options.order == CaptureOrder::Strict)
+        for (int k = 0; k + 1 < count; ++k) r.indices.push_back(k), r.indices.push_back(k + 1);
     } else {
       prim.push_back(i);
     }
@@ -456,7 +437,8 @@ bool GlOracle::Impl::capturePrimitives(const std::vector<Patch>& patches, const 
                                        std::vector<Result>& results, std::string& error) {
   const Patch& first = patches[members[0]];
   const int perPrim = cap == Capture::Lines ? 2 : 3;
-  Program* prog = program({first.domain, glSpacing(first.partitioning), cap}, error);
+  const bool ids = options.order == CaptureOrder::Strict;
+  Program* prog = program({first.domain, glSpacing(first.partitioning), cap, ids}, error);
   if (!prog) return false;
   // Re-upload factors in the order of 'sel' so gl_PrimitiveID indexes them directly.
   std::vector<uint32_t> selFactors(sel.size() * 6);
@@ -467,17 +449,26 @@ bool GlOracle::Impl::capturePrimitives(const std::vector<Patch>& patches, const 
   const int m = static_cast<int>(sel.size());
   for (int begin = 0; begin < m;) {
     int end = begin, budget = 0;
-    std::vector<uint32_t> slotBases(1, 0u);
+    std::vector<uint32_t> slotBases(1, 0u); // Strict: where each patch's vertex ids store their coordinates
     while (end < m && end - begin < kMaxPatchesPerDraw &&
-           budget + padTo4(results[members[sel[end]]].pointCount()) <= kDrawPointBudget) {
+           budget + padTo4(results[members[sel[end]]].pointCount()) <= drawPointBudget) {
       const int c = results[members[sel[end]]].pointCount();
       budget += padTo4(c);
       slotBases.push_back(slotBases.back() + static_cast<uint32_t>(c));
       ++end;
     }
-    captured.clear();
+    if (!ids) slotBases.clear();
     if (!draw(*prog, cap, begin, end - begin, slotBases, error)) return false;
-    if (!readPrimitiveBatch(patches, members, sel, begin, end, perPrim, slotBases, results, error)) return false;
+    if (ids) {
+      if (!readPrimitiveBatch(patches, members, sel, begin, end, perPrim, slotBases, results, error)) return false;
+    } else {
+      std::vector<std::vector<uint32_t>*> out;
+      for (int i = begin; i < end; ++i) {
+        results[members[sel[i]]].verticesPerPrimitive = perPrim;
+        out.push_back(&results[members[sel[i]]].primitives);
+      }
+      if (!records::fileByPatch(captured, perPrim, out, error)) return false;
+    }
     begin = end;
   }
   return true;
@@ -494,8 +485,14 @@ bool GlOracle::Impl::readPrimitiveBatch(const std::vector<Patch>& patches, const
   const size_t primWords = static_cast<size_t>(perPrim) * kCaptureStride;
   for (size_t v = 0; v < captured.size(); v += primWords) {
     const int local = static_cast<int>(captured[v + 2]);
-    if (local < last || begin + local >= end) {
+    if (begin + local >= end) {
+      error = "a captured primitive names patch " + std::to_string(local) + " of a draw of " +
+              std::to_string(end - begin);
+      return false;
+    }
+    if (local < last) {
       error = "primitive capture out of patch order";
+      orderMismatch = true;
       return false;
     }
     last = local;
@@ -507,6 +504,7 @@ bool GlOracle::Impl::readPrimitiveBatch(const std::vector<Patch>& patches, const
       if (c[2] != captured[v + 2] || id >= static_cast<uint32_t>(r.pointCount()) ||
           r.points[2 * id] != c[0] || r.points[2 * id + 1] != c[1]) {
         error = "patch '" + batchLine(p) + "': a captured vertex does not match the point_mode capture at its id";
+        orderMismatch = true;
         return false;
       }
       r.primitives.push_back(c[0]);
@@ -527,6 +525,7 @@ bool GlOracle::Impl::readPrimitiveBatch(const std::vector<Patch>& patches, const
       error = "patch '" + batchLine(patches[members[sel[i]]]) + "': TES invocations (" +
               std::to_string(counters[i - begin]) + ") do not run once per point in point order (" +
               std::to_string(r.pointCount()) + " points); vertex ids cannot be trusted";
+      orderMismatch = true;
       return false;
     }
   }
@@ -535,9 +534,21 @@ bool GlOracle::Impl::readPrimitiveBatch(const std::vector<Patch>& patches, const
 
 int GlOracle::drawCalls() const { return impl_->drawCalls; }
 
-bool GlOracle::run(const std::vector<Patch>& patches, std::vector<Result>& results, std::string& error) {
+int GlOracle::drawPointBudget() const { return impl_->drawPointBudget; }
+
+bool GlOracle::orderMismatch() const { return impl_->orderMismatch; }
+
+bool GlOracle::run(const std::vector<Patch>& patches, std::vector<Result>& results, std::string& error,
+                   const RunOptions& options) {
   results.assign(patches.size(), Result{});
   impl_->drawCalls = 0;
+  impl_->options = options;
+  impl_->orderMismatch = false;
+  if (options.order == CaptureOrder::Strict && impl_->tesStorageBlocks < 3) {
+    error = "the GL implementation (" + renderer_ + ") offers " + std::to_string(impl_->tesStorageBlocks) +
+            " storage blocks to tessellation evaluation shaders; the strict-order capture needs 3";
+    return false;
+  }
   // Group by domain and spacing: one upload of factors and one program per pass.
   std::map<std::pair<int, int>, std::vector<int>> groups;
   for (size_t i = 0; i < patches.size(); ++i)

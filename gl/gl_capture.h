@@ -29,18 +29,41 @@ struct Patch {
 // What the oracle gives back for one patch, in the batch output format's terms.
 //   points:  the domain points, 2 words (u bits, v bits) per point, in the order the tessellator emits them
 //            (observed: a point_mode draw captures one vertex per domain point, in order).
-//   indices: TriangleCw/Ccw and isoline Line: the primitive list (observed: vertex ids numbered by the TES invocation
-//            order, cross-checked against the point array, see docs/oracle.md); Point: 0..P-1; quad/tri Line:
-//            (i, i+1) for consecutive points (D3D's "points joined in generation order"; GL has no such topology,
-//            so it is derived from the observed point array, not observed).
+//   indices: CaptureOrder::Strict: TriangleCw/Ccw and isoline Line: the primitive list (observed: vertex ids numbered
+//            by the TES invocation order, cross-checked against the point array, see docs/oracle.md); Point: 0..P-1;
+//            quad/tri Line: (i, i+1) for consecutive points (D3D's "points joined in generation order"; GL has no
+//            such topology, so it is derived from the observed point array, not observed).
+//            CaptureOrder::Free: TriangleCw/Ccw and isoline Line: each primitive vertex's index in the point array
+//            found by its coordinates, where that is unambiguous (records::indicesByCoordinates), else empty; Point:
+//            0..P-1; quad/tri Line: empty (the generation order is not observable without an order assumption).
 //   primitives: the observed primitives as coordinates, (u,v) bits per vertex, vertices per primitive = 3 for
 //            triangles, 2 for isoline lines (empty for Point and quad/tri Line). Independent of the vertex ids.
+//            Strict: in the driver's primitive order; Free: grouped by patch, in the order the driver wrote them.
 struct Result {
   std::vector<uint32_t> points;
   std::vector<int32_t> indices;
   std::vector<uint32_t> primitives;
   int verticesPerPrimitive = 1;
   int pointCount() const { return static_cast<int>(points.size() / 2); }
+};
+
+// How run() relates the captured records to patches and points.
+enum class CaptureOrder : uint8_t {
+  // The reference's order (llvmpipe): records in gl_PrimitiveID order, the TES run once per point in point_mode
+  // order, vertex ids observed and cross-checked (every check of docs/oracle.md). A driver that emits in its own
+  // order fails the run (GlOracle::orderMismatch()). The oracle tests need it (index arrays as observed).
+  Strict,
+  // Any driver: records grouped by patch id whatever their order (a patch id outside the draw is still an error),
+  // primitives kept as coordinates, no vertex ids and no point matching (what tests/tools/nvidia_compare does).
+  Free,
+};
+
+struct RunOptions {
+  CaptureOrder order = CaptureOrder::Strict;
+  // Test hook, 0 = off: each draw's records are permuted (seeded by this and the draw's number) and each triangle
+  // rotated to another first vertex before they are grouped, as a driver with its own order would emit them
+  // (records::permute). Free gives the same multisets; Strict fails with orderMismatch().
+  uint64_t permuteSeed = 0;
 };
 
 // Headless OpenGL 4.5 core context (EGL device platform, else surfaceless Mesa) with the programs and buffers the
@@ -62,12 +85,21 @@ public:
   bool isLlvmpipe() const { return renderer_.find("llvmpipe") != std::string::npos; }
 
   // Tessellates every patch; results[i] belongs to patches[i]. Returns false and sets 'error' if the driver did
-  // something the harness cannot trust (GL error, transform feedback overflow, a vertex id that does not match
-  // the observed point array, ...). Patches are grouped per program and drawn many per draw call.
-  bool run(const std::vector<Patch>& patches, std::vector<Result>& results, std::string& error);
+  // something the harness cannot trust (GL error, transform feedback overflow, a record naming a patch outside its
+  // draw, more points than the bound; Strict also: a vertex id that does not match the observed point array, ...).
+  // Patches are grouped per program and drawn many per draw call. options.order: see CaptureOrder (default Strict).
+  bool run(const std::vector<Patch>& patches, std::vector<Result>& results, std::string& error,
+           const RunOptions& options = {});
+
+  // True when the last run() failed because the driver does not emit in the reference order (Strict only: records
+  // out of patch order, the TES not once per point in point order, a vertex id that does not match its point).
+  bool orderMismatch() const;
 
   // Statistics of the last run().
   int drawCalls() const;
+  // Domain points per draw (by pointBound): 60,000 on Mesa's software renderers (llvmpipe numbers a draw's vertices
+  // with 16 bits), 200,000 on other drivers (as tests/tools/nvidia_compare on NVIDIA).
+  int drawPointBudget() const;
 
   struct Impl;
 
