@@ -42,6 +42,9 @@ struct CapturedPatch {
   int64_t patch = -1;
   int verticesPerPrimitive = 0;         // 1 points, 2 segments, 3 triangles; 0 when the patch has no primitives
   std::vector<CapturedVertex> vertices; // primitive after primitive
+  // The capture's own point numbering where it has one (hex blocks: vertices[i] is point indices[i] of the block);
+  // empty for CSV and point-only blocks. Only used when indices.size() == vertices.size().
+  std::vector<int32_t> indices;
   int line = 0;                         // line of the patch's first row / header in the capture
   int primitives() const { return verticesPerPrimitive ? int(vertices.size()) / verticesPerPrimitive : 0; }
 };
