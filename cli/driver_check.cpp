@@ -3,6 +3,7 @@
 // captures through the same comparison as `fftess compare` (compare/compare.h).
 #include "common.h"
 #include "compare_report.h"
+#include "compare_svg.h"
 
 #include <CLI/CLI.hpp>
 
@@ -32,6 +33,7 @@ CLI::App* addDriverCheck(CLI::App& app, DriverCheckArgs& a) {
   sub->add_flag("--flush-denormals", a.flushDenormals, "Reference flushes denormal factors (as llvmpipe and GPUs do)");
   sub->add_flag("--json", a.json, "JSON report on stdout");
   sub->add_option("--show", a.show, "Differing patches listed in full (default 20)");
+  sub->add_option("--svg", a.svg, "SVG of the first differing patches: reference and capture over each other");
   sub->footer(
       "Example:\n  fftess driver-check --random 2000 --seed 7\n  fftess driver-check docs/examples/compare_port.batch\n"
       "Exit status: 0 same, 1 differs, 2 bad usage or input, 3 no GL driver or internal error.");
@@ -117,15 +119,17 @@ int runDriverCheck(const DriverCheckArgs& a) {
     for (const oracle::Patch& g : oracle::generatePatches(a.random, a.seed, false)) items.push_back(Item{fromGl(g), 0});
     source = "random(seed " + std::to_string(a.seed) + ")";
   }
+  refuseSameFiles({{"--svg", a.svg}}, {{"PATCHES", a.patches}});
+  CompareOptions opt;
+  opt.strictOrder = a.strictOrder;
+  opt.emulator.flushDenormals = a.flushDenormals;
+  CompareSvg svg(a.svg, opt);
   std::string error;
   auto gl = oracle::GlOracle::create(error, a.hardware);
   if (!gl) {
     std::fprintf(stderr, "fftess: error: driver-check: no OpenGL 4.5 context: %s\n", error.c_str());
     return kExitInternal;
   }
-  CompareOptions opt;
-  opt.strictOrder = a.strictOrder;
-  opt.emulator.flushDenormals = a.flushDenormals;
   CompareReporter reporter(a.json, a.show, a.strictOrder, source);
   Tessellator tess;
   constexpr size_t kChunk = 4096; // patches per capture round: bounded memory for any count
@@ -142,9 +146,12 @@ int runDriverCheck(const DriverCheckArgs& a) {
     }
     for (size_t i = begin; i < end; ++i) {
       const CapturedPatch c = toCapture(results[i - begin], int64_t(i));
-      reporter.add(int64_t(i), items[i].line, comparePatch(items[i].patch, &c, opt, tess));
+      const PatchComparison cmp = comparePatch(items[i].patch, &c, opt, tess);
+      reporter.add(int64_t(i), items[i].line, cmp);
+      svg.add(int64_t(i), items[i].line, items[i].patch, &c, cmp);
     }
   }
+  svg.commit("fftess driver-check on " + gl->renderer() + ": " + source, reporter.summary());
   reporter.finish("gl", "driver: " + gl->renderer() + " (" + gl->version() + "), " + std::to_string(items.size()) +
                             " patches from " + source + "\n");
   return reporter.summary().differing ? kExitFindings : kExitClean;
