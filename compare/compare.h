@@ -12,11 +12,13 @@
 //   * default, order-insensitive: the multisets of points (point lists), of segments (unordered vertex pairs) or of
 //     triangles (each rotated so its smallest vertex comes first: the winding is kept, the first vertex is not) are
 //     equal, every coordinate compared as IEEE bits;
-//   * strictOrder: the same primitives in the same order with the same first vertex (what llvmpipe gives).
+//   * strictOrder: the same primitives in the same order with the same first vertex (what llvmpipe gives); the same
+//     primitives in the same order, some starting at another vertex, are Rotated.
 // A capture that is a point list (one vertex per primitive) is compared with the reference's point array whatever
 // the patch's topology.
 //
-// A differing patch gets one DifferenceKind; capture points that the reference does not have get their nearest
+// A differing patch gets one DifferenceKind and the primitives only in the reference and only in the capture (with
+// their indices); capture points that the reference does not have get their nearest
 // reference point, the difference in 16.16 units and the step of the edge's fixed-point computation that explains
 // them (the words of `fftess explain`); and the patch is re-computed under each typical port bug (PortBug) to name
 // the ones that reproduce the capture. Findings only: nothing here decides an exit status.

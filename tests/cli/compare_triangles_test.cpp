@@ -75,6 +75,20 @@ TEST_CASE("compare: a port with its own triangulation lists the missing and extr
   CHECK(doc["listed"][0]["points"] == json::array()); // the points agree
 }
 
+TEST_CASE("compare: the triangulation example of docs/compare.md lists 16 triangles only in each side", "[cli]") {
+  const auto r = run({"compare", clitest::source("docs/examples/compare_triangulation.batch"),
+                      clitest::source("docs/examples/compare_triangulation.csv")});
+  CHECK(r.status == 1);
+  CHECK(r.out.find("triangulation_differs: 32 reference primitives, 32 in the capture\n"
+                   "  16 triangles only in the reference (the first 8):\n"
+                   "    primitive 0, reference indices 0 1 16: (0, 1) (0, 0.75) (0.25, 0.75); 16.16: (0, 65536) "
+                   "(0, 49152) (16384, 49152)\n") != std::string::npos);
+  CHECK(r.out.find("  16 triangles only in the capture (the first 8):\n"
+                   "    primitive 4, reference indices 2 17 16: (0, 0.5) (0.25, 0.5) (0.25, 0.75); 16.16: (0, 32768) "
+                   "(16384, 32768) (16384, 49152)\n") != std::string::npos);
+  CHECK(r.out.find("summary: 1 patches, 0 same, 1 differ (triangulation_differs 1)") != std::string::npos);
+}
+
 TEST_CASE("compare: triangles starting at another vertex are rotated in strict order, same by default", "[cli]") {
   const std::string batch = writeTmp("q1r.batch", "quad integer triangle_cw hw 1 1 1 1 1 1\n");
   const std::string cap = writeTmp("q1r.out", "patch 0 points 4 indices 6\n00000000 00000000\n3f800000 00000000\n"
