@@ -10,24 +10,14 @@
 #include "base/bits.h"
 #include "tessellator/batch.h"
 #include "compare/compare.h"
+#include "compare_test_util.h"
 
 using namespace fftess;
 
 namespace {
 
-Patch patchOf(const char* line) {
-  Patch p;
-  BatchError e;
-  REQUIRE(parseBatchLine(line, p, e));
-  return p;
-}
-
-PatchComparison run(const Patch& p, const CapturedPatch* c, bool strict = false) {
-  Tessellator t;
-  CompareOptions o;
-  o.strictOrder = strict;
-  return comparePatch(p, c, o, t);
-}
+using comparetest::patchOf;
+using comparetest::run;
 
 bool named(const PatchComparison& c, PortBug b) { return std::find(c.bugs.begin(), c.bugs.end(), b) != c.bugs.end(); }
 

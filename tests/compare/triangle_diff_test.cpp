@@ -10,26 +10,15 @@
 
 #include "base/bits.h"
 #include "compare/compare.h"
+#include "compare_test_util.h"
 #include "tessellator/batch.h"
 
 using namespace fftess;
 
 namespace {
 
-Patch patchOf(const char* line) {
-  Patch p;
-  BatchError e;
-  REQUIRE(parseBatchLine(line, p, e));
-  return p;
-}
-
-PatchComparison run(const Patch& p, const CapturedPatch* c, bool strict = false, int details = 8) {
-  Tessellator t;
-  CompareOptions o;
-  o.strictOrder = strict;
-  o.maxPrimitiveDetails = details;
-  return comparePatch(p, c, o, t);
-}
+using comparetest::patchOf;
+using comparetest::run;
 
 CapturedPatch readHex(const std::string& text) {
   std::istringstream in(text);
@@ -98,25 +87,23 @@ TEST_CASE("triangle diff: a factor-1 quad split along the other diagonal lists b
   CHECK(r.onlyInCaptureCount == 2);
   REQUIRE(r.onlyInReference.size() == 2);
   REQUIRE(r.onlyInCapture.size() == 2);
-  const auto& r0 = r.onlyInReference[0];
-  const auto& r1 = r.onlyInReference[1];
-  CHECK(r0.primitive == 0);
-  CHECK(r0.vertices == Tri{at(0, 0), at(1, 0), at(0, 1)});
-  CHECK(r0.indices == std::vector<int32_t>{0, 1, 3});
-  CHECK(r0.referenceIndices == std::vector<int32_t>{0, 1, 3});
-  CHECK(r1.primitive == 1);
-  CHECK(r1.vertices == Tri{at(1, 0), at(1, 1), at(0, 1)});
-  CHECK(r1.indices == std::vector<int32_t>{1, 2, 3});
-  const auto& c0 = r.onlyInCapture[0];
-  const auto& c1 = r.onlyInCapture[1];
-  CHECK(c0.primitive == 0);
-  CHECK(c0.vertices == Tri{at(0, 0), at(1, 0), at(1, 1)});
-  CHECK(c0.indices == std::vector<int32_t>{2, 3, 0});
-  CHECK(c0.referenceIndices == std::vector<int32_t>{0, 1, 2});
-  CHECK(c1.primitive == 1);
-  CHECK(c1.vertices == Tri{at(0, 0), at(1, 1), at(0, 1)});
-  CHECK(c1.indices == std::vector<int32_t>{2, 0, 1});
-  CHECK(c1.referenceIndices == std::vector<int32_t>{0, 2, 3});
+  struct Expected {
+    const PrimitiveDifference& got;
+    int primitive;
+    Tri vertices;
+    std::vector<int32_t> indices, referenceIndices;
+  };
+  for (const Expected& e : {
+           Expected{r.onlyInReference[0], 0, {at(0, 0), at(1, 0), at(0, 1)}, {0, 1, 3}, {0, 1, 3}},
+           Expected{r.onlyInReference[1], 1, {at(1, 0), at(1, 1), at(0, 1)}, {1, 2, 3}, {1, 2, 3}},
+           Expected{r.onlyInCapture[0], 0, {at(0, 0), at(1, 0), at(1, 1)}, {2, 3, 0}, {0, 1, 2}},
+           Expected{r.onlyInCapture[1], 1, {at(0, 0), at(1, 1), at(0, 1)}, {2, 0, 1}, {0, 2, 3}},
+       }) {
+    CHECK(e.got.primitive == e.primitive);
+    CHECK(e.got.vertices == e.vertices);
+    CHECK(e.got.indices == e.indices);
+    CHECK(e.got.referenceIndices == e.referenceIndices);
+  }
   CHECK(r.bugs.empty());
 }
 
