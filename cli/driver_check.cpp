@@ -73,6 +73,7 @@ CapturedPatch toCapture(const oracle::Result& r, int64_t index) {
   const std::vector<uint32_t>& words = prims ? r.primitives : r.points;
   for (size_t i = 0; i + 1 < words.size(); i += 2) c.vertices.push_back(CapturedVertex{words[i], words[i + 1]});
   c.verticesPerPrimitive = c.vertices.empty() ? 0 : prims ? r.verticesPerPrimitive : 1;
+  if (prims && r.indices.size() == c.vertices.size()) c.indices = r.indices; // the driver's point numbering
   return c;
 }
 
