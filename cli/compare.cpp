@@ -2,6 +2,7 @@
 // (compare/compare.h does the comparing; this file reads the files, prints and picks the exit status).
 #include "common.h"
 #include "compare_report.h"
+#include "compare_svg.h"
 
 #include <CLI/CLI.hpp>
 
@@ -12,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -74,6 +76,66 @@ std::string placeOf(const std::string& batch, bool generated, int line) {
   return batch + (generated ? ", line " : ":") + std::to_string(line);
 }
 
+// A coordinate in 16.16 units (u * 65536: exact, a power-of-two scale), as the shortest decimal of that float.
+std::string units16(uint32_t bits) {
+  const float f = floatOf(bits), s = f * 65536.0f;
+  return std::isinf(s) && !std::isinf(f) ? formatNumber(double(f) * 65536.0) : formatFloat(s);
+}
+
+json primitiveJson(const PrimitiveDifference& d) {
+  json vs = json::array();
+  for (CapturedVertex v : d.vertices) {
+    json j = vertexJson(v);
+    j["u_16_16"] = double(floatOf(v.u)) * 65536.0;
+    j["v_16_16"] = double(floatOf(v.v)) * 65536.0;
+    vs.push_back(j);
+  }
+  return json{{"primitive", d.primitive},
+              {"vertices", vs},
+              {"indices", d.indices},
+              {"reference_indices", d.referenceIndices}};
+}
+
+// "triangles" (or "segments"): the primitives only in one side, counts and the first of each.
+json primitivesJson(const PatchComparison& c) {
+  json ref = json::array(), cap = json::array();
+  for (const auto& d : c.onlyInReference) ref.push_back(primitiveJson(d));
+  for (const auto& d : c.onlyInCapture) cap.push_back(primitiveJson(d));
+  return json{{"only_in_reference_count", c.onlyInReferenceCount},
+              {"only_in_capture_count", c.onlyInCaptureCount},
+              {"only_in_reference", ref},
+              {"only_in_capture", cap}};
+}
+
+std::string indexList(const std::vector<int32_t>& v) {
+  std::string s;
+  for (int32_t i : v) s += (s.empty() ? "" : " ") + (i < 0 ? std::string("-") : std::to_string(i));
+  return s;
+}
+
+// Text: the listed primitives of one side, one per line: position, indices, coordinates as floats and in 16.16.
+void describePrimitives(std::string& o, const char* side, int count, const std::vector<PrimitiveDifference>& list,
+                        int arity) {
+  if (count == 0) return;
+  o += "  " + std::to_string(count) + (arity == 3 ? " triangles" : " segments") + " only in " + side +
+       (int(list.size()) < count ? " (the first " + std::to_string(list.size()) + ")" : "") + ":\n";
+  for (const auto& d : list) {
+    std::string xy, fixed;
+    for (CapturedVertex v : d.vertices) {
+      xy += " " + vertexText(v);
+      fixed += " (" + units16(v.u) + ", " + units16(v.v) + ")";
+    }
+    o += "    primitive " + std::to_string(d.primitive);
+    if (!d.indices.empty() && d.indices != d.referenceIndices) o += ", indices " + indexList(d.indices);
+    o += ", reference indices " + indexList(d.referenceIndices) + ":" + xy + "; 16.16:" + fixed + "\n";
+  }
+}
+
+bool listsPrimitivesInText(DifferenceKind k) {
+  return k == DifferenceKind::WindingOnly || k == DifferenceKind::Multiplicity ||
+         k == DifferenceKind::TriangulationDiffers || k == DifferenceKind::PrimitivesDiffer;
+}
+
 void describePatch(std::string& o, ordered_json& list, int64_t index, const std::string& place, const Patch& patch,
                    int line, const PatchComparison& c, bool asJson) {
   if (asJson) {
@@ -101,6 +163,8 @@ void describePatch(std::string& o, ordered_json& list, int64_t index, const std:
                          {"step", d.step},
                          {"detail", d.detail}});
     j["points"] = pts;
+    j["rotated_primitives"] = c.rotatedPrimitives;
+    if (c.verticesPerPrimitive >= 2) j[c.verticesPerPrimitive == 3 ? "triangles" : "segments"] = primitivesJson(c);
     list.push_back(j);
     return;
   }
@@ -111,7 +175,13 @@ void describePatch(std::string& o, ordered_json& list, int64_t index, const std:
     o += "; " + std::to_string(c.missingPoints) + " reference points missing, " + std::to_string(c.extraPoints) +
          " points the reference lacks";
   if (c.kind == DifferenceKind::WindingOnly) o += "; " + std::to_string(c.flippedTriangles) + " triangles flipped";
+  if (c.kind == DifferenceKind::Rotated)
+    o += "; " + std::to_string(c.rotatedPrimitives) + " start at another vertex";
   o += "\n  batch line: " + formatBatchLine(patch) + "\n";
+  if (listsPrimitivesInText(c.kind)) {
+    describePrimitives(o, "the reference", c.onlyInReferenceCount, c.onlyInReference, c.verticesPerPrimitive);
+    describePrimitives(o, "the capture", c.onlyInCaptureCount, c.onlyInCapture, c.verticesPerPrimitive);
+  }
   for (const auto& d : c.points) {
     o += "  " + vertexText(d.got) + ": nearest reference point " + vertexText(d.nearest) + ", du " +
          formatNumber(d.du) + " dv " + formatNumber(d.dv) + " (16.16 units)\n";
@@ -202,6 +272,7 @@ CLI::App* addCompare(CLI::App& app, CompareArgs& a) {
   sub->add_flag("--flush-denormals", a.flushDenormals, "Reference flushes denormal factors (as llvmpipe and GPUs do)");
   sub->add_option("--show", a.show, "Differing patches listed in full (default 20; all are counted)");
   sub->add_option("--details", a.details, "Differing points explained per patch (default 4)");
+  sub->add_option("--svg", a.svg, "SVG of the first differing patches: reference and capture over each other");
   sub->footer("Example:\n  fftess compare docs/examples/compare_port.batch docs/examples/compare_port_bug.csv\n"
               "Exit status: 0 same, 1 differs, 2 bad usage or input (FILE:LINE), 3 internal error.");
   return sub;
@@ -209,6 +280,7 @@ CLI::App* addCompare(CLI::App& app, CompareArgs& a) {
 
 int runCompare(const CompareArgs& a) {
   if (a.patches == "-" && a.capture == "-") throw UsageError("PATCHES and CAPTURE cannot both be stdin");
+  refuseSameFiles({{"--svg", a.svg}}, {{"PATCHES", a.patches}, {"CAPTURE", a.capture}});
   std::unique_ptr<std::ifstream> pf, cf;
   std::istream& pin = openInput(a.patches, pf, "PATCHES");
   std::istream& cin = openInput(a.capture, cf, "CAPTURE");
@@ -221,6 +293,7 @@ int runCompare(const CompareArgs& a) {
   opt.strictOrder = a.strictOrder;
   opt.emulator.flushDenormals = a.flushDenormals;
   opt.maxPointDetails = a.details;
+  CompareSvg svg(a.svg, opt);
   Tessellator tess;
   CompareReporter reporter(a.json, a.show, a.strictOrder, a.patches);
   CapturedPatch got;
@@ -238,6 +311,7 @@ int runCompare(const CompareArgs& a) {
         throw CaptureError(a.capture + ":" + std::to_string(got.line) + ": " + e.what());
       }
       reporter.add(index, line, p, c);
+      svg.add(index, line, p, present ? &got : nullptr, c);
       if (present) haveGot = capture.next(got);
     }
     if (haveGot)
@@ -247,6 +321,7 @@ int runCompare(const CompareArgs& a) {
   } catch (const CaptureError& e) {
     throw UsageError(e.what());
   }
+  svg.commit("fftess compare " + a.patches + " " + a.capture, reporter.summary());
   reporter.finish(capture.format() == CaptureFormat::Hex ? "hex" : "csv", "");
   return reporter.summary().differing ? kExitFindings : kExitClean;
 }

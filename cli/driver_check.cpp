@@ -5,6 +5,7 @@
 #include "compare_report.h"
 #include "random_batch.h"
 #include "port_bug.h"
+#include "compare_svg.h"
 
 #include <CLI/CLI.hpp>
 
@@ -44,6 +45,7 @@ CLI::App* addDriverCheck(CLI::App& app, DriverCheckArgs& a) {
                   "Test: permute the driver's captured records (seeded, nonzero) and rotate its triangles before they "
                   "are grouped, as a driver with its own order would emit them")
       ->check(CLI::Range(uint64_t(1), UINT64_MAX));
+  sub->add_option("--svg", a.svg, "SVG of the first differing patches: reference and capture over each other");
   sub->footer(
       "Example:\n  fftess driver-check --random 2000 --seed 7\n  fftess driver-check docs/examples/compare_port.batch\n"
       "Exit status: 0 same, 1 differs, 2 bad usage or input, 3 no GL driver, internal error, or --strict-order on a "
@@ -66,6 +68,7 @@ CapturedPatch toCapture(const oracle::Result& r, int64_t index) {
   const std::vector<uint32_t>& words = prims ? r.primitives : r.points;
   for (size_t i = 0; i + 1 < words.size(); i += 2) c.vertices.push_back(CapturedVertex{words[i], words[i + 1]});
   c.verticesPerPrimitive = c.vertices.empty() ? 0 : prims ? r.verticesPerPrimitive : 1;
+  if (prims && r.indices.size() == c.vertices.size()) c.indices = r.indices; // the driver's point numbering
   return c;
 }
 
@@ -88,7 +91,7 @@ void writeBatch(const DriverCheckArgs& a, const std::vector<Item>& items) {
 
 int runDriverCheck(const DriverCheckArgs& a) {
   if (a.writeBatch == "-") throw UsageError("--write-batch '-': stdout carries the report; give a file");
-  refuseSameFiles({{"--write-batch", a.writeBatch}}, {{"PATCHES", a.patches}});
+  refuseSameFiles({{"--write-batch", a.writeBatch}, {"--svg", a.svg}}, {{"PATCHES", a.patches}});
   const SimulatedPortBug simulated(a.portBug);
   std::vector<Item> items;
   std::string source;
@@ -126,6 +129,10 @@ int runDriverCheck(const DriverCheckArgs& a) {
                     [&](int64_t i, const Patch& p) { items.push_back(Item{p, genLineOf(i)}); });
     source = genCommand(GenSpec{a.random, a.seed, false});
   }
+  CompareOptions opt;
+  opt.strictOrder = a.strictOrder;
+  opt.emulator.flushDenormals = a.flushDenormals;
+  CompareSvg svg(a.svg, opt);
   if (!a.writeBatch.empty()) writeBatch(a, items);
   std::string error;
   auto gl = oracle::GlOracle::create(error, a.hardware);
@@ -139,9 +146,6 @@ int runDriverCheck(const DriverCheckArgs& a) {
   oracle::RunOptions run;
   run.order = a.strictOrder ? oracle::CaptureOrder::Strict : oracle::CaptureOrder::Free;
   run.permuteSeed = a.permuteCapture;
-  CompareOptions opt;
-  opt.strictOrder = a.strictOrder;
-  opt.emulator.flushDenormals = a.flushDenormals;
   CompareReporter reporter(a.json, a.show, a.strictOrder, source, "driver-check");
   if (a.patches.empty()) reporter.setGenerated();
   if (simulated.active())
@@ -167,9 +171,12 @@ int runDriverCheck(const DriverCheckArgs& a) {
     for (size_t i = begin; i < end; ++i) {
       CapturedPatch c = toCapture(results[i - begin], int64_t(i));
       simulated.output(items[i].patch, c);
-      reporter.add(int64_t(i), items[i].line, items[i].patch, comparePatch(items[i].patch, &c, opt, tess));
+      const PatchComparison cmp = comparePatch(items[i].patch, &c, opt, tess);
+      reporter.add(int64_t(i), items[i].line, items[i].patch, cmp);
+      svg.add(int64_t(i), items[i].line, items[i].patch, &c, cmp);
     }
   }
+  svg.commit("fftess driver-check on " + gl->renderer() + ": " + source, reporter.summary());
   reporter.finish("gl", "driver: " + gl->renderer() + " (" + gl->version() + "), " + std::to_string(items.size()) +
                             " patches from " + source + "\n" + simulated.header());
   return reporter.summary().differing ? kExitFindings : kExitClean;

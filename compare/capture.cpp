@@ -119,6 +119,7 @@ bool CaptureReader::nextHex(CapturedPatch& out) {
   out.patch = n;
   out.line = headerLine;
   out.vertices.clear();
+  out.indices.clear();
   out.verticesPerPrimitive = indices ? 0 : (points ? 1 : 0);
   if (!indices) out.vertices = pts;
   int64_t read = 0;
@@ -134,6 +135,7 @@ bool CaptureReader::nextHex(CapturedPatch& out) {
       if (!parseCount(s, i) || i >= points)
         fail(lineNo_, "index '" + s + "' is not a point of the patch (0.." + std::to_string(points - 1) + ")");
       out.vertices.push_back(pts[static_cast<size_t>(i)]);
+      out.indices.push_back(int32_t(i));
     }
     read += int64_t(t.size());
   }
@@ -207,6 +209,7 @@ bool CaptureReader::nextCsv(CapturedPatch& out) {
   out.patch = lastPatch_;
   out.verticesPerPrimitive = arity;
   out.vertices.clear();
+  out.indices.clear();
   // Each primitive needs vertices 0..arity-1 exactly once.
   for (size_t i = 0; i < rows_.size(); i += size_t(arity)) {
     for (int k = 0; k < arity; ++k) {

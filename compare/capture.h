@@ -2,7 +2,8 @@
 //
 // Two formats (docs/compare.md):
 //   * hex blocks, exactly as `fftess tessellate --format hex` writes them and as shared/golden/*.out hold them:
-//       patch N points P indices I / P lines "UUUUUUUU VVVVVVVV" / the I indices, 1, 2 or 3 per line;
+//       patch N points P indices I / P lines "UUUUUUUU VVVVVVVV" / the I indices, 1, 2 or 3 per line (kept as
+//       CapturedPatch::indices: the capture's own numbering, for the report);
 //   * CSV, one vertex per row: patch,primitive,vertex,u,v[,w]
 //       patch: 0-based patch number in the batch file; primitive: 0-based within the patch; vertex: 0-based within
 //       the primitive (0..2 triangles, 0..1 segments, 0 points); u, v (and w, read and ignored): decimal floats or
@@ -42,6 +43,9 @@ struct CapturedPatch {
   int64_t patch = -1;
   int verticesPerPrimitive = 0;         // 1 points, 2 segments, 3 triangles; 0 when the patch has no primitives
   std::vector<CapturedVertex> vertices; // primitive after primitive
+  // The capture's own point numbering where it has one (hex blocks: vertices[i] is point indices[i] of the block);
+  // empty for CSV and point-only blocks. Only used when indices.size() == vertices.size().
+  std::vector<int32_t> indices;
   int line = 0;                         // line of the patch's first row / header in the capture
   int primitives() const { return verticesPerPrimitive ? int(vertices.size()) / verticesPerPrimitive : 0; }
 };

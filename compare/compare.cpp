@@ -28,16 +28,8 @@ std::vector<Prim> primitives(const Verts& v, int arity, bool sortAll) {
   if (arity <= 0) return out;
   out.reserve(v.size() / size_t(arity));
   for (size_t i = 0; i + size_t(arity) <= v.size(); i += size_t(arity)) {
-    Prim p{0, 0, 0};
-    for (int k = 0; k < arity; ++k) p[size_t(k)] = key(v[i + size_t(k)]);
-    if (arity == 2 || sortAll) {
-      std::sort(p.begin(), p.begin() + arity);
-    } else if (arity == 3) {
-      // The lexicographically smallest rotation, not "the smallest vertex first": with two coincident vertices
-      // (A, A, B), the rotations (A, A, B) and (A, B, A) both start at A and are one triangle (a driver that starts
-      // triangles at its own vertex gives either; docs/oracle.md "Real hardware").
-      p = std::min({p, Prim{p[1], p[2], p[0]}, Prim{p[2], p[0], p[1]}});
-    }
+    Prim p = primitiveKey(&v[i], arity);
+    if (sortAll) std::sort(p.begin(), p.begin() + arity);
     out.push_back(p);
   }
   std::sort(out.begin(), out.end());
@@ -329,8 +321,11 @@ PatchComparison comparePatch(const Patch& patch, const CapturedPatch* got, const
   } else {
     const auto pr = primitives(ref, arity, false), pc = primitives(cap, arity, false);
     if (pr == pc) {
-      c.kind = options.strictOrder ? DifferenceKind::OrderDiffers : DifferenceKind::Same;
-      if (c.kind == DifferenceKind::Same) return c;
+      if (!options.strictOrder) return c;
+      c.kind = sameUpToRotation(ref, cap, arity, c.rotatedPrimitives) ? DifferenceKind::Rotated
+                                                                       : DifferenceKind::OrderDiffers;
+      if (c.kind == DifferenceKind::OrderDiffers) c.rotatedPrimitives = 0;
+      return c;
     } else if (distinctPoints(ref) != distinctPoints(cap)) {
       c.kind = DifferenceKind::PointsDiffer;
     } else if (arity == 1) {
@@ -342,10 +337,17 @@ PatchComparison comparePatch(const Patch& patch, const CapturedPatch* got, const
       auto ur = pr, uc = pc;
       ur.erase(std::unique(ur.begin(), ur.end()), ur.end());
       uc.erase(std::unique(uc.begin(), uc.end()), uc.end());
-      c.kind = ur == uc ? DifferenceKind::Multiplicity : DifferenceKind::PrimitivesDiffer;
+      c.kind = ur == uc         ? DifferenceKind::Multiplicity
+               : arity == 3     ? DifferenceKind::TriangulationDiffers
+                                : DifferenceKind::PrimitivesDiffer;
     }
   }
-  if (options.recognise && c.kind != DifferenceKind::OrderDiffers)
+  if (arity >= 2) { // before recognise(), which re-uses tess
+    Verts refPoints;
+    outputOf(tess, 1, refPoints);
+    primitiveDifferences(ref, tess.indices(), refPoints, got, arity, options.maxPrimitiveDetails, c);
+  }
+  if (options.recognise && c.kind != DifferenceKind::OrderDiffers && c.kind != DifferenceKind::Rotated)
     recognise(patch, options.emulator, ref, cap, arity, tess, c);
   if (c.kind == DifferenceKind::PointsDiffer) // after recognise: a whole-patch bug explains the points it moves
     pointDetails(patch, options.emulator, ref, cap, options.maxPointDetails, c);

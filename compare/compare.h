@@ -12,11 +12,13 @@
 //   * default, order-insensitive: the multisets of points (point lists), of segments (unordered vertex pairs) or of
 //     triangles (each in its lexicographically smallest rotation: the winding is kept, the first vertex is not) are
 //     equal, every coordinate compared as IEEE bits;
-//   * strictOrder: the same primitives in the same order with the same first vertex (what llvmpipe gives).
+//   * strictOrder: the same primitives in the same order with the same first vertex (what llvmpipe gives); the same
+//     primitives in the same order, some starting at another vertex, are Rotated.
 // A capture that is a point list (one vertex per primitive) is compared with the reference's point array whatever
 // the patch's topology.
 //
-// A differing patch gets one DifferenceKind; capture points that the reference does not have get their nearest
+// A differing patch gets one DifferenceKind and the primitives only in the reference and only in the capture (with
+// their indices); capture points that the reference does not have get their nearest
 // reference point, the difference in 16.16 units and the step of the edge's fixed-point computation that explains
 // them (the words of `fftess explain`); and the patch is re-computed under each typical port bug (PortBug) to name
 // the ones that reproduce the capture. Findings only: nothing here decides an exit status.
@@ -129,10 +131,24 @@ struct PointDifference {
   std::string detail;     // the two values and why, in a sentence
 };
 
+// One primitive (triangle or segment) that only one side has: the multiset difference of the primitives as compared
+// (triangles rotated to their smallest vertex, segments unordered). A primitive that one side has twice and the other
+// once is listed once.
+struct PrimitiveDifference {
+  int primitive = 0;                    // its position in its side's output (0-based)
+  std::vector<CapturedVertex> vertices; // as that side emitted them (2 or 3)
+  // Its side's point indices: the reference's index buffer; the capture's where it has them (hex blocks), else empty.
+  std::vector<int32_t> indices;
+  // Each vertex's index in the reference's point array (tessellate's numbering), -1 where the reference has no such
+  // point. For a reference primitive the same as indices.
+  std::vector<int32_t> referenceIndices;
+};
+
 struct CompareOptions {
   bool strictOrder = false;
   Options emulator{};      // the reference's options (flushDenormals: compare with a llvmpipe-like reference)
   int maxPointDetails = 8; // PointDifference entries per patch (the counts cover all points)
+  int maxPrimitiveDetails = 8; // PrimitiveDifference entries per side and patch (the counts cover all primitives)
   bool recognise = true;   // re-run the patch under each PortBug
 };
 
@@ -144,6 +160,13 @@ struct PatchComparison {
   int extraPoints = 0;                 // distinct capture points the reference lacks
   int flippedTriangles = 0;            // WindingOnly: triangles whose winding differs
   std::vector<PointDifference> points; // at most maxPointDetails
+  int rotatedPrimitives = 0;           // Rotated: primitives that start at another vertex (a segment: reversed)
+  // Primitives only in the reference / only in the capture (all kinds but same, order_differs and rotated, when the
+  // comparison is of primitives, not of a point list): the counts cover all, the lists hold the first
+  // maxPrimitiveDetails of each side in that side's output order. WindingOnly: the flipped ones, both ways round;
+  // Multiplicity: the surplus copies.
+  int onlyInReferenceCount = 0, onlyInCaptureCount = 0;
+  std::vector<PrimitiveDifference> onlyInReference, onlyInCapture;
   std::vector<PortBug> bugs; // the port bugs that reproduce the capture exactly (or within 2^-20 per coordinate)
   // Parallel to bugs: the form that reproduces it (portBugVariantName, and ", winding flipped too" for a coordinate
   // bug whose port also flips the triangles); "" for bugs with one form.

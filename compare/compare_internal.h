@@ -1,8 +1,12 @@
-// Internal header of the comparison (compare.cpp, compare_bugs.cpp, compare_bookkeeping.cpp): the axes of a patch
-// as traced edges, the output helpers the bug models share.
+// Internal header of the comparison (compare.cpp, compare_bugs.cpp, compare_bookkeeping.cpp, triangle_diff.cpp): the
+// axes of a patch as traced edges, the output helpers the bug models share, primitives as keys and their differences.
 #pragma once
 
 #include "compare/compare.h"
+
+#include <array>
+#include <cstdint>
+#include <vector>
 #include "tessellator/trace.h"
 
 namespace fftess {
@@ -27,6 +31,20 @@ PatchAxes patchAxes(const Patch& patch, const Options& options);
 const Axis* axisOf(const PatchAxes& a, CapturedVertex r, int c, bool& mirrorV, bool corners = true);
 // The index of the point with these float bits on the axis, or -1.
 int pointOnAxis(const Axis& axis, uint32_t bits);
+// A primitive as a comparable key: a triangle rotated so its smallest vertex comes first (winding kept), a segment's
+// two vertices sorted, unused slots 0 (triangle_diff.cpp).
+using PrimitiveKey = std::array<uint64_t, 3>;
+PrimitiveKey primitiveKey(const CapturedVertex* v, int arity);
+// strictOrder: whether primitive i of cap is primitive i of ref up to its first vertex, for every i (same sizes);
+// 'rotated' counts those that start at another vertex.
+bool sameUpToRotation(const std::vector<CapturedVertex>& ref, const std::vector<CapturedVertex>& cap, int arity,
+                      int& rotated);
+// Fills c's onlyInReference/onlyInCapture lists and counts (arity 2 or 3). ref: the reference's primitives, refIndices
+// its index buffer, refPoints its point array; got: the capture (null: none).
+void primitiveDifferences(const std::vector<CapturedVertex>& ref, const std::vector<int32_t>& refIndices,
+                          const std::vector<CapturedVertex>& refPoints, const CapturedPatch* got, int arity,
+                          int maxDetails, PatchComparison& c);
+
 // Reference vertex r as a port with edge bug b computes it.
 // corners: also re-place the corners an edge reaches by mirroring (else they stay: a port that writes them as
 // constants).

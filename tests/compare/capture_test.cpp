@@ -49,16 +49,23 @@ TEST_CASE("capture: CSV with header, comments, decimal and hex floats, rows in a
   CHECK(p[0].line == 3);
   CHECK(p[1].patch == 2);
   CHECK(p[1].verticesPerPrimitive == 1);
+  CHECK(p[0].indices.empty()); // CSV has no point numbering of its own
 }
 
 TEST_CASE("capture: hex blocks as fftess tessellate --format hex writes them", "[compare][capture]") {
   const auto p = readAll("patch 0 points 3 indices 3\n00000000 3f800000\n00000000 00000000\n3f800000 00000000\n"
-                         "0 1 2\npatch 3 points 0 indices 0\n");
-  REQUIRE(p.size() == 2);
+                         "0 1 2\npatch 3 points 0 indices 0\npatch 4 points 2 indices 2\n00000000 00000000\n"
+                         "3f800000 00000000\n1 0\n");
+  REQUIRE(p.size() == 3);
   CHECK(p[0].verticesPerPrimitive == 3);
   CHECK(p[0].vertices[0].v == 0x3f800000u);
+  CHECK(p[0].indices == std::vector<int32_t>{0, 1, 2});
   CHECK(p[1].patch == 3);
   CHECK(p[1].vertices.empty());
+  CHECK(p[1].indices.empty());
+  // The block's own numbering is kept: vertex i is point indices[i].
+  CHECK(p[2].indices == std::vector<int32_t>{1, 0});
+  CHECK(p[2].vertices[0].u == 0x3f800000u);
 }
 
 TEST_CASE("capture: bad input names file and line", "[compare][capture]") {

@@ -10,24 +10,14 @@
 #include "base/bits.h"
 #include "tessellator/batch.h"
 #include "compare/compare.h"
+#include "compare_test_util.h"
 
 using namespace fftess;
 
 namespace {
 
-Patch patchOf(const char* line) {
-  Patch p;
-  BatchError e;
-  REQUIRE(parseBatchLine(line, p, e));
-  return p;
-}
-
-PatchComparison run(const Patch& p, const CapturedPatch* c, bool strict = false) {
-  Tessellator t;
-  CompareOptions o;
-  o.strictOrder = strict;
-  return comparePatch(p, c, o, t);
-}
+using comparetest::patchOf;
+using comparetest::run;
 
 bool named(const PatchComparison& c, PortBug b) { return std::find(c.bugs.begin(), c.bugs.end(), b) != c.bugs.end(); }
 
@@ -112,13 +102,16 @@ TEST_CASE("compare: flipped winding is winding_only, all flipped is named windin
   CHECK_FALSE(named(r, PortBug::WindingSwapped));
 }
 
-TEST_CASE("compare: rotated triangles match by default and differ with strict order", "[compare]") {
+TEST_CASE("compare: rotated triangles match by default and are rotated with strict order", "[compare]") {
   const Patch p = patchOf("quad integer triangle_cw hw 3 3 3 3 3 3");
   CapturedPatch c = referenceCapture(p, 0, {});
   for (size_t i = 0; i < c.vertices.size(); i += 3)
     std::rotate(c.vertices.begin() + long(i), c.vertices.begin() + long(i) + 1, c.vertices.begin() + long(i) + 3);
   CHECK(run(p, &c).kind == DifferenceKind::Same);
-  CHECK(run(p, &c, true).kind == DifferenceKind::OrderDiffers);
+  const PatchComparison strict = run(p, &c, true);
+  CHECK(strict.kind == DifferenceKind::Rotated);
+  CHECK(strict.rotatedPrimitives == strict.referencePrimitives);
+  CHECK(strict.onlyInReferenceCount + strict.onlyInCaptureCount == 0);
   // Reordered primitives (same first vertices): also only strict order sees it.
   CapturedPatch r = referenceCapture(p, 0, {});
   std::swap_ranges(r.vertices.begin(), r.vertices.begin() + 3, r.vertices.begin() + 3);
@@ -138,7 +131,7 @@ TEST_CASE("compare: a missing patch, a patch culled on either side", "[compare]"
   CHECK(run(culled, nullptr).kind == DifferenceKind::Same);
 }
 
-TEST_CASE("compare: multiplicity and primitives_differ", "[compare]") {
+TEST_CASE("compare: multiplicity and triangulation_differs", "[compare]") {
   const Patch p = patchOf("quad integer point hw 3 3 3 3 3 3");
   CapturedPatch c = referenceCapture(p, 0, {});
   c.vertices.push_back(c.vertices[3]);
@@ -150,7 +143,8 @@ TEST_CASE("compare: multiplicity and primitives_differ", "[compare]") {
   REQUIRE(q.vertices.size() == 6); // (0,1,3) (1,2,3) as corners 0..3
   const CapturedVertex a = q.vertices[0], b = q.vertices[1], cc = q.vertices[4], d = q.vertices[2];
   q.vertices = {a, b, cc, a, cc, d};
-  CHECK(run(t, &q).kind == DifferenceKind::PrimitivesDiffer);
+  CHECK(run(t, &q).kind == DifferenceKind::TriangulationDiffers);
+
 }
 
 TEST_CASE("compare: float division instead of the 16.16 reciprocal is named, with its step", "[compare]") {
