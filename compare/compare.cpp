@@ -29,7 +29,12 @@ std::vector<Prim> primitives(const Verts& v, int arity, bool sortAll) {
   out.reserve(v.size() / size_t(arity));
   for (size_t i = 0; i + size_t(arity) <= v.size(); i += size_t(arity)) {
     Prim p = primitiveKey(&v[i], arity);
-    if (sortAll) std::sort(p.begin(), p.begin() + arity);
+    if (sortAll && arity == 3) { // three compare-and-swaps (std::sort on a runtime-sized prefix of 3 trips GCC 12's
+                                 // -Warray-bounds); a segment's key is already sorted
+      if (p[1] < p[0]) std::swap(p[0], p[1]);
+      if (p[2] < p[1]) std::swap(p[1], p[2]);
+      if (p[1] < p[0]) std::swap(p[0], p[1]);
+    }
     out.push_back(p);
   }
   std::sort(out.begin(), out.end());
