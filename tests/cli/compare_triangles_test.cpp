@@ -44,6 +44,8 @@ TEST_CASE("compare: a port with its own triangulation lists the missing and extr
   const auto r = run({"compare", batch, cap});
   CHECK(r.status == 1);
   CHECK(r.out.find("patch 0 (" + batch + ":1): triangulation_differs: 2 reference primitives, 2 in the capture\n"
+                   "  batch line: quad integer triangle_cw hw 0x3f800000 0x3f800000 0x3f800000 0x3f800000 0x3f800000 "
+                   "0x3f800000\n"
                    "  2 triangles only in the reference:\n"
                    "    primitive 0, reference indices 0 1 3: (0, 0) (1, 0) (0, 1); 16.16: (0, 0) (65536, 0) (0, 65536)\n"
                    "    primitive 1, reference indices 1 2 3: (1, 0) (1, 1) (0, 1); 16.16: (65536, 0) (65536, 65536) "
@@ -80,6 +82,8 @@ TEST_CASE("compare: the triangulation example of docs/compare.md lists 16 triang
                       clitest::source("docs/examples/compare_triangulation.csv")});
   CHECK(r.status == 1);
   CHECK(r.out.find("triangulation_differs: 32 reference primitives, 32 in the capture\n"
+                   "  batch line: quad integer triangle_cw hw 0x40800000 0x40800000 0x40800000 0x40800000 0x40800000 "
+                   "0x40800000\n"
                    "  16 triangles only in the reference (the first 8):\n"
                    "    primitive 0, reference indices 0 1 16: (0, 1) (0, 0.75) (0.25, 0.75); 16.16: (0, 65536) "
                    "(0, 49152) (16384, 49152)\n") != std::string::npos);
