@@ -13,6 +13,9 @@
 #include "gl/gl_capture.h"
 #include "gl/random_patches.h"
 #endif
+#ifdef FFTESS_HAVE_VULKAN
+#include "vk/vk_capture.h"
+#endif
 
 #include <cstring>
 #include <fstream>
@@ -27,7 +30,9 @@ CLI::App* addDriverCheck(CLI::App& app, DriverCheckArgs& a) {
   sub->add_option("--random", a.random, "Seeded random patches (with special factor values) when no batch is given")
       ->check(CLI::Range(1, 10000000));
   sub->add_option("--seed", a.seed, "Seed of --random (default 1)");
-  sub->add_flag("--hardware", a.hardware, "Prefer a GPU's EGL device over Mesa's software one");
+  sub->add_flag("--hardware", a.hardware, "Prefer a GPU (EGL device, Vulkan device) over Mesa's software one");
+  sub->add_option("--api", a.api, "The driver's API: gl (OpenGL 4.5, EGL) or vulkan (VK_EXT_transform_feedback)")
+      ->check(CLI::IsMember({"gl", "vulkan"}));
   sub->add_flag("--strict-order", a.strictOrder, "Same primitives in the same order with the same first vertex");
   sub->add_flag("--flush-denormals", a.flushDenormals, "Reference flushes denormal factors (as llvmpipe and GPUs do)");
   sub->add_flag("--json", a.json, "JSON report on stdout");
@@ -74,6 +79,47 @@ CapturedPatch toCapture(const oracle::Result& r, int64_t index) {
   return c;
 }
 
+// The driver of --api: GL (GlOracle) or Vulkan (VkOracle), the same patches in, the same results out.
+struct Driver {
+  std::unique_ptr<oracle::GlOracle> gl;
+#ifdef FFTESS_HAVE_VULKAN
+  std::unique_ptr<oracle::VkOracle> vk;
+#endif
+  std::string renderer, version;
+  bool run(const std::vector<oracle::Patch>& patches, std::vector<oracle::Result>& results, std::string& error) {
+#ifdef FFTESS_HAVE_VULKAN
+    if (vk) return vk->run(patches, results, error);
+#endif
+    return gl->run(patches, results, error);
+  }
+};
+
+// Opens the driver of --api; false (the reason on stderr) when there is none.
+bool openDriver(const DriverCheckArgs& a, Driver& d) {
+  std::string error;
+  if (a.api == "vulkan") {
+#ifndef FFTESS_HAVE_VULKAN
+    throw UsageError("driver-check --api vulkan: this fftess was built without Vulkan (install libvulkan-dev, rebuild)");
+#else
+    d.vk = oracle::VkOracle::create(error, a.hardware);
+    if (!d.vk) {
+      std::fprintf(stderr, "fftess: error: driver-check --api vulkan: no Vulkan device for the capture: %s\n",
+                   error.c_str());
+      return false;
+    }
+    d.renderer = d.vk->renderer(), d.version = d.vk->version();
+    return true;
+#endif
+  }
+  d.gl = oracle::GlOracle::create(error, a.hardware);
+  if (!d.gl) {
+    std::fprintf(stderr, "fftess: error: driver-check: no OpenGL 4.5 context: %s\n", error.c_str());
+    return false;
+  }
+  d.renderer = d.gl->renderer(), d.version = d.gl->version();
+  return true;
+}
+
 struct Item {
   Patch patch; // hardware-stage patch (an hlsl-stage line is preconditioned here, the driver gets the result)
   int line = 0;
@@ -118,11 +164,8 @@ int runDriverCheck(const DriverCheckArgs& a) {
     source = "random(seed " + std::to_string(a.seed) + ")";
   }
   std::string error;
-  auto gl = oracle::GlOracle::create(error, a.hardware);
-  if (!gl) {
-    std::fprintf(stderr, "fftess: error: driver-check: no OpenGL 4.5 context: %s\n", error.c_str());
-    return kExitInternal;
-  }
+  Driver driver;
+  if (!openDriver(a, driver)) return kExitInternal;
   CompareOptions opt;
   opt.strictOrder = a.strictOrder;
   opt.emulator.flushDenormals = a.flushDenormals;
@@ -135,8 +178,8 @@ int runDriverCheck(const DriverCheckArgs& a) {
     const size_t end = std::min(items.size(), begin + kChunk);
     glPatches.clear();
     for (size_t i = begin; i < end; ++i) glPatches.push_back(toGl(items[i].patch));
-    if (!gl->run(glPatches, results, error)) {
-      std::fprintf(stderr, "fftess: error: driver-check: the capture on %s failed: %s\n", gl->renderer().c_str(),
+    if (!driver.run(glPatches, results, error)) {
+      std::fprintf(stderr, "fftess: error: driver-check: the capture on %s failed: %s\n", driver.renderer.c_str(),
                    error.c_str());
       return kExitInternal;
     }
@@ -145,8 +188,8 @@ int runDriverCheck(const DriverCheckArgs& a) {
       reporter.add(int64_t(i), items[i].line, comparePatch(items[i].patch, &c, opt, tess));
     }
   }
-  reporter.finish("gl", "driver: " + gl->renderer() + " (" + gl->version() + "), " + std::to_string(items.size()) +
-                            " patches from " + source + "\n");
+  reporter.finish(a.api, "driver: " + driver.renderer + " (" + driver.version + "), " +
+                             std::to_string(items.size()) + " patches from " + source + "\n");
   return reporter.summary().differing ? kExitFindings : kExitClean;
 }
 #endif
