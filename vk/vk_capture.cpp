@@ -3,6 +3,8 @@
 #include "vk_capture.h"
 #include "vk_draw.h"
 
+#include "base/splitmix64.h"
+
 #include <algorithm>
 #include <unordered_map>
 
@@ -46,6 +48,18 @@ void appendSlotFactors(const Patch& p, std::vector<uint32_t>& out) {
   out.insert(out.end(), g, g + vk::kFactorWords);
 }
 
+// Permutes the primitives of one draw's records (each primitive kept whole), seeded.
+void shuffleRecords(std::vector<uint32_t>& records, int verticesPerPrimitive, SplitMix64& rng) {
+  const size_t words = static_cast<size_t>(verticesPerPrimitive) * vk::kRecordWords;
+  const size_t n = records.size() / words;
+  for (size_t i = n; i > 1; --i) {
+    const size_t j = rng.below(i);
+    std::swap_ranges(records.begin() + static_cast<std::ptrdiff_t>((i - 1) * words),
+                     records.begin() + static_cast<std::ptrdiff_t>(i * words),
+                     records.begin() + static_cast<std::ptrdiff_t>(j * words));
+  }
+}
+
 // Result::indices of captured primitives: each vertex's position in the point array, found by its coordinates;
 // left empty when two points share coordinates or a vertex is not a point.
 void deriveIndices(Result& r) {
@@ -68,6 +82,8 @@ struct VkOracle::Impl {
   vk::Device device;
   vk::Drawer drawer{device}; // after 'device': destroyed before it
   int drawPointBudget = kCpuDrawPointBudget;
+  uint64_t shuffleSeed = 0; // setRecordShuffle
+  SplitMix64 shuffle{0};
   std::vector<uint32_t> factors, records;
 
   // Draws the patches sel[0..) through 'key' in batches (at most kMaxPatchesPerDraw, the sum of their padded
@@ -99,6 +115,7 @@ const std::string& VkOracle::renderer() const { return impl_->device.name(); }
 const std::string& VkOracle::version() const { return impl_->device.version(); }
 bool VkOracle::isCpu() const { return impl_->device.isCpu(); }
 int VkOracle::drawCalls() const { return impl_->drawer.drawCalls; }
+void VkOracle::setRecordShuffle(uint64_t seed) { impl_->shuffleSeed = seed, impl_->shuffle = SplitMix64{seed}; }
 
 bool VkOracle::Impl::drawAll(const std::vector<Patch>& patches, const std::vector<int>& sel,
                              const std::vector<int>& weights, const PipelineKey& key, std::vector<Result>& results,
@@ -113,6 +130,7 @@ bool VkOracle::Impl::drawAll(const std::vector<Patch>& patches, const std::vecto
       appendSlotFactors(patches[sel[end++]], factors);
     }
     if (!drawer.draw(key, factors.data(), end - begin, records, error)) return false;
+    if (shuffleSeed) shuffleRecords(records, vk::verticesPerRecord(key.capture), shuffle);
     if (!distribute(sel, begin, end, key.capture, results, error)) return false;
     begin = end;
   }

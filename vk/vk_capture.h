@@ -47,6 +47,11 @@ public:
 
   int drawCalls() const; // of the last run()
 
+  // Test hook for the order-free grouping: with a seed other than 0, each draw's captured primitives (points, lines,
+  // triangles, each kept whole) are permuted (seeded Fisher-Yates, base/splitmix64.h) before they are given to their
+  // patches, as a driver with another emission order would give them. 0 (the default): the driver's order.
+  void setRecordShuffle(uint64_t seed);
+
   struct Impl;
 
 private:

@@ -124,7 +124,13 @@ bool Device::createInstance(std::string& error) {
     ci.enabledExtensionCount = 1;
     ci.ppEnabledExtensionNames = &portabilityExt;
   }
-  if (!succeeded(f.vkCreateInstance(&ci, nullptr, &instance), "vkCreateInstance", error)) return false;
+  const VkResult r = f.vkCreateInstance(&ci, nullptr, &instance);
+  if (!succeeded(r, "vkCreateInstance", error)) {
+    if (r == VK_ERROR_INCOMPATIBLE_DRIVER)
+      error += ": the loader found no Vulkan 1.1 driver (none installed, or VK_ICD_FILENAMES / VK_DRIVER_FILES name "
+               "none that loads); install mesa-vulkan-drivers for lavapipe";
+    return false;
+  }
   return loadInstanceFunctions(f, instance, error);
 }
 
