@@ -24,8 +24,8 @@
 namespace fftess::cli {
 
 CLI::App* addDriverCheck(CLI::App& app, DriverCheckArgs& a) {
-  CLI::App* sub = app.add_subcommand("driver-check", "Run patches through the local OpenGL tessellator and compare "
-                                                     "with the emulator (llvmpipe by default)");
+  CLI::App* sub = app.add_subcommand("driver-check", "Run patches through the local OpenGL (or Vulkan) tessellator and "
+                                                     "compare with the emulator (llvmpipe / lavapipe by default)");
   sub->add_option("patches", a.patches, "Batch file (hw or hlsl stage; - for stdin); none: --random patches");
   sub->add_option("--random", a.random, "Seeded random patches (with special factor values) when no batch is given")
       ->check(CLI::Range(1, 10000000));
@@ -39,7 +39,8 @@ CLI::App* addDriverCheck(CLI::App& app, DriverCheckArgs& a) {
   sub->add_option("--show", a.show, "Differing patches listed in full (default 20)");
   sub->footer(
       "Example:\n  fftess driver-check --random 2000 --seed 7\n  fftess driver-check docs/examples/compare_port.batch\n"
-      "Exit status: 0 same, 1 differs, 2 bad usage or input, 3 no GL driver or internal error.");
+      "  fftess driver-check --api vulkan --hardware --random 2000\n"
+      "Exit status: 0 same, 1 differs, 2 bad usage or input, 3 no GL/Vulkan driver or internal error.");
   return sub;
 }
 
@@ -99,7 +100,8 @@ bool openDriver(const DriverCheckArgs& a, Driver& d) {
   std::string error;
   if (a.api == "vulkan") {
 #ifndef FFTESS_HAVE_VULKAN
-    throw UsageError("driver-check --api vulkan: this fftess was built without Vulkan (install libvulkan-dev, rebuild)");
+    throw UsageError(
+        "driver-check --api vulkan: this fftess was built without Vulkan (install libvulkan-dev, rebuild)");
 #else
     d.vk = oracle::VkOracle::create(error, a.hardware);
     if (!d.vk) {
@@ -188,8 +190,8 @@ int runDriverCheck(const DriverCheckArgs& a) {
       reporter.add(int64_t(i), items[i].line, comparePatch(items[i].patch, &c, opt, tess));
     }
   }
-  reporter.finish(a.api, "driver: " + driver.renderer + " (" + driver.version + "), " +
-                             std::to_string(items.size()) + " patches from " + source + "\n");
+  reporter.finish(a.api, "driver: " + driver.renderer + " (" + driver.version + "), " + std::to_string(items.size()) +
+                             " patches from " + source + "\n");
   return reporter.summary().differing ? kExitFindings : kExitClean;
 }
 #endif

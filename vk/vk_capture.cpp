@@ -19,12 +19,17 @@ using vk::PipelineKey;
 constexpr int kMaxPatchesPerDraw = 2048;
 // Domain points per draw. Lavapipe tessellates in gallium's draw module, as llvmpipe does, which numbers a draw's
 // tessellated vertices with 16 bits (each patch padded to a multiple of 4): past 65536 it captures wrong vertices
-// without an error (shared facts, gl_capture.cpp). A GPU has no such limit; 200000 as tests/tools/nvidia_compare.
-constexpr int kCpuDrawPointBudget = 60000;
+// without an error (shared facts, gl_capture.cpp). Its cost per draw also grows faster than the draw: 3000 random
+// patches took 5.5 s of CPU with 60000 points per draw, 1.7 s with 8000 (1.3-1.9 s from 1000 to 8000; 2026-12-02,
+// this 2-core machine, fftess's compare included). A GPU has neither limit; 200000 as tests/tools/nvidia_compare.
+constexpr int kCpuDrawPointBudget = 8000;
 constexpr int kGpuDrawPointBudget = 200000;
 // Transform feedback room per draw, in vertices per budgeted point: a triangle list has fewer than 2 triangles per
 // point (6 vertices), points and lines fewer; the stream query catches anything beyond.
 constexpr int kCaptureVerticesPerPoint = 8;
+
+// pointBound's largest value (a quad with every factor 64 or more, +1 each for the fractional rounding, padded).
+constexpr int kMaxPatchPoints = 4 * 64 + 65 * 65 + 3;
 
 int padTo4(int n) { return (n + 3) & ~3; }
 
@@ -104,10 +109,13 @@ std::unique_ptr<VkOracle> VkOracle::create(std::string& error, bool hardwareFirs
   std::unique_ptr<VkOracle> o(new VkOracle);
   Impl& m = *o->impl_;
   vk::Requirements req;
-  req.captureBytes = VkDeviceSize(kCaptureVerticesPerPoint) * kGpuDrawPointBudget * vk::kRecordWords * 4;
+  req.captureBytes = VkDeviceSize(kCaptureVerticesPerPoint) * std::max(kGpuDrawPointBudget, kMaxPatchPoints) *
+                     vk::kRecordWords * 4;
   if (!m.device.create(hardwareFirst, req, error)) return nullptr;
   m.drawPointBudget = m.device.isCpu() ? kCpuDrawPointBudget : kGpuDrawPointBudget;
-  if (!m.drawer.create(kMaxPatchesPerDraw, kCaptureVerticesPerPoint * m.drawPointBudget, error)) return nullptr;
+  // A draw takes at least one patch whatever its weight: room for the largest patch even past the budget.
+  const int points = std::max(m.drawPointBudget, kMaxPatchPoints);
+  if (!m.drawer.create(kMaxPatchesPerDraw, kCaptureVerticesPerPoint * points, error)) return nullptr;
   return o;
 }
 
@@ -129,7 +137,8 @@ bool VkOracle::Impl::drawAll(const std::vector<Patch>& patches, const std::vecto
       budget += padTo4(weights[end]);
       appendSlotFactors(patches[sel[end++]], factors);
     }
-    if (!drawer.draw(key, factors.data(), end - begin, records, error)) return false;
+    const int room = kCaptureVerticesPerPoint * std::max(budget, 4);
+    if (!drawer.draw(key, factors.data(), end - begin, room, records, error)) return false;
     if (shuffleSeed) shuffleRecords(records, vk::verticesPerRecord(key.capture), shuffle);
     if (!distribute(sel, begin, end, key.capture, results, error)) return false;
     begin = end;
@@ -175,8 +184,9 @@ bool VkOracle::Impl::runGroup(const std::vector<Patch>& patches, const std::vect
     return false;
   for (size_t j = 0; j < members.size(); ++j)
     if (results[members[j]].pointCount() > bounds[j]) {
-      error = "patch '" + batchLine(patches[members[j]]) + "' gave " + std::to_string(results[members[j]].pointCount()) +
-              " points, above the harness bound " + std::to_string(bounds[j]) + " (the per-draw limit is unsafe)";
+      error = "patch '" + batchLine(patches[members[j]]) + "' gave " +
+              std::to_string(results[members[j]].pointCount()) + " points, above the harness bound " +
+              std::to_string(bounds[j]) + " (the per-draw limit is unsafe)";
       return false;
     }
   // Point and quad/tri line outputs have no Vulkan primitive: derived from the point array (as GlOracle does).

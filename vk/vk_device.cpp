@@ -97,8 +97,8 @@ Device::~Device() {
 bool Device::createInstance(std::string& error) {
   if (!loadLoader(f, error)) return false;
   uint32_t loaderVersion = VK_API_VERSION_1_0;
-  if (f.vkEnumerateInstanceVersion && !succeeded(f.vkEnumerateInstanceVersion(&loaderVersion),
-                                                 "vkEnumerateInstanceVersion", error))
+  if (f.vkEnumerateInstanceVersion &&
+      !succeeded(f.vkEnumerateInstanceVersion(&loaderVersion), "vkEnumerateInstanceVersion", error))
     return false;
   if (loaderVersion < VK_API_VERSION_1_1) {
     error = "the Vulkan loader " + f.libraryName + " is Vulkan " + versionText(loaderVersion) + "; 1.1 is needed";
@@ -156,14 +156,16 @@ bool Device::create(bool hardwareFirst, const Requirements& req, std::string& er
   }
   // The CPU devices (lavapipe) first by default; the others first with hardwareFirst. Stable: the loader's order.
   std::stable_sort(cands.begin(), cands.end(), [&](const Candidate& a, const Candidate& b) {
-    const bool ca = a.props.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU, cb = b.props.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+    const bool ca = a.props.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU,
+               cb = b.props.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
     return hardwareFirst ? (!ca && cb) : (ca && !cb);
   });
   auto chosen = std::find_if(cands.begin(), cands.end(), [](const Candidate& c) { return c.lacks.empty(); });
   if (chosen == cands.end()) {
     error = "no Vulkan device can run the capture:";
     for (const Candidate& c : cands)
-      error += std::string(" '") + c.props.deviceName + "' (" + deviceTypeName(c.props.deviceType) + "): " + c.lacks + ";";
+      error +=
+          std::string(" '") + c.props.deviceName + "' (" + deviceTypeName(c.props.deviceType) + "): " + c.lacks + ";";
     error.pop_back();
     return false;
   }

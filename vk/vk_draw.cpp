@@ -1,6 +1,7 @@
 // The draws of the Vulkan capture (vk_draw.h).
 #include "vk_draw.h"
 
+#include <algorithm>
 #include <cstring>
 
 namespace fftess {
@@ -38,7 +39,9 @@ void main() {
 // Every evaluation shader invocation writes one record: the coordinate's bits and its patch within the draw.
 std::string evaluationShader(const PipelineKey& k) {
   std::string layout = k.domain == Domain::Quad ? "quads" : k.domain == Domain::Tri ? "triangles" : "isolines";
-  layout += k.spacing == 0 ? ", equal_spacing" : k.spacing == 1 ? ", fractional_odd_spacing" : ", fractional_even_spacing";
+  layout += k.spacing == 0   ? ", equal_spacing"
+            : k.spacing == 1 ? ", fractional_odd_spacing"
+                             : ", fractional_even_spacing";
   if (k.capture == Capture::TrianglesCw) layout += ", cw";
   if (k.capture == Capture::TrianglesCcw) layout += ", ccw";
   if (k.capture == Capture::Points) layout += ", point_mode";
@@ -173,27 +176,34 @@ VkPipeline Drawer::pipeline(const PipelineKey& key, std::string& error) {
     stages[i].module = modules[i];
     stages[i].pName = "main";
   }
-  auto vertexInput = structure<VkPipelineVertexInputStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO);
-  auto assembly = structure<VkPipelineInputAssemblyStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO);
+  auto vertexInput =
+      structure<VkPipelineVertexInputStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO);
+  auto assembly =
+      structure<VkPipelineInputAssemblyStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO);
   assembly.topology = VK_PRIMITIVE_TOPOLOGY_PATCH_LIST;
-  auto origin = structure<VkPipelineTessellationDomainOriginStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_TESSELLATION_DOMAIN_ORIGIN_STATE_CREATE_INFO);
+  auto origin = structure<VkPipelineTessellationDomainOriginStateCreateInfo>(
+      VK_STRUCTURE_TYPE_PIPELINE_TESSELLATION_DOMAIN_ORIGIN_STATE_CREATE_INFO);
   origin.domainOrigin = kDomainOrigin;
-  auto tess = structure<VkPipelineTessellationStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_TESSELLATION_STATE_CREATE_INFO);
+  auto tess =
+      structure<VkPipelineTessellationStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_TESSELLATION_STATE_CREATE_INFO);
   tess.pNext = &origin;
   tess.patchControlPoints = 1;
   // Viewport and multisample state are ignored under rasterizer discard; given anyway, valid, for strict drivers.
   const VkViewport viewport{0.0f, 0.0f, 1.0f, 1.0f, 0.0f, 1.0f};
   const VkRect2D scissor{{0, 0}, {1, 1}};
-  auto viewportState = structure<VkPipelineViewportStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO);
+  auto viewportState =
+      structure<VkPipelineViewportStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO);
   viewportState.viewportCount = viewportState.scissorCount = 1;
   viewportState.pViewports = &viewport;
   viewportState.pScissors = &scissor;
-  auto raster = structure<VkPipelineRasterizationStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO);
+  auto raster =
+      structure<VkPipelineRasterizationStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO);
   raster.rasterizerDiscardEnable = VK_TRUE;
   raster.polygonMode = VK_POLYGON_MODE_FILL;
   raster.cullMode = VK_CULL_MODE_NONE;
   raster.lineWidth = 1.0f;
-  auto multisample = structure<VkPipelineMultisampleStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO);
+  auto multisample =
+      structure<VkPipelineMultisampleStateCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO);
   multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
   auto pci = structure<VkGraphicsPipelineCreateInfo>(VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO);
   pci.stageCount = 3;
@@ -215,7 +225,7 @@ VkPipeline Drawer::pipeline(const PipelineKey& key, std::string& error) {
 
 // The draw's commands: query reset, the draw under transform feedback and the stream query, then the captured
 // vertices made visible to the host.
-bool Drawer::record(VkPipeline pipe, int count) {
+bool Drawer::record(VkPipeline pipe, int count, VkDeviceSize captureBytes) {
   Functions& f = dev_.f;
   auto begin = structure<VkCommandBufferBeginInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO);
   begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
@@ -228,7 +238,7 @@ bool Drawer::record(VkPipeline pipe, int count) {
   f.vkCmdBeginRenderPass(cmd_, &rp, VK_SUBPASS_CONTENTS_INLINE);
   f.vkCmdBindPipeline(cmd_, VK_PIPELINE_BIND_POINT_GRAPHICS, pipe);
   f.vkCmdBindDescriptorSets(cmd_, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &set_, 0, nullptr);
-  const VkDeviceSize offset = 0, size = capture_.size;
+  const VkDeviceSize offset = 0, size = captureBytes;
   f.vkCmdBindTransformFeedbackBuffersEXT(cmd_, 0, 1, &capture_.buffer, &offset, &size);
   f.vkCmdBeginQuery(cmd_, query_, 0, 0); // stream 0
   f.vkCmdBeginTransformFeedbackEXT(cmd_, 0, 0, nullptr, nullptr);
@@ -244,10 +254,11 @@ bool Drawer::record(VkPipeline pipe, int count) {
   return f.vkEndCommandBuffer(cmd_) == VK_SUCCESS;
 }
 
-bool Drawer::draw(const PipelineKey& key, const uint32_t* factors, int count, std::vector<uint32_t>& records,
-                  std::string& error) {
+bool Drawer::draw(const PipelineKey& key, const uint32_t* factors, int count, int roomVertices,
+                  std::vector<uint32_t>& records, std::string& error) {
   records.clear();
   if (count <= 0) return true;
+  roomVertices = std::max(1, std::min(roomVertices, captureVertices_));
   if (count > maxPatches_) {
     error = "internal: a draw of " + std::to_string(count) + " patches, above the " + std::to_string(maxPatches_) +
             " the factor buffer holds";
@@ -256,7 +267,7 @@ bool Drawer::draw(const PipelineKey& key, const uint32_t* factors, int count, st
   const VkPipeline pipe = pipeline(key, error);
   if (!pipe) return false;
   std::memcpy(factors_.mapped, factors, size_t(count) * kFactorWords * 4);
-  if (!record(pipe, count)) {
+  if (!record(pipe, count, VkDeviceSize(roomVertices) * kRecordWords * 4)) {
     error = "recording the draw's command buffer failed (vkBeginCommandBuffer / vkEndCommandBuffer)";
     return false;
   }
@@ -268,9 +279,9 @@ bool Drawer::draw(const PipelineKey& key, const uint32_t* factors, int count, st
                  "vkGetQueryPoolResults", error))
     return false;
   const uint64_t perPrim = static_cast<uint64_t>(verticesPerRecord(key.capture));
-  if (counts[1] != counts[0] || counts[0] * perPrim > static_cast<uint64_t>(captureVertices_)) {
+  if (counts[1] != counts[0] || counts[0] * perPrim > static_cast<uint64_t>(roomVertices)) {
     error = "transform feedback overflow: " + std::to_string(counts[1]) + " primitives needed, " +
-            std::to_string(counts[0]) + " written (room for " + std::to_string(captureVertices_ / perPrim) + ")";
+            std::to_string(counts[0]) + " written (room for " + std::to_string(roomVertices / perPrim) + ")";
     return false;
   }
   const size_t words = static_cast<size_t>(counts[0] * perPrim) * kRecordWords;

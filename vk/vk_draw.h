@@ -46,11 +46,13 @@ public:
   bool create(int maxPatches, int captureVertices, std::string& error);
 
   // One draw of 'count' patches (count <= maxPatches) whose factors are factors[0 .. count*kFactorWords), through the
-  // pipeline of 'key'. 'records' gets the captured vertices (kRecordWords each, verticesPerRecord(key.capture) per
-  // primitive, in the driver's order). Fails on any Vulkan error and on a transform feedback overflow (the stream
-  // query's primitives needed above primitives written).
-  bool draw(const PipelineKey& key, const uint32_t* factors, int count, std::vector<uint32_t>& records,
-            std::string& error);
+  // pipeline of 'key', with room for roomVertices captured vertices (at most captureVertices: only that much of the
+  // transform feedback buffer is bound; lavapipe's per-draw cost grows with the bound size). 'records' gets the
+  // captured vertices (kRecordWords each, verticesPerRecord(key.capture) per primitive, in the driver's order).
+  // Fails on any Vulkan error and on a transform feedback overflow (the stream query's primitives needed above
+  // primitives written).
+  bool draw(const PipelineKey& key, const uint32_t* factors, int count, int roomVertices,
+            std::vector<uint32_t>& records, std::string& error);
 
   int drawCalls = 0;
 
@@ -58,7 +60,7 @@ private:
   bool createLayout(std::string& error);
   bool createRenderPass(std::string& error);
   VkPipeline pipeline(const PipelineKey& key, std::string& error);
-  bool record(VkPipeline pipe, int count);
+  bool record(VkPipeline pipe, int count, VkDeviceSize captureBytes);
 
   Device& dev_;
   int maxPatches_ = 0, captureVertices_ = 0;

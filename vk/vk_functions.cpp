@@ -54,11 +54,11 @@ bool loadLoader(Functions& f, std::string& error) {
   }
   f.vkEnumerateInstanceVersion =
       reinterpret_cast<PFN_vkEnumerateInstanceVersion>(f.vkGetInstanceProcAddr(nullptr, "vkEnumerateInstanceVersion"));
-#define FFTESS_VK_LOAD(fn)                                                                                           \
-  f.fn = reinterpret_cast<PFN_##fn>(f.vkGetInstanceProcAddr(nullptr, #fn));                                          \
-  if (!f.fn) {                                                                                                       \
-    error = "the Vulkan loader " + f.libraryName + " has no " #fn;                                                   \
-    return false;                                                                                                    \
+#define FFTESS_VK_LOAD(fn)                                                                                             \
+  f.fn = reinterpret_cast<PFN_##fn>(f.vkGetInstanceProcAddr(nullptr, #fn));                                            \
+  if (!f.fn) {                                                                                                         \
+    error = "the Vulkan loader " + f.libraryName + " has no " #fn;                                                     \
+    return false;                                                                                                      \
   }
   FFTESS_VK_GLOBAL_FUNCTIONS(FFTESS_VK_LOAD)
 #undef FFTESS_VK_LOAD
@@ -66,11 +66,11 @@ bool loadLoader(Functions& f, std::string& error) {
 }
 
 bool loadInstanceFunctions(Functions& f, VkInstance instance, std::string& error) {
-#define FFTESS_VK_LOAD(fn)                                                                                           \
-  f.fn = reinterpret_cast<PFN_##fn>(f.vkGetInstanceProcAddr(instance, #fn));                                         \
-  if (!f.fn) {                                                                                                       \
-    error = "vkGetInstanceProcAddr: the Vulkan instance has no " #fn " (a Vulkan 1.1 loader is needed)";             \
-    return false;                                                                                                    \
+#define FFTESS_VK_LOAD(fn)                                                                                             \
+  f.fn = reinterpret_cast<PFN_##fn>(f.vkGetInstanceProcAddr(instance, #fn));                                           \
+  if (!f.fn) {                                                                                                         \
+    error = "vkGetInstanceProcAddr: the Vulkan instance has no " #fn " (a Vulkan 1.1 loader is needed)";               \
+    return false;                                                                                                      \
   }
   FFTESS_VK_INSTANCE_FUNCTIONS(FFTESS_VK_LOAD)
 #undef FFTESS_VK_LOAD
@@ -78,11 +78,11 @@ bool loadInstanceFunctions(Functions& f, VkInstance instance, std::string& error
 }
 
 bool loadDeviceFunctions(Functions& f, VkDevice device, std::string& error) {
-#define FFTESS_VK_LOAD(fn)                                                                                           \
-  f.fn = reinterpret_cast<PFN_##fn>(f.vkGetDeviceProcAddr(device, #fn));                                             \
-  if (!f.fn) {                                                                                                       \
-    error = "vkGetDeviceProcAddr: the Vulkan device has no " #fn;                                                    \
-    return false;                                                                                                    \
+#define FFTESS_VK_LOAD(fn)                                                                                             \
+  f.fn = reinterpret_cast<PFN_##fn>(f.vkGetDeviceProcAddr(device, #fn));                                               \
+  if (!f.fn) {                                                                                                         \
+    error = "vkGetDeviceProcAddr: the Vulkan device has no " #fn;                                                      \
+    return false;                                                                                                      \
   }
   FFTESS_VK_DEVICE_FUNCTIONS(FFTESS_VK_LOAD)
 #undef FFTESS_VK_LOAD
@@ -91,7 +91,7 @@ bool loadDeviceFunctions(Functions& f, VkDevice device, std::string& error) {
 
 std::string resultName(VkResult r) {
   switch (r) {
-#define FFTESS_VK_NAME(code)                                                                                         \
+#define FFTESS_VK_NAME(code)                                                                                           \
   case code: return #code;
     FFTESS_VK_NAME(VK_SUCCESS)
     FFTESS_VK_NAME(VK_NOT_READY)

@@ -26,8 +26,8 @@ bool compileGlsl(const std::string& glsl, int stage, std::vector<uint32_t>& spir
   shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_3);
   const EShMessages messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules);
   if (!shader.parse(GetDefaultResources(), 450, ECoreProfile, false, false, messages)) {
-    error = std::string("glslang: the capture's ") + stageName + " shader does not compile (fftess's problem): " +
-            shader.getInfoLog();
+    error = std::string("glslang: the capture's ") + stageName +
+            " shader does not compile (fftess's problem): " + shader.getInfoLog();
     return false;
   }
   glslang::TProgram program;

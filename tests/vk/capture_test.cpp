@@ -236,7 +236,8 @@ int main(int argc, char** argv) {
   std::unique_ptr<VkOracle> vk = VkOracle::create(error);
   if (!vk) {
     if (std::getenv("CI")) {
-      std::fprintf(stderr, "test_vk_capture: FAILED: no Vulkan device for the capture: %s (CI is set)\n", error.c_str());
+      std::fprintf(stderr, "test_vk_capture: FAILED: no Vulkan device for the capture: %s (CI is set)\n",
+                   error.c_str());
       return 1;
     }
     std::fprintf(stderr, "test_vk_capture: SKIPPED: no Vulkan device for the capture: %s (would fail with CI set)\n",

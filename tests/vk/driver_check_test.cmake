@@ -18,7 +18,8 @@ if(rc EQUAL 3)
   return()
 endif()
 if(NOT rc EQUAL 0 OR NOT out MATCHES "verdict: same")
-  message(FATAL_ERROR "vk driver-check: --flush-denormals: expected exit 0 and 'verdict: same', got exit ${rc}:\n${out}${err}")
+  message(FATAL_ERROR "vk driver-check: --flush-denormals: expected exit 0 and 'verdict: same', got exit ${rc}:\n"
+                      "${out}${err}")
 endif()
 string(REGEX MATCH "driver: [^\n]*" driver "${out}")
 
