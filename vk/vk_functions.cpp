@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <climits>
+#include <type_traits>
 #include <string>
 
 namespace fftess {
@@ -21,6 +22,29 @@ std::string executableFolder() {
   const std::string s(path, static_cast<size_t>(n));
   const size_t slash = s.rfind('/');
   return slash == std::string::npos ? std::string() : s.substr(0, slash + 1);
+}
+
+// Loads the global (null instance), instance-level or device-level list, whichever 'handle' is for, with 'get'
+// (vkGetInstanceProcAddr or vkGetDeviceProcAddr); 'owner' names the handle in the error.
+template <class Get, class Handle>
+bool loadFunctions(Functions& f, Get get, Handle handle, const std::string& owner, std::string& error) {
+  constexpr bool device = std::is_same<Handle, VkDevice>::value;
+  const bool global = !device && handle == VK_NULL_HANDLE;
+#define FFTESS_VK_LOAD(fn)                                                                                             \
+  f.fn = reinterpret_cast<PFN_##fn>(get(handle, #fn));                                                                 \
+  if (!f.fn) {                                                                                                         \
+    error = owner + " has no " #fn;                                                                                    \
+    return false;                                                                                                      \
+  }
+  if (device) {
+    FFTESS_VK_DEVICE_FUNCTIONS(FFTESS_VK_LOAD)
+  } else if (global) {
+    FFTESS_VK_GLOBAL_FUNCTIONS(FFTESS_VK_LOAD)
+  } else {
+    FFTESS_VK_INSTANCE_FUNCTIONS(FFTESS_VK_LOAD)
+  }
+#undef FFTESS_VK_LOAD
+  return true;
 }
 
 } // namespace
@@ -54,39 +78,16 @@ bool loadLoader(Functions& f, std::string& error) {
   }
   f.vkEnumerateInstanceVersion =
       reinterpret_cast<PFN_vkEnumerateInstanceVersion>(f.vkGetInstanceProcAddr(nullptr, "vkEnumerateInstanceVersion"));
-#define FFTESS_VK_LOAD(fn)                                                                                             \
-  f.fn = reinterpret_cast<PFN_##fn>(f.vkGetInstanceProcAddr(nullptr, #fn));                                            \
-  if (!f.fn) {                                                                                                         \
-    error = "the Vulkan loader " + f.libraryName + " has no " #fn;                                                     \
-    return false;                                                                                                      \
-  }
-  FFTESS_VK_GLOBAL_FUNCTIONS(FFTESS_VK_LOAD)
-#undef FFTESS_VK_LOAD
-  return true;
+  return loadFunctions(f, f.vkGetInstanceProcAddr, VkInstance(VK_NULL_HANDLE), "the Vulkan loader " + f.libraryName,
+                       error);
 }
 
 bool loadInstanceFunctions(Functions& f, VkInstance instance, std::string& error) {
-#define FFTESS_VK_LOAD(fn)                                                                                             \
-  f.fn = reinterpret_cast<PFN_##fn>(f.vkGetInstanceProcAddr(instance, #fn));                                           \
-  if (!f.fn) {                                                                                                         \
-    error = "vkGetInstanceProcAddr: the Vulkan instance has no " #fn " (a Vulkan 1.1 loader is needed)";               \
-    return false;                                                                                                      \
-  }
-  FFTESS_VK_INSTANCE_FUNCTIONS(FFTESS_VK_LOAD)
-#undef FFTESS_VK_LOAD
-  return true;
+  return loadFunctions(f, f.vkGetInstanceProcAddr, instance, "vkGetInstanceProcAddr: the Vulkan instance", error);
 }
 
 bool loadDeviceFunctions(Functions& f, VkDevice device, std::string& error) {
-#define FFTESS_VK_LOAD(fn)                                                                                             \
-  f.fn = reinterpret_cast<PFN_##fn>(f.vkGetDeviceProcAddr(device, #fn));                                               \
-  if (!f.fn) {                                                                                                         \
-    error = "vkGetDeviceProcAddr: the Vulkan device has no " #fn;                                                      \
-    return false;                                                                                                      \
-  }
-  FFTESS_VK_DEVICE_FUNCTIONS(FFTESS_VK_LOAD)
-#undef FFTESS_VK_LOAD
-  return true;
+  return loadFunctions(f, f.vkGetDeviceProcAddr, device, "vkGetDeviceProcAddr: the Vulkan device", error);
 }
 
 std::string resultName(VkResult r) {
