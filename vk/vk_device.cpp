@@ -120,7 +120,7 @@ bool Device::createInstance(std::string& error) {
   ci.sType = VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO;
   ci.pApplicationInfo = &app;
   if (portability) {
-    ci.flags = 0x00000001; // VK_INSTANCE_CREATE_ENUMERATE_PORTABILITY_BIT_KHR
+    ci.flags = VK_INSTANCE_CREATE_ENUMERATE_PORTABILITY_BIT_KHR;
     ci.enabledExtensionCount = 1;
     ci.ppEnabledExtensionNames = &portabilityExt;
   }
@@ -140,8 +140,10 @@ bool Device::create(bool hardwareFirst, const Requirements& req, std::string& er
   if (!succeeded(f.vkEnumeratePhysicalDevices(instance, &n, nullptr), "vkEnumeratePhysicalDevices", error))
     return false;
   std::vector<VkPhysicalDevice> devices(n);
-  if (n && !succeeded(f.vkEnumeratePhysicalDevices(instance, &n, devices.data()), "vkEnumeratePhysicalDevices", error))
-    return false;
+  if (n) { // VK_INCOMPLETE: a device went away between the calls; the n written are valid
+    const VkResult r = f.vkEnumeratePhysicalDevices(instance, &n, devices.data());
+    if (r != VK_INCOMPLETE && !succeeded(r, "vkEnumeratePhysicalDevices", error)) return false;
+  }
   devices.resize(n);
   if (devices.empty()) {
     error = "the Vulkan loader found no device (no driver installed, or VK_ICD_FILENAMES / VK_DRIVER_FILES name none "
