@@ -1,6 +1,7 @@
-// fftess driver-check: is the local OpenGL driver's tessellator D3D11-exact? Patches (a batch file, or seeded random
-// ones) go through the driver (gl/: headless EGL, transform-feedback capture; llvmpipe by default) and the
-// captures through the same comparison as `fftess compare` (compare/compare.h).
+// fftess driver-check: is the local OpenGL or Vulkan driver's tessellator D3D11-exact? Patches (a batch file, or seeded
+// random ones) go through the driver (gl/: headless EGL, transform-feedback capture, llvmpipe by default; vk/: Vulkan,
+// VK_EXT_transform_feedback, lavapipe by default) and the captures through the same comparison as `fftess compare`
+// (compare/compare.h).
 #include "common.h"
 #include "compare_report.h"
 #include "random_batch.h"
@@ -15,6 +16,9 @@
 #ifdef FFTESS_HAVE_GL
 #include "gl/gl_capture.h"
 #endif
+#ifdef FFTESS_HAVE_VULKAN
+#include "vk/vk_capture.h"
+#endif
 
 #include <cstdint>
 #include <cstring>
@@ -24,13 +28,15 @@
 namespace fftess::cli {
 
 CLI::App* addDriverCheck(CLI::App& app, DriverCheckArgs& a) {
-  CLI::App* sub = app.add_subcommand("driver-check", "Run patches through the local OpenGL tessellator and compare "
-                                                     "with the emulator (llvmpipe by default)");
+  CLI::App* sub = app.add_subcommand("driver-check", "Run patches through the local OpenGL (or Vulkan) tessellator and "
+                                                     "compare with the emulator (llvmpipe / lavapipe by default)");
   sub->add_option("patches", a.patches, "Batch file (hw or hlsl stage; - for stdin); none: --random patches");
   sub->add_option("--random", a.random, "Seeded random patches (with special factor values) when no batch is given")
       ->check(CLI::Range(1, 10000000));
   sub->add_option("--seed", a.seed, "Seed of --random (default 1)");
-  sub->add_flag("--hardware", a.hardware, "Prefer a GPU's EGL device over Mesa's software one");
+  sub->add_flag("--hardware", a.hardware, "Prefer a GPU (EGL device, Vulkan device) over Mesa's software one");
+  sub->add_option("--api", a.api, "The driver's API: gl (OpenGL 4.5, EGL) or vulkan (VK_EXT_transform_feedback)")
+      ->check(CLI::IsMember({"gl", "vulkan"}));
   sub->add_flag("--strict-order", a.strictOrder,
                 "Capture and compare in the reference's order: same primitives in the same order with the same first "
                 "vertex (needs a driver that emits in that order, llvmpipe)");
@@ -48,7 +54,8 @@ CLI::App* addDriverCheck(CLI::App& app, DriverCheckArgs& a) {
   sub->add_option("--svg", a.svg, "SVG of the first differing patches: reference and capture over each other");
   sub->footer(
       "Example:\n  fftess driver-check --random 2000 --seed 7\n  fftess driver-check docs/examples/compare_port.batch\n"
-      "Exit status: 0 same, 1 differs, 2 bad usage or input, 3 no GL driver, internal error, or --strict-order on a "
+      "  fftess driver-check --api vulkan --hardware --random 2000\n"
+      "Exit status: 0 same, 1 differs, 2 bad usage or input, 3 no GL/Vulkan driver, internal error, or --strict-order on a "
       "driver that emits in its own order.");
   return sub;
 }
@@ -88,6 +95,53 @@ void writeBatch(const DriverCheckArgs& a, const std::vector<Item>& items) {
 }
 
 } // namespace
+
+// The driver of --api: GL (GlOracle) or Vulkan (VkOracle), the same patches in, the same results out. Vulkan's capture
+// is always order-free (it keeps the driver's order within a patch: --strict-order then compares that order).
+struct Driver {
+  std::unique_ptr<oracle::GlOracle> gl;
+#ifdef FFTESS_HAVE_VULKAN
+  std::unique_ptr<oracle::VkOracle> vk;
+#endif
+  std::string renderer, version;
+  bool software = false; // Mesa's llvmpipe / lavapipe
+  bool run(const std::vector<oracle::Patch>& patches, std::vector<oracle::Result>& results, std::string& error,
+           const oracle::RunOptions& options) {
+#ifdef FFTESS_HAVE_VULKAN
+    if (vk) return vk->run(patches, results, error);
+#endif
+    return gl->run(patches, results, error, options);
+  }
+  bool orderMismatch() const { return gl && gl->orderMismatch(); }
+};
+
+// Opens the driver of --api; false (the reason on stderr) when there is none.
+bool openDriver(const DriverCheckArgs& a, Driver& d) {
+  std::string error;
+  if (a.api == "vulkan") {
+#ifndef FFTESS_HAVE_VULKAN
+    throw UsageError(
+        "driver-check --api vulkan: this fftess was built without Vulkan (install libvulkan-dev, rebuild)");
+#else
+    d.vk = oracle::VkOracle::create(error, a.hardware);
+    if (!d.vk) {
+      std::fprintf(stderr, "fftess: error: driver-check --api vulkan: no Vulkan device for the capture: %s\n",
+                   error.c_str());
+      return false;
+    }
+    if (a.permuteCapture) d.vk->setRecordShuffle(a.permuteCapture);
+    d.renderer = d.vk->renderer(), d.version = d.vk->version(), d.software = d.vk->isCpu();
+    return true;
+#endif
+  }
+  d.gl = oracle::GlOracle::create(error, a.hardware);
+  if (!d.gl) {
+    std::fprintf(stderr, "fftess: error: driver-check: no OpenGL 4.5 context: %s\n", error.c_str());
+    return false;
+  }
+  d.renderer = d.gl->renderer(), d.version = d.gl->version(), d.software = d.gl->isLlvmpipe();
+  return true;
+}
 
 int runDriverCheck(const DriverCheckArgs& a) {
   if (a.writeBatch == "-") throw UsageError("--write-batch '-': stdout carries the report; give a file");
@@ -135,14 +189,11 @@ int runDriverCheck(const DriverCheckArgs& a) {
   CompareSvg svg(a.svg, opt);
   if (!a.writeBatch.empty()) writeBatch(a, items);
   std::string error;
-  auto gl = oracle::GlOracle::create(error, a.hardware);
-  if (!gl) {
-    std::fprintf(stderr, "fftess: error: driver-check: no OpenGL 4.5 context: %s\n", error.c_str());
-    return kExitInternal;
-  }
-  if (a.hardware && gl->isLlvmpipe())
-    std::fprintf(stderr, "fftess: note: driver-check --hardware: no GPU's EGL device gave an OpenGL 4.5 context; "
-                         "running on %s\n", gl->renderer().c_str());
+  Driver driver;
+  if (!openDriver(a, driver)) return kExitInternal;
+  if (a.hardware && driver.software)
+    std::fprintf(stderr, "fftess: note: driver-check --hardware: no GPU device gave a %s context; running on %s\n",
+                 a.api == "vulkan" ? "Vulkan" : "OpenGL 4.5", driver.renderer.c_str());
   oracle::RunOptions run;
   run.order = a.strictOrder ? oracle::CaptureOrder::Strict : oracle::CaptureOrder::Free;
   run.permuteSeed = a.permuteCapture;
@@ -158,13 +209,13 @@ int runDriverCheck(const DriverCheckArgs& a) {
     const size_t end = std::min(items.size(), begin + kChunk);
     glPatches.clear();
     for (size_t i = begin; i < end; ++i) glPatches.push_back(toOracle(simulated.input(items[i].patch)));
-    if (!gl->run(glPatches, results, error, run)) {
-      if (gl->orderMismatch())
+    if (!driver.run(glPatches, results, error, run)) {
+      if (driver.orderMismatch())
         std::fprintf(stderr, "fftess: error: driver-check: --strict-order needs a driver that emits in the reference "
-                             "order (llvmpipe); %s does not%s (%s)\n", gl->renderer().c_str(),
+                             "order (llvmpipe); %s does not%s (%s)\n", driver.renderer.c_str(),
                      a.permuteCapture ? " with --permute-capture" : "", error.c_str());
       else
-        std::fprintf(stderr, "fftess: error: driver-check: the capture on %s failed: %s\n", gl->renderer().c_str(),
+        std::fprintf(stderr, "fftess: error: driver-check: the capture on %s failed: %s\n", driver.renderer.c_str(),
                      error.c_str());
       return kExitInternal;
     }
@@ -176,9 +227,9 @@ int runDriverCheck(const DriverCheckArgs& a) {
       svg.add(int64_t(i), items[i].line, items[i].patch, &c, cmp);
     }
   }
-  svg.commit("fftess driver-check on " + gl->renderer() + ": " + source, reporter.summary());
-  reporter.finish("gl", "driver: " + gl->renderer() + " (" + gl->version() + "), " + std::to_string(items.size()) +
-                            " patches from " + source + "\n" + simulated.header());
+  svg.commit("fftess driver-check on " + driver.renderer + ": " + source, reporter.summary());
+  reporter.finish(a.api, "driver: " + driver.renderer + " (" + driver.version + "), " + std::to_string(items.size()) +
+                             " patches from " + source + "\n" + simulated.header());
   return reporter.summary().differing ? kExitFindings : kExitClean;
 }
 #endif

@@ -7,7 +7,7 @@
 #  3. no product source file is over 600 lines.
 # Run: cmake -DSOURCE=<repository root> -P tests/architecture_test.cmake
 cmake_minimum_required(VERSION 3.20)
-set(modules base tessellator compare lod verify gl gpu_lod cli bench)
+set(modules base tessellator compare lod verify gl gpu_lod vk cli bench)
 set(allowed_base base)
 set(allowed_tessellator base tessellator)
 set(allowed_compare base tessellator compare)
@@ -15,7 +15,8 @@ set(allowed_lod base lod)
 set(allowed_verify base tessellator lod verify)
 set(allowed_gl base gl)
 set(allowed_gpu_lod base tessellator lod verify gl gpu_lod)
-set(allowed_cli base tessellator compare lod verify gl gpu_lod cli)
+set(allowed_vk base gl vk)
+set(allowed_cli base tessellator compare lod verify gl gpu_lod vk cli)
 set(allowed_bench base tessellator compare lod verify bench)
 set(max_lines 600)
 
