@@ -192,8 +192,8 @@ int runDriverCheck(const DriverCheckArgs& a) {
   Driver driver;
   if (!openDriver(a, driver)) return kExitInternal;
   if (a.hardware && driver.software)
-    std::fprintf(stderr, "fftess: note: driver-check --hardware: no GPU device gave a %s context; running on %s\n",
-                 a.api == "vulkan" ? "Vulkan" : "OpenGL 4.5", driver.renderer.c_str());
+    std::fprintf(stderr, "fftess: note: driver-check --hardware: no GPU device gave %s context; running on %s\n",
+                 a.api == "vulkan" ? "a Vulkan" : "an OpenGL 4.5", driver.renderer.c_str());
   oracle::RunOptions run;
   run.order = a.strictOrder ? oracle::CaptureOrder::Strict : oracle::CaptureOrder::Free;
   run.permuteSeed = a.permuteCapture;
