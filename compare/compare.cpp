@@ -283,6 +283,7 @@ constexpr BugText kBugs[] = {
     {"inside_factors_swapped", "insideU and insideV swapped", "edge bookkeeping"},
     {"tri_barycentrics_permuted", "the output's (u, v) taken from another pair of the barycentrics (u, v, w)",
      "output bookkeeping"},
+    {"isoline_factors_swapped", "isoline density and detail factors swapped", "edge bookkeeping"},
 };
 static_assert(std::size(kBugs) == size_t(PortBug::Count), "a name for every PortBug");
 } // namespace

@@ -72,12 +72,13 @@ enum class PortBug : uint8_t {
   UvSwapped,               // the output's u and v swapped
   InsideFactorsSwapped,    // quad: insideU and insideV swapped
   TriBarycentricsPermuted, // tri: the output (u, v) taken from another pair of the barycentrics (u, v, w)
+  IsolineFactorsSwapped,   // isoline: density and detail swapped (HLSL's ProcessIsolineTessFactors takes detail first)
   Count
 };
 // float_division, no_mirroring, no_special_midpoint, lerp_not_rounded, factors_not_snapped, denormals_flushed,
 // pow2_as_fractional_even, pow2_as_fractional_odd, winding_swapped, outer_factors_rotated, outer_factors_mirrored,
-// outer_factors_v_flipped, domain_v_flipped, uv_swapped, inside_factors_swapped, tri_barycentrics_permuted.
-// Any other value: "?".
+// outer_factors_v_flipped, domain_v_flipped, uv_swapped, inside_factors_swapped, tri_barycentrics_permuted,
+// isoline_factors_swapped. Any other value: "?".
 const char* toString(PortBug b);
 // The bug named s (toString's names); false for any other string.
 bool parsePortBug(const char* s, PortBug& out);
@@ -94,6 +95,8 @@ const char* stepOf(PortBug b);
 //   outer_factors_mirrored   quad: Ueq0<->Ueq1, transposed (Ueq0<->Veq0, Ueq1<->Veq1), reversed (Ueq0<->Veq1,
 //                            Veq0<->Ueq1); tri: Ueq0<->Veq0, Veq0<->Weq0, Ueq0<->Weq0
 //   outer_factors_v_flipped  quad: Veq0<->Veq1          inside_factors_swapped  quad: insideU<->insideV
+//   isoline_factors_swapped  isoline: density<->detail (the batch order is density, detail; HLSL's
+//                            ProcessIsolineTessFactors and GL's gl_TessLevelOuter[0..1] order them otherwise)
 //   domain_v_flipped         quad, isoline: (u, v) written as (u, 1 - v)
 //   uv_swapped               any domain: (u, v) written as (v, u)
 //   tri_barycentrics_permuted tri: (u, v) written as (u, w), (v, u), (v, w), (w, u), (w, v); w = (1 - u) - v in

@@ -46,7 +46,8 @@ bool rewritesCoordinates(PortBug b) {
 
 bool movesFactors(PortBug b) {
   return b == PortBug::OuterFactorsRotated || b == PortBug::OuterFactorsMirrored ||
-         b == PortBug::OuterFactorsVFlipped || b == PortBug::InsideFactorsSwapped;
+         b == PortBug::OuterFactorsVFlipped || b == PortBug::InsideFactorsSwapped ||
+         b == PortBug::IsolineFactorsSwapped;
 }
 
 // The hardware-stage factors of the patch (an hlsl-stage patch preconditioned with 'options').
@@ -78,6 +79,7 @@ void moveFactors(PortBug b, int variant, Patch& p) {
   case PortBug::OuterFactorsMirrored: permuteOuter(p, quad ? kQuadMirrored[variant] : kTriMirrored[variant], n); break;
   case PortBug::OuterFactorsVFlipped: permuteOuter(p, kVFlipped, 4); break;
   case PortBug::InsideFactorsSwapped: std::swap(p.factors[InsideU], p.factors[InsideV]); break;
+  case PortBug::IsolineFactorsSwapped: std::swap(p.factors[0], p.factors[1]); break; // density <-> detail
   default: break;
   }
 }
@@ -131,6 +133,7 @@ int portBugVariants(PortBug b, const Patch& patch) {
   case PortBug::DomainVFlipped: return tri ? 0 : 1;
   case PortBug::UvSwapped: return 1;
   case PortBug::TriBarycentricsPermuted: return tri ? 5 : 0;
+  case PortBug::IsolineFactorsSwapped: return patch.domain == Domain::Isoline ? 1 : 0;
   default: return 0;
   }
 }

@@ -22,7 +22,7 @@ namespace {
 constexpr PortBug kBookkeeping[] = {PortBug::OuterFactorsRotated,  PortBug::OuterFactorsMirrored,
                                     PortBug::OuterFactorsVFlipped, PortBug::DomainVFlipped,
                                     PortBug::UvSwapped,            PortBug::InsideFactorsSwapped,
-                                    PortBug::TriBarycentricsPermuted};
+                                    PortBug::TriBarycentricsPermuted, PortBug::IsolineFactorsSwapped};
 
 Patch patchOf(const char* line) {
   Patch p;
@@ -167,6 +167,10 @@ TEST_CASE("compare: the forms of each bug: counts per domain and the names the r
   CHECK(portBugVariants(PortBug::UvSwapped, tri) == 1);
   CHECK(portBugVariants(PortBug::InsideFactorsSwapped, tri) == 0);
   CHECK(portBugVariants(PortBug::TriBarycentricsPermuted, tri) == 5);
+  CHECK(portBugVariants(PortBug::IsolineFactorsSwapped, iso) == 1);
+  CHECK(portBugVariants(PortBug::IsolineFactorsSwapped, quad) == 0);
+  CHECK(portBugInput(PortBug::IsolineFactorsSwapped, 0, iso).factors[0] == 4.0f); // density gets detail's 4
+  CHECK(portBugInput(PortBug::IsolineFactorsSwapped, 0, iso).factors[1] == 3.0f);
   CHECK(portBugVariants(PortBug::FloatDivision, quad) == 0);
   CHECK(portBugVariantName(PortBug::OuterFactorsRotated, quad, 2) == "by 3: Ueq0 gets Veq1's factor");
   CHECK(portBugVariantName(PortBug::OuterFactorsRotated, tri, 1) == "by 2: Ueq0 gets Weq0's factor");
