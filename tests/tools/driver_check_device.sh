@@ -32,7 +32,7 @@ dc() { # API NAME ARGS...: one driver-check, its stdout in NAME.txt, stderr + ti
 }
 bugs=(outer_factors_rotated:1 outer_factors_rotated:3 outer_factors_mirrored:1 outer_factors_mirrored:2
       outer_factors_v_flipped domain_v_flipped uv_swapped inside_factors_swapped tri_barycentrics_permuted:1
-      winding_swapped pow2_as_fractional_even denormals_flushed)
+      winding_swapped pow2_as_fractional_even denormals_flushed isoline_factors_swapped)
 for api in gl vulkan; do
   dc "$api" "$api" --random "$n" --seed "$seed" --show 3
   dc "$api" "${api}_json" --random "$n" --seed "$seed" --json
