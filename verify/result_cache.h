@@ -1,0 +1,51 @@
+// Internal header of fftess_verify (not installed): the sweep-wide result cache (docs/verify.md, "Sweep shortcuts"),
+// a fixed-capacity set of 128-bit items (key, value) shared by a sweep's threads. The sweep keeps in it what it
+// proved about a shared edge that no later camera needs to prove again: "this edge pair with these two factor bits
+// matched" and the edge's seam proof (seam_proof.h).
+#pragma once
+
+#include <atomic>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+
+namespace fftess::verify::detail {
+
+// A set of (key, value) pairs of 64-bit words, written once and never removed, in one allocation made by the
+// constructor: memory is bytes() whatever is inserted. Lock-free: contains() is two atomic loads per probed slot and
+// never waits; insert() claims an empty slot with one compare-and-swap and never waits either (a slot being written
+// by another thread is passed over). A reader sees an item only once it is completely written (the key word is
+// published last, with release order), so a torn item is never seen. When the probe window of an item (kProbe
+// slots from its hash) holds no empty slot, insert() drops the item and counts it (dropped()): the set is bounded,
+// and a dropped item only costs the work of proving it again.
+class ResultCache {
+public:
+  // capacity: slots, rounded up to a power of two, at least kProbe. Memory: 16 bytes per slot.
+  explicit ResultCache(size_t capacity);
+  ResultCache(const ResultCache&) = delete;
+  ResultCache& operator=(const ResultCache&) = delete;
+
+  // key: any value but 0 and ~0 (reserved: empty and being written). value: any.
+  bool contains(uint64_t key, uint64_t value) const;
+  // True when the item is in the set afterwards (inserted now, or already there). False when it was dropped.
+  bool insert(uint64_t key, uint64_t value);
+
+  size_t capacity() const { return mask_ + 1; }
+  size_t bytes() const { return capacity() * sizeof(Slot); }
+  size_t size() const { return used_.load(std::memory_order_relaxed); } // items inserted
+  int64_t dropped() const { return dropped_.load(std::memory_order_relaxed); }
+
+  static constexpr size_t kProbe = 16; // slots probed from an item's hash, linearly
+
+private:
+  struct Slot {
+    std::atomic<uint64_t> key{0};
+    std::atomic<uint64_t> value{0};
+  };
+  std::unique_ptr<Slot[]> slots_;
+  size_t mask_ = 0;
+  std::atomic<size_t> used_{0};
+  std::atomic<int64_t> dropped_{0};
+};
+
+} // namespace fftess::verify::detail
