@@ -57,6 +57,13 @@ struct CheckOptions {
   bool countOffScreen = false;
   // Also keep which patches are drawn (Report::drawn): pictures of what the camera sees (the cli's check --view).
   bool keepDrawn = false;
+  // Visible first (docs/verify.md, "Sweep shortcuts"): patches whose displaced box is proven off screen
+  // (FrustumTest::boxOffScreen, in double) get no LOD evaluation and no hole check, and shared edge pairs whose two
+  // sides' boxes together are proven off screen are not classified (Stats::patchesOffScreen, edgesOffScreen): what
+  // is skipped could only give off-screen findings, so the on-screen findings and the verdict are those of the full
+  // check. Ignored (the full check runs, Report::visibleFirst false) with countOffScreen or keepDrawn. The cli's
+  // sweep turns it on (--no-visible-first: off); check runs the full check (it lists off-screen findings apart).
+  bool visibleFirst = false;
 };
 
 // The denormal rule one check runs with, and where it came from: the first that is not Auto of
@@ -102,6 +109,11 @@ struct Stats {
   int64_t tJunctionsOffScreen = 0;
   double worstGapWorldOnScreen = 0;  // the maxima of Finding::onScreenGapWorld / onScreenGapPixels
   double worstGapPixelsOnScreen = 0;
+  // Visible first (CheckOptions::visibleFirst): patches proven off screen (not evaluated: neither in culledPatches
+  // nor hole-checked) and shared edge pairs not classified because both sides are proven off screen (neither in
+  // edgesChecked nor in skippedCulled). 0 in a full check.
+  int64_t patchesOffScreen = 0;
+  int64_t edgesOffScreen = 0;
   int64_t cracksOnScreen() const { return cracks - cracksOffScreen; }
   int64_t tJunctionsOnScreen() const { return tJunctions - tJunctionsOffScreen; }
 };
@@ -119,6 +131,7 @@ struct Report {
   bool truncated = false;        // more findings than maxFindings
   Stats stats;
   WorkStats work;                // this camera's work (camera-dependent only; see Terrain::stats())
+  bool visibleFirst = false;     // the check ran visible first (CheckOptions::visibleFirst; Stats::patchesOffScreen)
   // With CheckOptions::keepDrawn: per patch of layoutFor(terrain, camera) 1 when it is drawn (lod/ did not cull it
   // and the tessellator does not discard it), else 0; empty otherwise (or when Report::error is set).
   std::vector<uint8_t> drawn;

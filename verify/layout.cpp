@@ -393,6 +393,11 @@ WorkStats& WorkStats::operator+=(const WorkStats& o) {
   visibilityEvaluations += o.visibilityEvaluations;
   layoutSelections += o.layoutSelections;
   layoutNodes += o.layoutNodes;
+  cacheHits += o.cacheHits;
+  seamHits += o.seamHits;
+  cacheMisses += o.cacheMisses;
+  seamProofs += o.seamProofs;
+  boxTests += o.boxTests;
   return *this;
 }
 

@@ -23,6 +23,8 @@ void accumulate(Stats& s, const Stats& c) {
   s.factorDiffsTessellation += c.factorDiffsTessellation;
   s.denormalFactors += c.denormalFactors;
   s.visibilityTests += c.visibilityTests;
+  s.patchesOffScreen += c.patchesOffScreen;
+  s.edgesOffScreen += c.edgesOffScreen;
   s.worstGapWorld = std::max(s.worstGapWorld, c.worstGapWorld);
   s.worstGapPixels = std::max(s.worstGapPixels, c.worstGapPixels);
   s.cracksOffScreen += c.cracksOffScreen;

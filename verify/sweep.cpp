@@ -11,6 +11,21 @@
 
 namespace fftess::verify {
 
+// Every effect of the scene format that puts camera state into the domain shader's points (domainCamera's
+// PatchDomain): the others (layouts, LOD schemes, clamps, partitionings, lerp formulas, texel formats, the GPU path)
+// change the factors or the points only through values the cache keys by (the two factors' bits) or that are the
+// same for every camera.
+std::vector<std::string> cameraDependentEffects(const Scene& s) {
+  std::vector<std::string> out;
+  const bool displaced = s.displacement.kind != DisplacementKind::None;
+  if (displaced && s.lod.scheme == LodScheme::Geomorph)
+    out.push_back("lod.scheme = \"geomorph\": edge vertices morph by the camera's distance");
+  if (displaced && s.displacement.mip != MipMode::None)
+    out.push_back(std::string("displacement.mip = \"") + toString(s.displacement.mip) +
+                  "\": the height is sampled at the camera's mip level");
+  return out;
+}
+
 SweepResult sweep(const Terrain& terrain, const std::vector<Camera>& cameras, const CheckOptions& options,
                   const SweepOptions& sweepOptions) {
   return sweep(terrain, cameras.size(), [&cameras](size_t i) { return cameras[i]; }, options, sweepOptions);

@@ -52,7 +52,19 @@ struct SweepOptions {
   // Keep one CameraResult per camera in SweepResult::cameras (default). false: SweepResult::cameras stays empty and
   // the sweep's memory does not grow with the camera count (the aggregates are kept; onCamera sees each camera).
   bool keepCameras = true;
+  // The sweep-wide result cache (docs/verify.md, "Sweep shortcuts"; result_cache.h): what one camera proved about a
+  // shared edge (a match for two factor bits; the edge's seam proof) is reused by every later camera, on every
+  // thread. Off by itself (SweepResult::resultCacheOff says why) when the scene calls for a camera-dependent effect
+  // (cameraDependentEffects), with CheckOptions::keepMatches (a cached match has no finding to keep), and for the
+  // pairs of the fault-injection hook's patch (they always see the perturbed computation).
+  bool resultCache = true;
+  size_t resultCacheSlots = size_t(1) << 18; // its bound: 16 bytes per slot (4 MiB), allocated once per sweep
 };
+
+// The effects of a scene that make a shared edge's check depend on the camera beyond its two factors, each as the
+// scene key that asks for it and why ("lod.scheme = \"geomorph\": vertices morph by the camera's distance"); empty:
+// none. Each effect the scene format offers declares here whether it is camera-dependent.
+std::vector<std::string> cameraDependentEffects(const Scene& scene);
 
 // The result of a sweep: the totals over the cameras checked, and what SweepOptions asked to keep.
 struct SweepResult {
@@ -65,6 +77,14 @@ struct SweepResult {
   size_t camerasNothingChecked = 0;  // cameras done that classified no shared edge (everything culled, say)
   size_t camerasUndecided = 0;       // cameras done with Stats::undecided > 0 (not clean)
   bool cancelled = false;
+  // What the shortcuts did (docs/verify.md, "Sweep shortcuts"): visibleFirst when every camera ran visible first;
+  // the result cache's state (resultCacheOff: empty when it was on, else why not) and, when on, its size.
+  bool visibleFirst = false;
+  bool resultCache = false;
+  std::string resultCacheOff;
+  size_t resultCacheBytes = 0;
+  size_t resultCacheItems = 0;
+  int64_t resultCacheDropped = 0;
 };
 
 // Checks every camera against the one prepared terrain (shared read-only by the threads).

@@ -36,6 +36,12 @@ struct WorkStats {
   int64_t layoutSelections = 0; // camera-dependent layouts selected (layout.kind = "quadtree": one per camera
                                  // checked; 0 for static layouts)
   int64_t layoutNodes = 0;      // quadtree nodes visited by those selections (split tests and balance passes)
+  // The sweep's shortcuts (docs/verify.md, "Sweep shortcuts"). Edge pairs decided without evaluating their points:
+  int64_t cacheHits = 0;        // by the result cache: the same pair with the same two factor bits matched before
+  int64_t seamHits = 0;         // by a seam proof: same-size sides with the same edge points (seam_proof.h)
+  int64_t cacheMisses = 0;      // pairs the cache was asked about and did not know (classified, then stored on a match)
+  int64_t seamProofs = 0;       // seam proofs made (once per shared edge and sweep, unless the cache dropped one)
+  int64_t boxTests = 0;         // visible first: frustum tests of boxes (tree nodes, patches, pairs' joint boxes)
   WorkStats& operator+=(const WorkStats& o);
 };
 
