@@ -12,6 +12,7 @@
 // Only the outer edges are tessellated.
 #include "verify/check.h"
 #include "verify/internal.h"
+#include "verify/seam_proof.h"
 #include "verify/testing.h" // Fault: the hook this file implements
 
 #include <algorithm>
@@ -58,10 +59,10 @@ float midpointW(const lod::Camera& cam, const TerrainPatch& p, int e) {
 
 // Every denormal hull factor the source returned (before faults and before any flush): Report::denormalFactors.
 void noteDenormals(const TerrainData& t, const std::vector<lod::PatchLod>& factors, bool flushed, size_t keep,
-                   Report& rep) {
+                   const std::vector<char>* need, Report& rep) {
   rep.denormalsFlushed = flushed;
   for (size_t i = 0; i < factors.size(); ++i)
-    for (int k = 0; k < 6; ++k) {
+    for (int k = 0; k < 6 && (!need || (*need)[i]); ++k) {
       const float f = factors[i].factors[k];
       if (std::fpclassify(f) != FP_SUBNORMAL) continue;
       ++rep.stats.denormalFactors;
@@ -157,12 +158,13 @@ void compareFactors(const TerrainData& t, const std::vector<lod::PatchLod>& fact
 // Stage 2: the LOD's factors of every patch into cache.factors (computeFactorsFor), the denormals among them and the
 // GPU-vs-C++ differences. False with rep.error when the factors cannot be had (the GPU path without a provider, or
 // the provider failed).
-bool evaluateFactors(const TerrainData& t, const Camera& camera, const CheckOptions& options, EdgeCache& cache,
-                     Report& rep) {
+bool evaluateFactors(const TerrainData& t, const Camera& camera, const CheckOptions& options,
+                     const std::vector<char>* need, EdgeCache& cache, Report& rep) {
   std::vector<lod::PatchLod>& factors = cache.factors; // per-thread scratch, reused camera to camera
   std::vector<lod::PatchLod> cpuFactors;                // lod.evaluate = "gpu": the C++ build's, for comparison
-  if (!computeFactorsFor(t, camera, options.factors.get(), factors, &cpuFactors, rep.work, rep.error)) return false;
-  noteDenormals(t, factors, denormalRule(t.scene, options).flush, options.maxFindings, rep);
+  if (!computeFactorsFor(t, camera, options.factors.get(), factors, &cpuFactors, rep.work, rep.error, need))
+    return false;
+  noteDenormals(t, factors, denormalRule(t.scene, options).flush, options.maxFindings, need, rep);
   if (!cpuFactors.empty()) compareFactors(t, factors, cpuFactors, options.maxFindings, cache, rep);
   return true;
 }
@@ -199,6 +201,8 @@ struct CameraCheck {
   const FrustumTest& frustum;
   EdgeCache& cache; // edge points; cache.ep and cache.culled are filled by findUndrawnPatches
   Report& rep;
+  const std::vector<char>* need; // visible first: the patches to evaluate (null: all)
+  SweepMemo* memo;               // the sweep's result cache and seam proofs (null: none)
 };
 
 // Adds a not-drawn patch's record to the report: a hole (Visible), or an undecided patch.
@@ -234,6 +238,7 @@ void findUndrawnPatches(const CameraCheck& c) {
   limits.maxDepth = c.options.visibilityDepth;
   limits.maxSubRectangles = std::max<int64_t>(1, c.options.visibilityBudget);
   for (size_t i = 0; i < n; ++i) {
+    if (c.need && !(*c.need)[i]) continue; // visible first: proven off screen, and no selected pair has it
     const bool lodCulled = c.factors[i].why.culled;
     // A patch lod/ culled is not drawn whatever its factors: no edge query, no domain point (only the hole check's
     // visibility decision below, when its box touches the frustum).
@@ -374,7 +379,8 @@ void recordFinding(const CameraCheck& c, const EdgeScratch& s, const SharedPart&
 // Stage 5b: one pair of sides, edge e of patch ia (its points already in s.fullA / s.domA) and the opposite edge of
 // patch ib: side b's points, the shared part, bits compared, then (not a match) classifyExact. False with rep.error
 // when a vertex is not finite (never handed to CGAL): the check ends there.
-bool checkEdgePair(const CameraCheck& c, EdgeScratch& s, size_t ia, int e, size_t ib) {
+bool checkEdgePair(const CameraCheck& c, EdgeScratch& s, size_t ia, int e, size_t ib, uint64_t storeKey,
+                   uint64_t storeValue) {
   Report& rep = c.rep;
   const TerrainPatch& A = c.t.patches[ia];
   const TerrainPatch& B = c.t.patches[ib];
@@ -420,6 +426,7 @@ bool checkEdgePair(const CameraCheck& c, EdgeScratch& s, size_t ia, int e, size_
   }
   if (!match)
     v = classifyExact(c.options.kernel, a, na, s.fullA.data(), pa.count, s.pb.data(), pbp.count, &c.frustum);
+  if (storeKey != 0 && v.classification == Classification::Match) c.memo->results.insert(storeKey, storeValue);
   switch (v.classification) {
   case Classification::Match: ++rep.stats.matches; break;
   case Classification::TJunction: ++rep.stats.tJunctions; break;
@@ -430,50 +437,142 @@ bool checkEdgePair(const CameraCheck& c, EdgeScratch& s, size_t ia, int e, size_
   return true;
 }
 
-// Stage 5: every shared edge, once: edge e of patch ia with its partners across it (the smaller neighbours, or one
-// of the same size with a higher index; the bigger side or the lower index handles an edge). Pairs with a side not
-// drawn are skipped (Stats::skippedCulled). False when checkEdgePair ended the check.
-bool checkSharedEdges(const CameraCheck& c) {
-  const TerrainData& t = c.t;
+// The sweep's shortcuts for one pair (docs/verify.md, "Sweep shortcuts"). The result cache's values for seam proofs
+// of pairs without a number (quadtree layouts); a factor pair never takes them (a side with factor bits 0 is culled).
+constexpr uint64_t kSeamIdentical = 0, kSeamNotProven = 1;
+
+// The pair's key in the sweep's memo, the same for every camera: its number (static layouts), else the two quadtree
+// nodes' ids and the edge; 0: none (ids too large to pack).
+uint64_t memoKey(const CameraCheck& c, const EdgePair& p) {
+  if (p.number >= 0) return static_cast<uint64_t>(p.number) + 1;
+  if (!c.t.quadtree) return 0;
+  const int na = c.t.patches[static_cast<size_t>(p.ia)].ref.patch, nb = c.t.patches[static_cast<size_t>(p.ib)].ref.patch;
+  if (na < 0 || nb < 0 || na >= (1 << 29)) return 0;
+  return (static_cast<uint64_t>(na) << 34) | (static_cast<uint64_t>(p.e) << 32) | static_cast<uint32_t>(nb);
+}
+
+// The edge's seam proof (seam_proof.h): made by the first camera that needs it, then read by every other.
+SeamProof seamOf(const CameraCheck& c, const EdgePair& p, uint64_t key) {
+  SweepMemo& m = *c.memo;
+  const TerrainPatch& A = c.t.patches[static_cast<size_t>(p.ia)];
+  const TerrainPatch& B = c.t.patches[static_cast<size_t>(p.ib)];
+  if (p.number >= 0 && static_cast<size_t>(p.number) < m.seamCount) {
+    std::atomic<uint8_t>& slot = m.seams[static_cast<size_t>(p.number)];
+    uint8_t v = slot.load(std::memory_order_relaxed);
+    if (v == static_cast<uint8_t>(SeamProof::Unknown)) {
+      ++c.rep.work.seamProofs;
+      v = static_cast<uint8_t>(proveSeam(c.t, A, p.e, B));
+      slot.store(v, std::memory_order_relaxed); // a byte: whole or not at all; two threads prove the same
+    }
+    return static_cast<SeamProof>(v);
+  }
+  if (m.results.contains(key, kSeamIdentical)) return SeamProof::Identical;
+  if (m.results.contains(key, kSeamNotProven)) return SeamProof::NotProven;
+  ++c.rep.work.seamProofs;
+  const SeamProof r = proveSeam(c.t, A, p.e, B);
+  m.results.insert(key, r == SeamProof::Identical ? kSeamIdentical : kSeamNotProven);
+  return r;
+}
+
+bool sameEdgePoints(const EdgePoints& a, const EdgePoints& b) {
+  if (&a == &b) return true;
+  if (a.count != b.count) return false;
+  for (int j = 0; j < a.count; ++j)
+    if (bitsOf(a.param[j]) != bitsOf(b.param[j])) return false;
+  return true;
+}
+
+// True when the memo decides the pair a match without evaluating a point: a same-size pair with the same edge points
+// on both sides and a proven seam, or a pair whose two factor bits matched on an earlier camera. Otherwise storeKey /
+// storeValue say where the pair's result goes if it is a match (storeKey 0: nowhere). The fault hook's patch never
+// takes a shortcut: its pairs always see the perturbed computation.
+bool decidedByMemo(const CameraCheck& c, const EdgePair& p, uint64_t& storeKey, uint64_t& storeValue) {
+  storeKey = 0;
+  if (!c.memo) return false;
+  if (c.fault.atPatch(static_cast<size_t>(p.ia)) || c.fault.atPatch(static_cast<size_t>(p.ib))) return false;
+  const uint64_t key = memoKey(c, p);
+  if (key == 0) return false;
+  const int eb = kOpposite[p.e];
+  WorkStats& w = c.rep.work;
+  const EdgePoints& pa = *c.cache.ep[static_cast<size_t>(p.ia)][p.e];
+  const EdgePoints& pb = *c.cache.ep[static_cast<size_t>(p.ib)][eb];
+  if (c.t.patches[static_cast<size_t>(p.ia)].size == c.t.patches[static_cast<size_t>(p.ib)].size &&
+      sameEdgePoints(pa, pb) && seamOf(c, p, key) == SeamProof::Identical) {
+    ++w.seamHits;
+    return true;
+  }
+  const uint64_t value = (static_cast<uint64_t>(bitsOf(c.factors[static_cast<size_t>(p.ia)].factors[p.e])) << 32) |
+                         bitsOf(c.factors[static_cast<size_t>(p.ib)].factors[eb]);
+  if (c.memo->results.contains(key, value)) {
+    ++w.cacheHits;
+    return true;
+  }
+  ++w.cacheMisses;
+  storeKey = key;
+  storeValue = value;
+  return false;
+}
+
+// Stage 5, one pair: skipped when a side is not drawn (Stats::skippedCulled), decided by the memo, or classified
+// (side a's whole edge evaluated once for all its partners). False when checkEdgePair ended the check.
+struct PairWalker {
+  const CameraCheck& c;
   EdgeScratch s;
+  int32_t fullPatch = -1;
+  int32_t fullEdge = -1;
+
+  bool visit(const EdgePair& p) {
+    const std::vector<char>& culled = c.cache.culled;
+    if (culled[static_cast<size_t>(p.ia)] || culled[static_cast<size_t>(p.ib)]) {
+      ++c.rep.stats.skippedCulled;
+      return true;
+    }
+    uint64_t storeKey = 0, storeValue = 0;
+    if (decidedByMemo(c, p, storeKey, storeValue)) {
+      ++c.rep.stats.edgesChecked;
+      ++c.rep.stats.matches;
+      return true;
+    }
+    const size_t ia = static_cast<size_t>(p.ia);
+    if (fullPatch != p.ia || fullEdge != p.e) {
+      edgeWorld(c, ia, p.e, *c.cache.ep[ia][p.e], s.fullA, &s.domA);
+      fullPatch = p.ia;
+      fullEdge = p.e;
+    }
+    return checkEdgePair(c, s, ia, p.e, static_cast<size_t>(p.ib), storeKey, storeValue);
+  }
+};
+
+// Stage 5: every shared edge, once (forEachEdgePair: the bigger side or the lower index handles an edge), or with
+// visible first the selected pairs (in the same order). False when checkEdgePair ended the check.
+bool checkSharedEdges(const CameraCheck& c, const std::vector<EdgePair>* selected) {
+  const TerrainData& t = c.t;
+  PairWalker walker{c, {}};
   // Shared edge points are evaluated once: where the height is a function of the flat x/z alone (domain.height_uv =
   // "world", no per-camera domain state: no geomorph, no mip level) a point of side b whose flat x and z have the
   // same bits as side a's point at the same place takes a's height instead of sampling again (the same inputs give
   // the same float result). Counted in WorkStats::sharedEdgePoints, not in domainEvaluations / heightSamples.
   // Never with a fault (its perturbations of side a must not leak into side b).
-  s.shareHeights = t.scene.domain.heightUv == HeightUv::World && c.domainCam.patches.empty() && !c.fault.on &&
-                   t.scene.displacement.kind != DisplacementKind::None;
-  const std::vector<char>& culled = c.cache.culled;
-  for (size_t ia = 0; ia < t.patches.size(); ++ia) {
-    const TerrainPatch& A = t.patches[ia];
-    for (int e = 0; e < 4; ++e) {
-      const int32_t* first = t.neighboursBegin(A, e);
-      const int32_t* last = t.neighboursEnd(A, e);
-      if (first == last) continue;
-      const TerrainPatch& B0 = t.patches[static_cast<size_t>(*first)];
-      if (B0.size > A.size || (B0.size == A.size && *first < static_cast<int>(ia)))
-        continue; // the bigger side or the lower index handles this edge
-      bool fullDone = false;
-      for (const int32_t* k = first; k != last; ++k) {
-        const int ib = *k;
-        if (culled[ia] || culled[ib]) {
-          ++c.rep.stats.skippedCulled;
-          continue;
-        }
-        if (!fullDone) {
-          edgeWorld(c, ia, e, *c.cache.ep[ia][e], s.fullA, &s.domA);
-          fullDone = true;
-        }
-        if (!checkEdgePair(c, s, ia, e, static_cast<size_t>(ib))) return false;
-      }
-    }
+  walker.s.shareHeights = t.scene.domain.heightUv == HeightUv::World && c.domainCam.patches.empty() && !c.fault.on &&
+                          t.scene.displacement.kind != DisplacementKind::None;
+  if (selected) {
+    for (const EdgePair& p : *selected)
+      if (!walker.visit(p)) return false;
+    return true;
   }
-  return true;
+  bool ok = true;
+  int32_t number = 0; // static layouts number their pairs in this order (PatchTree::allPairs)
+  forEachEdgePair(t, [&](int32_t ia, int e, int32_t ib) {
+    const EdgePair p{ia, ib, e, t.tree ? number++ : -1};
+    if (ok) ok = walker.visit(p);
+  });
+  return ok;
 }
 
 } // namespace
 
-Report checkTerrain(const TerrainData& prepared, const Camera& camera, const CheckOptions& options, EdgeCache& cache) {
+Report checkTerrain(const TerrainData& prepared, const Camera& camera, const CheckOptions& options, EdgeCache& cache,
+                    SweepMemo* memo) {
   Report rep;
   cache.newCamera(); // no EdgePoints reference outlives a camera
   if (!validateCamera(camera, rep.error)) return rep;
@@ -484,18 +583,25 @@ Report checkTerrain(const TerrainData& prepared, const Camera& camera, const Che
   }
   const TerrainData& t = prepared.quadtree ? *cache.layout : prepared;
   rep.stats.patches = static_cast<int64_t>(t.patches.size());
-  if (!evaluateFactors(t, camera, options, cache, rep)) return rep;
-  const FaultSite fault = faultSite(options, t.patches.size());
-  injectFactorFault(t, fault, toLodCamera(camera), cache.factors);
-  const DomainCamera domainCam = domainCamera(t, cache.factors); // per-patch domain state (geomorph, mip levels)
   // The verifier's geometry (frustum, on-screen, pixels) in GL whatever camera.convention: the same frustum.
   const lod::Camera view = detail::viewCamera(camera);
   const FrustumTest frustum(view);
-  const CameraCheck c{t, camera, options, fault, cache.factors, view, domainCam, frustum, cache, rep};
+  // Visible first: what could show this camera something (visible_first.cpp); the rest is never evaluated.
+  rep.visibleFirst = options.visibleFirst && !options.countOffScreen && !options.keepDrawn;
+  if (rep.visibleFirst) {
+    if (!cache.visible) cache.visible = std::make_unique<VisibleSelection>();
+    selectVisible(t, frustum, *cache.visible, rep.stats, rep.work);
+  }
+  const std::vector<char>* need = rep.visibleFirst ? &cache.visible->need : nullptr;
+  if (!evaluateFactors(t, camera, options, need, cache, rep)) return rep;
+  const FaultSite fault = faultSite(options, t.patches.size());
+  injectFactorFault(t, fault, toLodCamera(camera), cache.factors);
+  const DomainCamera domainCam = domainCamera(t, cache.factors); // per-patch domain state (geomorph, mip levels)
+  const CameraCheck c{t, camera, options, fault, cache.factors, view, domainCam, frustum, cache, rep, need, memo};
   findUndrawnPatches(c);
   if (options.keepDrawn)
     for (const char k : cache.culled) rep.drawn.push_back(k ? 0 : 1);
-  checkSharedEdges(c);
+  checkSharedEdges(c, rep.visibleFirst ? &cache.visible->pairs : nullptr);
   return rep;
 }
 

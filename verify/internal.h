@@ -3,6 +3,7 @@
 
 #include "base/bits.h"
 #include "verify/check.h" // and through it every stage header up to the check
+#include "verify/result_cache.h"
 #include "verify/view_mesh.h"
 
 #include <array>
@@ -54,6 +55,7 @@ std::vector<MipLevel> buildMipChain(const std::vector<float>& texels, int width,
 // layout.cpp: the prepared terrain.
 
 struct QuadtreeNodes; // layout_quadtree.cpp
+struct PatchTree;     // visible_first.cpp
 
 struct TerrainPatch {
   PatchRef ref;
@@ -112,6 +114,8 @@ struct TerrainData {
   // layout.kind = "quadtree": the camera-independent node pyramid (layout_quadtree.cpp), shared by every camera's
   // layout; patches then hold one camera's leaves (prepareTerrain: the scene camera's; cameraLayout: any camera's).
   std::shared_ptr<const QuadtreeNodes> quadtree;
+  // Static layouts: the bounding-volume tree visible first walks (visible_first.cpp); null for quadtree layouts.
+  std::shared_ptr<const PatchTree> tree;
   // cameraLayout's scratch (a per-thread layout reused from camera to camera: the selection's marks and lists).
   std::shared_ptr<struct QuadtreeSelection> selection;
   // Changes whenever cameraLayout puts another camera's patches here (0: a static layout), so that a consumer that
@@ -202,7 +206,10 @@ lod::Camera toLodCamera(const Camera& c);
 lod::Camera viewCamera(const Camera& c);
 // Hull-shader factors and lod/'s record of every patch for a camera (lod.h order). Adds the lod/ calls to
 // work.lodEvaluations. Constant scheme: every factor lod.factor, an empty record.
-void computeFactors(const TerrainData& t, const Camera& camera, std::vector<lod::PatchLod>& out, WorkStats& work);
+// need: null, or only the patches i with (*need)[i] != 0 (the others' entries are left as they are), except for
+// geomorph, whose factors need every patch's level (all are computed).
+void computeFactors(const TerrainData& t, const Camera& camera, std::vector<lod::PatchLod>& out, WorkStats& work,
+                    const std::vector<char>* need = nullptr);
 // The scene asks for the GPU path (lod.shader, or lod.evaluate = "gpu").
 // Scene files (scene_content.cpp): the size limit of a scene file and of a lod.shader file; readBounded reads a file
 // whole when it holds at most limit bytes (1), else -1 (larger: read only up to the limit) or 0 (cannot read);
@@ -217,10 +224,10 @@ bool usesGpu(const Scene& s);
 Options tessellatorOptions(const Scene& s, const CheckOptions& options);
 // The factors the check uses: computeFactors, or (usesGpu) the provider's, and then, when cpu is given and
 // lod.scheme is a built-in scheme, the C++ build's into *cpu (not counted in work). False with error when the GPU
-// path is asked for without a provider or the provider fails.
+// path is asked for without a provider or the provider fails. need: computeFactors' (the GPU path computes all).
 bool computeFactorsFor(const TerrainData& t, const Camera& camera, FactorProvider* gpu,
                        std::vector<lod::PatchLod>& out, std::vector<lod::PatchLod>* cpu, WorkStats& work,
-                       std::string& error);
+                       std::string& error, const std::vector<char>* need = nullptr);
 // One patch's factors with the given tile neighbours (every scheme but geomorph, whose factors need its
 // neighbours' levels): what computeFactors runs per patch; the fault injection's NeighbourSize runs it with a
 // wrong size.
@@ -267,6 +274,7 @@ public:
   std::vector<lod::PatchLod> factors;
   std::vector<std::array<const EdgePoints*, 4>> ep;
   std::vector<char> culled;
+  std::unique_ptr<struct VisibleSelection> visible; // CheckOptions::visibleFirst's selection
 
 private:
   void grow();
@@ -291,6 +299,80 @@ inline DomainPoint edgeDomain(int e, float t) {
   default: return {t, 1.0f};
   }
 }
+
+// ---------------------------------------------------------------------------------------------------------------
+// visible_first.cpp: CheckOptions::visibleFirst (docs/verify.md, "Sweep shortcuts").
+
+class FrustumTest;
+
+// One shared edge pair as the check classifies it: edge e of patch ia against the opposite edge of patch ib (ia is
+// the bigger side or, between equals, the lower index).
+struct EdgePair {
+  int32_t ia = 0, ib = 0;
+  int32_t e = 0;
+  int32_t number = -1; // static layouts: the pair's number in PatchTree::allPairs (the same for every camera)
+};
+// Calls fn(ia, e, ib) for every shared edge pair of t in the check's order (layout order of ia, then e, then the
+// neighbours along the edge): the order findings are reported in.
+template <class Fn> void forEachEdgePair(const TerrainData& t, Fn&& fn) {
+  for (size_t ia = 0; ia < t.patches.size(); ++ia) {
+    const TerrainPatch& A = t.patches[ia];
+    for (int e = 0; e < 4; ++e) {
+      const int32_t* first = t.neighboursBegin(A, e);
+      const int32_t* last = t.neighboursEnd(A, e);
+      if (first == last) continue;
+      const TerrainPatch& B0 = t.patches[static_cast<size_t>(*first)];
+      if (B0.size > A.size || (B0.size == A.size && *first < static_cast<int>(ia))) continue;
+      for (const int32_t* k = first; k != last; ++k) fn(static_cast<int32_t>(ia), e, *k);
+    }
+  }
+}
+// The box every domain point of p lies in, for any camera (the hole check's whole-patch box, patchVisibility's
+// first test): the flat corners' bounds padded by 2^-20 of their magnitude in x and z, y from surfaceMinY /
+// surfaceMaxY (every level the scene samples). In double.
+void patchBox(const TerrainPatch& p, glm::dvec3& lo, glm::dvec3& hi);
+// A bounding-volume tree over a static layout's patch boxes (prepareTerrain builds it; quadtree layouts, whose
+// patches change per camera, have none and are scanned linearly), with every shared edge pair filed at the lowest
+// node that holds both its patches: a node proven off screen proves its pairs off screen too (their joint box lies
+// in the node's box).
+struct PatchTree {
+  struct Node {
+    glm::dvec3 lo{0}, hi{0};
+    int32_t child[2] = {-1, -1};  // -1: a leaf
+    int32_t first = 0, count = 0; // a leaf's patches: order[first .. first + count)
+    int32_t pairFirst = 0, pairCount = 0; // pairs[pairFirst .. + pairCount): the pairs filed here
+  };
+  std::vector<Node> nodes;        // nodes[0] is the root
+  std::vector<int32_t> order;     // patch indices, leaf by leaf
+  std::vector<int32_t> pairs;     // pair numbers (into allPairs), grouped by node
+  std::vector<EdgePair> allPairs; // every shared edge pair, in the check's order (forEachEdgePair)
+  std::vector<glm::dvec3> boxLo, boxHi; // patchBox of every patch
+};
+std::shared_ptr<const PatchTree> buildPatchTree(const TerrainData& t);
+// The camera's selection (visible first), into the per-thread scratch: need[i] = 1 for the patches whose factors
+// the check needs (their box is not proven off screen, or they are a side of a selected pair), pairs = the shared
+// edge pairs whose joint box is not proven off screen, in the check's order. Sets stats.patchesOffScreen and
+// stats.edgesOffScreen; adds the frustum tests to work.boxTests.
+struct VisibleSelection {
+  std::vector<char> need, live;
+  std::vector<EdgePair> pairs;
+  std::vector<uint64_t> pairBits;
+  std::vector<int32_t> stack, liveNodes;
+};
+void selectVisible(const TerrainData& t, const FrustumTest& frustum, VisibleSelection& out, Stats& stats,
+                   WorkStats& work);
+
+// What a sweep's cameras proved about its shared edges, for every later camera (SweepOptions::resultCache; docs/
+// verify.md, "Sweep shortcuts"): the result cache (matched factor pairs; seam proofs of quadtree layouts, whose pairs
+// have no fixed number) and, for static layouts, the seam proof of every pair by its number (SeamProof as a byte,
+// 0 = not asked yet). Memory: 16 bytes per cache slot plus one byte per pair, allocated once.
+struct SweepMemo {
+  SweepMemo(size_t slots, size_t pairs);
+  ResultCache results;
+  std::unique_ptr<std::atomic<uint8_t>[]> seams;
+  size_t seamCount = 0;
+  size_t bytes() const { return results.bytes() + seamCount; }
+};
 
 // ---------------------------------------------------------------------------------------------------------------
 // check_exact.cpp (CGAL)
@@ -319,7 +401,9 @@ ExactVerdict classifyExact(Kernel kernel, const glm::vec3* a, int na, const glm:
 // ---------------------------------------------------------------------------------------------------------------
 // check.cpp
 
-Report checkTerrain(const TerrainData& t, const Camera& camera, const CheckOptions& options, EdgeCache& cache);
+// memo: the sweep's (SweepOptions::resultCache), or null (no cache; checkScene).
+Report checkTerrain(const TerrainData& t, const Camera& camera, const CheckOptions& options, EdgeCache& cache,
+                    SweepMemo* memo = nullptr);
 bool validateCamera(const Camera& c, std::string& error);
 
 // ---------------------------------------------------------------------------------------------------------------

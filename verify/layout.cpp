@@ -427,6 +427,7 @@ TerrainResult prepareTerrain(const Scene& scene) {
   }
   detail::prepareLod(*data);
   detail::prepareSurfaceBounds(*data);
+  data->tree = detail::buildPatchTree(*data);
   data->work.terrainBuilds = 1;
   ++detail::gTerrainBuilds;
   r.terrain.data_ = std::move(data);

@@ -55,7 +55,8 @@ lod::PatchLod patchLod(const TerrainData& t, const TerrainPatch& p, const lod::T
   return lod::PatchLod{};
 }
 
-void computeFactors(const TerrainData& t, const Camera& camera, std::vector<lod::PatchLod>& out, WorkStats& work) {
+void computeFactors(const TerrainData& t, const Camera& camera, std::vector<lod::PatchLod>& out, WorkStats& work,
+                    const std::vector<char>* need) {
   const Lod& L = t.scene.lod;
   out.resize(t.patches.size());
   // The tile-ring neighbour rule runs for every scheme but patch_center (a negative control, left as it is) where
@@ -65,6 +66,7 @@ void computeFactors(const TerrainData& t, const Camera& camera, std::vector<lod:
   const lod::TileAdjacency adj{L.screenSphere.clamp, L.screenSphere.reconstruction};
   if (L.scheme == LodScheme::Constant) {
     for (size_t i = 0; i < t.patches.size(); ++i) {
+      if (need && !(*need)[i]) continue;
       lod::PatchLod& r = out[i];
       if (tile) {
         r = lod::constantTile(L.factor, t.patches[i].tile, adj);
@@ -92,8 +94,13 @@ void computeFactors(const TerrainData& t, const Camera& camera, std::vector<lod:
     work.lodEvaluations += static_cast<int64_t>(t.patches.size());
     return;
   }
-  for (size_t i = 0; i < t.patches.size(); ++i) out[i] = patchLod(t, t.patches[i], t.patches[i].tile, cam);
-  work.lodEvaluations += static_cast<int64_t>(t.patches.size());
+  int64_t evaluated = 0;
+  for (size_t i = 0; i < t.patches.size(); ++i) {
+    if (need && !(*need)[i]) continue;
+    out[i] = patchLod(t, t.patches[i], t.patches[i].tile, cam);
+    ++evaluated;
+  }
+  work.lodEvaluations += evaluated;
 }
 
 bool usesGpu(const Scene& s) { return !s.lod.shader.empty() || s.lod.evaluate == LodEvaluate::Gpu; }
@@ -106,10 +113,10 @@ Options tessellatorOptions(const Scene& s, const CheckOptions& options) {
 
 bool computeFactorsFor(const TerrainData& t, const Camera& camera, FactorProvider* gpu,
                        std::vector<lod::PatchLod>& out, std::vector<lod::PatchLod>* cpu, WorkStats& work,
-                       std::string& error) {
+                       std::string& error, const std::vector<char>* need) {
   const Scene& s = t.scene;
   if (!usesGpu(s)) {
-    computeFactors(t, camera, out, work);
+    computeFactors(t, camera, out, work, need);
     return true;
   }
   if (!gpu) {

@@ -46,6 +46,19 @@ SweepResult sweep(const Terrain& terrain, size_t count, const std::function<Came
                                          : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   threads = static_cast<int>(std::min<size_t>(static_cast<size_t>(threads), std::max<size_t>(count, 1)));
 
+  // The sweep-wide memo (result cache and seam proofs), unless the scene or the options rule it out.
+  std::unique_ptr<detail::SweepMemo> memo;
+  const std::vector<std::string> effects = cameraDependentEffects(scene);
+  if (!sweepOptions.resultCache) out.resultCacheOff = "turned off (SweepOptions::resultCache; the cli's --no-result-cache)";
+  else if (!effects.empty()) out.resultCacheOff = "camera-dependent effect: " + effects.front();
+  else if (options.keepMatches) out.resultCacheOff = "matches are kept (CheckOptions::keepMatches): a cached match has no record";
+  else {
+    const detail::TerrainData& t = terrain.data();
+    memo = std::make_unique<detail::SweepMemo>(sweepOptions.resultCacheSlots, t.tree ? t.tree->allPairs.size() : 0);
+  }
+  out.resultCache = memo != nullptr;
+  bool allVisibleFirst = true;
+
   std::atomic<size_t> next{0};
   std::mutex mutex; // serialises the callbacks and the aggregates
   size_t done = 0;
@@ -56,7 +69,7 @@ SweepResult sweep(const Terrain& terrain, size_t count, const std::function<Came
       if (sweepOptions.cancel && sweepOptions.cancel->load()) return;
       const size_t i = next.fetch_add(1);
       if (i >= count) return;
-      Report rep = detail::checkTerrain(terrain.data(), cameraAt(i), options, cache);
+      Report rep = detail::checkTerrain(terrain.data(), cameraAt(i), options, cache, memo.get());
       cr.cameraIndex = i;
       cr.done = rep.error.empty();
       cr.error = rep.error;
@@ -83,6 +96,7 @@ SweepResult sweep(const Terrain& terrain, size_t count, const std::function<Came
           if (cr.stats.edgesChecked == 0) ++out.camerasNothingChecked;
           if (cr.stats.undecided > 0) ++out.camerasUndecided;
           out.work += rep.work;
+          allVisibleFirst = allVisibleFirst && rep.visibleFirst;
           accumulate(out.total, cr.stats);
         }
         if (sweepOptions.keepCameras) out.cameras[i] = cr;
@@ -99,6 +113,12 @@ SweepResult sweep(const Terrain& terrain, size_t count, const std::function<Came
   worker();
   for (auto& th : pool) th.join();
 
+  out.visibleFirst = out.camerasDone > 0 && allVisibleFirst;
+  if (memo) {
+    out.resultCacheBytes = memo->bytes();
+    out.resultCacheItems = memo->results.size();
+    out.resultCacheDropped = memo->results.dropped();
+  }
   out.cancelled = sweepOptions.cancel && sweepOptions.cancel->load() && out.camerasDone + out.camerasInvalid < count;
   return out;
 }

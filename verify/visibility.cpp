@@ -269,16 +269,8 @@ VisibilityDecision patchVisibility(const TerrainData& t, const TerrainPatch& p, 
   VisibilityDecision out;
   {
     // The whole patch's box from the prepared bounds (every level the scene samples): most patches stop here.
-    glm::dvec3 lo(p.corners[0]), hi(p.corners[0]);
-    for (const glm::vec3& c : p.corners) {
-      lo = glm::min(lo, glm::dvec3(c));
-      hi = glm::max(hi, glm::dvec3(c));
-    }
-    const double padX = std::fmax(std::fabs(lo.x), std::fabs(hi.x)) * 0x1p-20 + 1e-30;
-    const double padZ = std::fmax(std::fabs(lo.z), std::fabs(hi.z)) * 0x1p-20 + 1e-30;
-    lo.x -= padX, hi.x += padX, lo.z -= padZ, hi.z += padZ;
-    lo.y = p.surfaceMinY;
-    hi.y = p.surfaceMaxY;
+    glm::dvec3 lo, hi;
+    patchBox(p, lo, hi);
     if (frustum.boxOutside(lo, hi)) return out; // Invisible
   }
   const BoxMaker boxes(t, p, domain);
