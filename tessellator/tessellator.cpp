@@ -192,6 +192,10 @@ EdgePoints edgePoints(float factor, Partitioning partitioning, const Stage& stag
   return r;
 }
 
+bool edgeCulled(float factor, Partitioning partitioning, const Stage& stage, const Options& options) {
+  return processEdgeThroughStages(factor, partitioning, stage, options, nullptr).culled;
+}
+
 // ---------------------------------------------------------------------------------------------------------------
 
 OutputCounts outputCounts(const Patch& patch, const Options& options) {

@@ -144,6 +144,9 @@ struct EdgePoints {
 // factor: any float. partitioning: any. stage: hw or hlsl (reduction/axes are irrelevant to outer edges).
 // Domain::Isoline is not an edge domain: use Quad or Tri semantics (identical for outer edges).
 EdgePoints edgePoints(float factor, Partitioning partitioning, const Stage& stage = {}, const Options& options = {});
+// edgePoints(...).culled without placing the points (the same stages, the same rule): whether the patch this outer
+// edge factor belongs to is discarded. Same parameter constraints as edgePoints.
+bool edgeCulled(float factor, Partitioning partitioning, const Stage& stage = {}, const Options& options = {});
 
 // Closed-form output sizes, independent of the tessellation code (used by the invariant tests and for buffer
 // planning): the number of points and indices tessellate() produces for this patch.

@@ -224,8 +224,15 @@ void recordUndrawn(const CameraCheck& c, size_t i, int discardEdge, const Visibi
   else rep.truncated = true;
 }
 
-// Stage 4: which patches are drawn (cache.ep: the edge points of each drawn patch's four edges; cache.culled: 1 for
-// a patch not drawn). lod/ culls some on purpose; the tessellator discards every patch with an outer factor NaN,
+// The edge points of edge e of patch i (its hull factor through the per-thread EdgeCache), tessellated the first time
+// a stage asks for them in this camera (cache.ep, reset by findUndrawnPatches).
+const EdgePoints& edgeOf(const CameraCheck& c, size_t i, int e) {
+  const EdgePoints*& p = c.cache.ep[i][static_cast<size_t>(e)];
+  if (!p) p = &c.cache.get(c.factors[i].factors[e], c.rep.work);
+  return *p;
+}
+
+// Stage 4: which patches are drawn (cache.culled: 1 for a patch not drawn; cache.ep reset: edgeOf fills it). lod/ culls some on purpose; the tessellator discards every patch with an outer factor NaN,
 // <= 0 or -Inf (D3D11.3 11.7.6). A patch not drawn is a hole when it would be on screen (visibility.h, Hole).
 void findUndrawnPatches(const CameraCheck& c) {
   const size_t n = c.t.patches.size();
@@ -243,10 +250,8 @@ void findUndrawnPatches(const CameraCheck& c) {
     // A patch lod/ culled is not drawn whatever its factors: no edge query, no domain point (only the hole check's
     // visibility decision below, when its box touches the frustum).
     int discardEdge = -1;
-    for (int e = 0; e < 4 && !lodCulled; ++e) {
-      ep[i][e] = &c.cache.get(c.factors[i].factors[e], rep.work);
-      if (ep[i][e]->culled && discardEdge < 0) discardEdge = e;
-    }
+    for (int e = 0; e < 4 && !lodCulled && discardEdge < 0; ++e)
+      if (c.cache.discards(c.factors[i].factors[e])) discardEdge = e;
     const bool dropped = c.fault.is(Fault::Kind::DropPatch) && c.fault.atPatch(i);
     if (!lodCulled && discardEdge < 0 && !dropped) continue;
     culled[i] = 1;
@@ -330,8 +335,8 @@ void recordFinding(const CameraCheck& c, const EdgeScratch& s, const SharedPart&
   const TerrainData& t = c.t;
   const TerrainPatch& A = t.patches[part.ia];
   const TerrainPatch& B = t.patches[part.ib];
-  const EdgePoints& pa = *c.cache.ep[part.ia][part.e];
-  const EdgePoints& pbp = *c.cache.ep[part.ib][part.eb];
+  const EdgePoints& pa = edgeOf(c, part.ia, part.e);
+  const EdgePoints& pbp = edgeOf(c, part.ib, part.eb);
   const glm::vec3* a = s.fullA.data() + part.first;
   const std::vector<glm::vec3>& pb = s.pb;
   const int na = part.last - part.first;
@@ -389,8 +394,8 @@ bool checkEdgePair(const CameraCheck& c, EdgeScratch& s, size_t ia, int e, size_
   part.ib = ib;
   part.e = e;
   part.eb = kOpposite[e];
-  const EdgePoints& pa = *c.cache.ep[ia][e];
-  const EdgePoints& pbp = *c.cache.ep[ib][part.eb];
+  const EdgePoints& pa = edgeOf(c, ia, e);
+  const EdgePoints& pbp = edgeOf(c, ib, part.eb);
   // The part of A's edge that B covers: [off, off + B.size] of A's [0, A.size] in base units. A point of A at edge
   // parameter t (a float) lies in it when off <= t * A.size <= off + B.size, decided exactly (t has 24 bits and the
   // sizes fewer than 29, so the products are exact in double).
@@ -494,15 +499,17 @@ bool decidedByMemo(const CameraCheck& c, const EdgePair& p, uint64_t& storeKey, 
   if (key == 0) return false;
   const int eb = kOpposite[p.e];
   WorkStats& w = c.rep.work;
-  const EdgePoints& pa = *c.cache.ep[static_cast<size_t>(p.ia)][p.e];
-  const EdgePoints& pb = *c.cache.ep[static_cast<size_t>(p.ib)][eb];
+  const float fa = c.factors[static_cast<size_t>(p.ia)].factors[p.e];
+  const float fb = c.factors[static_cast<size_t>(p.ib)].factors[eb];
+  // Same factor bits: the same edge points (one EdgeCache entry), without tessellating.
   if (c.t.patches[static_cast<size_t>(p.ia)].size == c.t.patches[static_cast<size_t>(p.ib)].size &&
-      sameEdgePoints(pa, pb) && seamOf(c, p, key) == SeamProof::Identical) {
+      (bitsOf(fa) == bitsOf(fb) ||
+       sameEdgePoints(edgeOf(c, static_cast<size_t>(p.ia), p.e), edgeOf(c, static_cast<size_t>(p.ib), eb))) &&
+      seamOf(c, p, key) == SeamProof::Identical) {
     ++w.seamHits;
     return true;
   }
-  const uint64_t value = (static_cast<uint64_t>(bitsOf(c.factors[static_cast<size_t>(p.ia)].factors[p.e])) << 32) |
-                         bitsOf(c.factors[static_cast<size_t>(p.ib)].factors[eb]);
+  const uint64_t value = (static_cast<uint64_t>(bitsOf(fa)) << 32) | bitsOf(fb);
   if (c.memo->results.contains(key, value)) {
     ++w.cacheHits;
     return true;
@@ -535,7 +542,7 @@ struct PairWalker {
     }
     const size_t ia = static_cast<size_t>(p.ia);
     if (fullPatch != p.ia || fullEdge != p.e) {
-      edgeWorld(c, ia, p.e, *c.cache.ep[ia][p.e], s.fullA, &s.domA);
+      edgeWorld(c, ia, p.e, edgeOf(c, ia, p.e), s.fullA, &s.domA);
       fullPatch = p.ia;
       fullEdge = p.e;
     }

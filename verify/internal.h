@@ -266,6 +266,8 @@ public:
   EdgeCache(Partitioning p, const Stage& s, const Options& o);
   // Adds a miss to work.edgeQueries. The reference stays valid until the next newCamera().
   const EdgePoints& get(float factor, WorkStats& work);
+  // get(factor).culled (the patch is discarded) without placing points (fftess::edgeCulled with the cache's settings); no work counted.
+  bool discards(float factor) const { return edgeCulled(factor, partitioning_, stage_, options_); }
   void newCamera();
   size_t size() const { return used_; }
 

@@ -118,7 +118,7 @@ void selectLinear(const TerrainData& t, const FrustumTest& frustum, VisibleSelec
   stats.edgesOffScreen = total - static_cast<int64_t>(s.pairs.size());
 }
 
-void selectTree(const TerrainData& t, const PatchTree& tree, const FrustumTest& frustum, VisibleSelection& s,
+void selectTree(const PatchTree& tree, const FrustumTest& frustum, VisibleSelection& s,
                 Stats& stats, WorkStats& work) {
   s.stack.assign(1, 0);
   s.liveNodes.clear();
@@ -200,7 +200,7 @@ void selectVisible(const TerrainData& t, const FrustumTest& frustum, VisibleSele
   s.need.assign(n, 0);
   s.live.assign(n, 0);
   s.pairs.clear();
-  if (t.tree && t.tree->boxLo.size() == n) selectTree(t, *t.tree, frustum, s, stats, work);
+  if (t.tree && t.tree->boxLo.size() == n) selectTree(*t.tree, frustum, s, stats, work);
   else selectLinear(t, frustum, s, stats, work);
   int64_t needed = 0;
   for (const char k : s.need) needed += k;
