@@ -165,3 +165,26 @@ TEST_CASE("float <-> 16.16 conversion around integers", "[tessellator][special]"
   CHECK(edgePoints(std::nextafter(64.0f, 0.0f), Partitioning::FractionalEven).fixedFactor == 0x400000u);
   CHECK(edgePoints(63.99998f, Partitioning::FractionalEven).fixedFactor == 0x3fffffu);
 }
+
+TEST_CASE("edgeCulled is edgePoints' culled for every special and random factor", "[tessellator][special]") {
+  std::vector<float> factors = specialFactors();
+  SplitMix64 rng{22};
+  for (int k = 0; k < 4000; ++k) factors.push_back(floatOf(static_cast<uint32_t>(rng.next())));
+  Stage hlsl;
+  hlsl.hlsl = true;
+  Options flush;
+  flush.flushDenormals = true;
+  int culled = 0;
+  for (const Partitioning p : {Partitioning::Integer, Partitioning::Pow2, Partitioning::FractionalEven,
+                               Partitioning::FractionalOdd})
+    for (const Stage& s : {Stage{}, hlsl})
+      for (const Options& o : {Options{}, flush})
+        for (const float f : factors) {
+          INFO("factor " << hex(f) << " " << toString(p) << (s.hlsl ? " hlsl" : " hw")
+                         << (o.flushDenormals ? " flush" : ""));
+          const bool expected = edgePoints(f, p, s, o).culled;
+          CHECK(edgeCulled(f, p, s, o) == expected);
+          culled += expected ? 1 : 0;
+        }
+  CHECK(culled > 0); // the table holds factors that cull (NaN, zeros, negatives) and the random half of the bits
+}
