@@ -1,0 +1,356 @@
+// The seam proof (verify/seam_proof.h; docs/verify.md, "Sweep shortcuts", "Seam proof") judged by brute force:
+// wherever proveSeam says Identical, the domain emulation (evalDomain) gives the same point (sameBits) on both sides
+// of the edge at every parameter k / 65536 and at random floats in [0, 1] (-0, the smallest subnormal and the float
+// just below 1 among them), on the example scenes and variants of every domain option; the degenerate cases are
+// fixtures with their expected answers.
+#include "verify_test_util.h"
+
+#include "verify/internal.h"
+#include "verify/seam_proof.h"
+
+#include <sys/stat.h>
+
+#include <cfloat>
+#include <cstdio>
+#include <fstream>
+#include <random>
+
+using namespace fftess;
+using namespace fftess::verify;
+using namespace fftess::verify::test;
+using detail::SeamProof;
+using detail::TerrainData;
+using detail::TerrainPatch;
+
+namespace {
+
+struct SeamPair {
+  int a = 0, e = 0, b = 0; // edge e of patch a; b is across it
+};
+
+// Every shared edge between two patches of the same size, once (from the patch with the lower index).
+std::vector<SeamPair> sameSizePairs(const TerrainData& t) {
+  std::vector<SeamPair> out;
+  for (size_t i = 0; i < t.patches.size(); ++i) {
+    const TerrainPatch& p = t.patches[i];
+    for (int e = 0; e < 4; ++e) {
+      if (p.nbCount[e] != 1) continue;
+      const int j = *t.neighboursBegin(p, e);
+      const TerrainPatch& q = t.patches[static_cast<size_t>(j)];
+      if (j <= static_cast<int>(i) || q.size != p.size) continue;
+      const int back = detail::kOpposite[e];
+      REQUIRE(q.nbCount[back] == 1);
+      REQUIRE(*t.neighboursBegin(q, back) == static_cast<int>(i));
+      out.push_back({static_cast<int>(i), e, j});
+    }
+  }
+  return out;
+}
+
+// The parameters the brute force tries: k / 65536 for every k (all = true) or k / 256, and the awkward ones.
+std::vector<float> parameters(bool all) {
+  std::vector<float> out;
+  const int n = all ? 65536 : 256;
+  for (int k = 0; k <= n; ++k) out.push_back(static_cast<float>(k) / static_cast<float>(n));
+  for (float v : {-0.0f, std::numeric_limits<float>::denorm_min(), FLT_MIN, std::nextafter(1.0f, 0.0f), 0.1f,
+                  1.0f / 3.0f, 0.7f})
+    out.push_back(v);
+  std::mt19937 rng(22);
+  std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+  std::uniform_int_distribution<uint32_t> bits(0, 0x3f800000u); // every float in [+0, 1] equally
+  for (int i = 0; i < (all ? 512 : 32); ++i) {
+    out.push_back(uniform(rng));
+    const uint32_t b = bits(rng);
+    float v;
+    std::memcpy(&v, &b, sizeof v);
+    out.push_back(v);
+  }
+  return out;
+}
+
+// How many of the parameters give different points (sameBits) on the two sides.
+int disagreements(const TerrainData& t, const TerrainPatch& a, int e, const TerrainPatch& b,
+                  const std::vector<float>& params) {
+  WorkStats work;
+  int n = 0;
+  for (float s : params) {
+    const DomainPoint pa = detail::edgeDomain(e, s), pb = detail::edgeDomain(detail::kOpposite[e], s);
+    const glm::vec3 qa = detail::evalDomain(t, a, pa.u, pa.v, nullptr, work);
+    const glm::vec3 qb = detail::evalDomain(t, b, pb.u, pb.v, nullptr, work);
+    if (!detail::sameBits(qa, qb)) ++n;
+  }
+  return n;
+}
+
+struct SeamFigures {
+  size_t pairs = 0, identical = 0;
+  int sampledNotProven = 0, sampledNotProvenAgreeing = 0; // brute force: the same at every parameter, yet no proof
+};
+
+// The soundness check of one prepared terrain: every Identical pair (at most ~1500, by stride) at the few parameters;
+// a sample of up to 3 pairs per (edge along u or v, answer) at all of them. Fails on any Identical pair that
+// disagrees anywhere.
+SeamFigures checkSoundness(const TerrainData& t) {
+  static const std::vector<float> few = parameters(false), all = parameters(true);
+  SeamFigures f;
+  const std::vector<SeamPair> pairs = sameSizePairs(t);
+  f.pairs = pairs.size();
+  std::vector<SeamProof> proof(pairs.size());
+  std::vector<size_t> groups[2][2]; // [along u][identical]
+  for (size_t i = 0; i < pairs.size(); ++i) {
+    const SeamPair& p = pairs[i];
+    proof[i] = detail::proveSeam(t, t.patches[p.a], p.e, t.patches[p.b]);
+    REQUIRE(proof[i] != SeamProof::Unknown);
+    const bool identical = proof[i] == SeamProof::Identical;
+    f.identical += identical;
+    groups[p.e == Veq0 || p.e == Veq1][identical].push_back(i);
+  }
+  const size_t stride = f.identical / 1500 + 1;
+  size_t seen = 0;
+  for (size_t i = 0; i < pairs.size(); ++i) {
+    if (proof[i] != SeamProof::Identical || seen++ % stride != 0) continue;
+    const SeamPair& p = pairs[i];
+    INFO("patch " << p.a << " edge " << p.e << " patch " << p.b << " (few parameters)");
+    REQUIRE(disagreements(t, t.patches[p.a], p.e, t.patches[p.b], few) == 0);
+  }
+  for (auto& byAxis : groups)
+    for (int identical = 0; identical < 2; ++identical) {
+      const std::vector<size_t>& g = byAxis[identical];
+      for (size_t k = 0; k < 3 && k < g.size(); ++k) {
+        const SeamPair& p = pairs[g[k * g.size() / 3]];
+        const int n = disagreements(t, t.patches[p.a], p.e, t.patches[p.b], all);
+        INFO("patch " << p.a << " edge " << p.e << " patch " << p.b << " (all parameters)");
+        if (identical) REQUIRE(n == 0);
+        else {
+          ++f.sampledNotProven;
+          f.sampledNotProvenAgreeing += n == 0;
+        }
+      }
+    }
+  return f;
+}
+
+struct Variant {
+  const char* file;
+  std::vector<std::string> overrides;
+  bool cameraDependent = false; // the domain reads camera state: never proven
+};
+
+std::string tmpFile(const std::string& name) {
+  ::mkdir(FFTESS_TEST_TMP_DIR, 0755);
+  return std::string(FFTESS_TEST_TMP_DIR) + "/" + name;
+}
+
+// A 6 x 6 patches layout of side 0.25 from (-0.7, -0.95), its last 2 x 2 patches one of side 0.5 (floats; every
+// coordinate exact, none a short dyadic, the terrain straddling x = 0 and z = 0), written with round-trip precision.
+std::string nonDyadicPatchesFile() {
+  const std::string path = tmpFile("seam_non_dyadic.csv");
+  std::ofstream out(path, std::ios::binary);
+  out << "x0,z0,x1,z1,x2,z2,x3,z3\n";
+  auto x = [](int i) { return -0.7f + 0.25f * static_cast<float>(i); };
+  auto z = [](int j) { return -0.95f + 0.25f * static_cast<float>(j); };
+  auto row = [&](int i0, int j0, int n) {
+    char buf[256];
+    std::snprintf(buf, sizeof buf, "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", x(i0), z(j0), x(i0 + n), z(j0),
+                  x(i0), z(j0 + n), x(i0 + n), z(j0 + n));
+    out << buf;
+  };
+  for (int j = 0; j < 6; ++j)
+    for (int i = 0; i < 6; ++i)
+      if (i < 4 || j < 4) row(i, j, 1);
+  row(4, 4, 2);
+  return path;
+}
+
+const std::vector<Variant>& variants() {
+  static const std::vector<Variant> v = {
+      {"terrain.toml", {}},
+      {"terrain.toml", {"domain.formula=lerp_fma"}},
+      {"terrain.toml", {"domain.formula=blend"}},
+      {"terrain.toml", {"domain.formula=blend_fma"}},
+      {"terrain.toml", {"domain.order=v_first"}},
+      {"terrain.toml", {"domain.order=v_first", "domain.formula=blend_fma"}},
+      {"terrain.toml", {"domain.height_uv=interpolated"}},
+      {"terrain.toml", {"layout.corners=shared"}},
+      {"terrain.toml", {"layout.base_patch_size=0.3", "layout.center=[0.1, -0.7]"}},
+      {"terrain.toml", {"layout.base_patch_size=0.3", "layout.center=[0.1, -0.7]", "domain.formula=blend",
+                        "domain.order=v_first", "domain.height_uv=interpolated"}},
+      {"grid.toml", {}},
+      {"grid.toml", {"layout.patch_size=0.1", "layout.center=[0.37, -0.13]"}},
+      {"grid.toml", {"layout.patch_size=0.1", "layout.center=[0.37, -0.13]", "layout.corners=reconstructed"}},
+      {"grid.toml", {"layout.patch_size=0.1", "layout.center=[0.37, -0.13]", "domain.formula=lerp_fma",
+                     "domain.order=v_first"}},
+      {"grid.toml", {"layout.patch_size=0.1", "layout.center=[0.37, -0.13]", "domain.formula=blend"}},
+      {"patches.toml", {}},
+      {"patches.toml", {"layout.file=" + nonDyadicPatchesFile()}},
+      {"patches.toml", {"layout.file=" + nonDyadicPatchesFile(), "domain.formula=blend_fma",
+                        "domain.height_uv=interpolated"}},
+      {"luna.toml", {}},
+      {"luna_r16.toml", {}},
+      {"heightmap_offscreen.toml", {}},
+      {"rings_small.toml", {}},
+      {"t_junction.toml", {}},
+      {"t_junction.toml", {"domain.formula=blend", "domain.order=v_first"}},
+      {"quadtree_cdlod.toml", {}},
+      {"broken_lod.toml", {}},
+      {"geomorph.toml", {}, true},
+      {"bonaventura_mip.toml", {}, true},
+  };
+  return v;
+}
+
+std::string describe(const Variant& v) {
+  std::string s = v.file;
+  for (const std::string& o : v.overrides) s += " --set " + o;
+  return s;
+}
+
+// A patch of hand-made corners (corners[u + 2v]), texture coordinates as every layout computes them.
+TerrainPatch patchOf(const TerrainData& t, std::array<glm::vec2, 4> c, int64_t size = 1) {
+  TerrainPatch p;
+  p.size = size;
+  for (int i = 0; i < 4; ++i) {
+    p.corners[i] = glm::vec3(c[static_cast<size_t>(i)].x, 0.0f, c[static_cast<size_t>(i)].y);
+    p.tex[i][0] = (p.corners[i].x - t.extent.minX) * t.invSizeX;
+    p.tex[i][1] = (p.corners[i].z - t.extent.minZ) * t.invSizeZ;
+  }
+  return p;
+}
+
+// An axis-aligned square [x0, x1] x [z0, z1].
+TerrainPatch squareOf(const TerrainData& t, float x0, float z0, float x1, float z1) {
+  return patchOf(t, {glm::vec2(x0, z0), glm::vec2(x1, z0), glm::vec2(x0, z1), glm::vec2(x1, z1)});
+}
+
+// The fixture's answer, and the brute force's agreement with it: Identical pairs agree at every parameter;
+// `differ`: the NotProven pair truly disagrees somewhere.
+void expectSeam(const TerrainData& t, const TerrainPatch& a, int e, const TerrainPatch& b, SeamProof expected,
+                bool differ) {
+  static const std::vector<float> all = parameters(true);
+  CHECK(detail::proveSeam(t, a, e, b) == expected);
+  CHECK(detail::proveSeam(t, b, detail::kOpposite[e], a) == expected);
+  const int n = disagreements(t, a, e, b, all);
+  if (expected == SeamProof::Identical || !differ) CHECK(n == 0);
+  else CHECK(n > 0);
+}
+
+} // namespace
+
+TEST_CASE("seam proof: every Identical answer agrees point by point on the example scenes and their variants",
+          "[seam]") {
+  for (const Variant& v : variants()) {
+    const std::string name = describe(v);
+    INFO(name);
+    const Terrain terrain = prepared(loadExample(v.file, v.overrides));
+    const SeamFigures f = checkSoundness(terrain.data());
+    if (v.cameraDependent) CHECK(f.identical == 0);
+    WARN(name << ": " << f.identical << " of " << f.pairs << " same-size shared edges proven; sampled NotProven: "
+              << f.sampledNotProvenAgreeing << " of " << f.sampledNotProven << " agree at every parameter");
+  }
+}
+
+TEST_CASE("seam proof: every same-size shared edge of the default scene is proven, in every lerp formula and order",
+          "[seam]") {
+  for (const char* formula : {"nvidia", "lerp", "lerp_fma", "blend", "blend_fma"})
+    for (const char* order : {"u_first", "v_first"})
+      for (const char* uv : {"world", "interpolated"}) {
+        const Terrain terrain = prepared(loadExample(
+            "terrain.toml", {std::string("domain.formula=") + formula, std::string("domain.order=") + order,
+                             std::string("domain.height_uv=") + uv}));
+        const TerrainData& t = terrain.data();
+        const std::vector<SeamPair> pairs = sameSizePairs(t);
+        size_t identical = 0;
+        for (const SeamPair& p : pairs)
+          identical += detail::proveSeam(t, t.patches[p.a], p.e, t.patches[p.b]) == SeamProof::Identical;
+        INFO(formula << " " << order << " " << uv);
+        CHECK(pairs.size() > 10000);
+        CHECK(identical == pairs.size());
+      }
+}
+
+TEST_CASE("seam proof: camera-dependent domains and patches of different sizes are never proven", "[seam]") {
+  const Terrain terrain = prepared(loadExample("terrain.toml"));
+  const TerrainData& t = terrain.data();
+  const std::vector<SeamPair> pairs = sameSizePairs(t);
+  REQUIRE(!pairs.empty());
+  const SeamPair p = pairs.front();
+  TerrainPatch b = t.patches[p.b];
+  REQUIRE(detail::proveSeam(t, t.patches[p.a], p.e, b) == SeamProof::Identical);
+  b.size *= 2;
+  CHECK(detail::proveSeam(t, t.patches[p.a], p.e, b) == SeamProof::NotProven);
+  for (const char* effect : {"lod.scheme=geomorph", "displacement.mip=per_patch"}) {
+    TerrainData copy = t;
+    if (effect[0] == 'l') copy.scene.lod.scheme = LodScheme::Geomorph;
+    else copy.scene.displacement.mip = MipMode::PerPatch;
+    INFO(effect);
+    CHECK(detail::proveSeam(copy, t.patches[p.a], p.e, t.patches[p.b]) == SeamProof::NotProven);
+  }
+}
+
+TEST_CASE("seam proof fixture: a negative-zero corner", "[seam]") {
+  for (const char* displacement : {"none", "fbm"}) {
+    INFO(displacement);
+    const Terrain terrain = prepared(loadExample("grid.toml", {std::string("displacement.kind=") + displacement}));
+    const TerrainData& t = terrain.data();
+    const TerrainPatch a = squareOf(t, -1.0f, -1.0f, -0.0f, -0.0f);
+    // x = -0 along a's +x edge, z = -0 along its +z edge (edges along v and along u).
+    expectSeam(t, a, Ueq1, squareOf(t, -0.0f, -1.0f, 1.0f, -0.0f), SeamProof::Identical, false);
+    expectSeam(t, a, Veq1, squareOf(t, -1.0f, -0.0f, -0.0f, 1.0f), SeamProof::Identical, false);
+    for (const char* formula : {"blend", "lerp_fma", "blend_fma"}) {
+      TerrainData copy = t;
+      copy.scene.domain.formula = formula[0] == 'l' ? LerpFormula::LerpFma
+                                  : formula[5] == 'f' ? LerpFormula::BlendFma : LerpFormula::Blend;
+      INFO(formula);
+      expectSeam(copy, a, Ueq1, squareOf(t, -0.0f, -1.0f, 1.0f, -0.0f), SeamProof::Identical, false);
+      expectSeam(copy, a, Veq1, squareOf(t, -1.0f, -0.0f, -0.0f, 1.0f), SeamProof::Identical, false);
+    }
+  }
+}
+
+TEST_CASE("seam proof fixture: corners that make b + (t - b) differ from t", "[seam]") {
+  // Sheared quads: along u, a's top row is not its bottom row, so at v = 1 "lerp" computes
+  // bottom + 1 * (top - bottom), which misses top (b's bottom row at v = 0) for some u: at u = 0,
+  // -0.1 + (0.2 - -0.1) = 0.20000002.
+  const Terrain terrain = prepared(loadExample("grid.toml", {"displacement.kind=none"}));
+  const TerrainData& t = terrain.data();
+  const TerrainPatch a = patchOf(t, {glm::vec2(-0.1f, 0), glm::vec2(0.9f, 0), glm::vec2(0.2f, 1), glm::vec2(1.2f, 1)});
+  const TerrainPatch b = patchOf(t, {glm::vec2(0.2f, 1), glm::vec2(1.2f, 1), glm::vec2(0.5f, 2), glm::vec2(1.5f, 2)});
+  expectSeam(t, a, Veq1, b, SeamProof::NotProven, true);
+  // "blend" computes bottom * 0 + top * 1 = top there: proven.
+  TerrainData blend = t;
+  blend.scene.domain.formula = LerpFormula::Blend;
+  expectSeam(blend, a, Veq1, b, SeamProof::Identical, false);
+}
+
+TEST_CASE("seam proof fixture: a huge coordinate near overflow", "[seam]") {
+  const float big = 3.0e38f;
+  for (const char* displacement : {"none", "fbm"}) {
+    INFO(displacement);
+    const bool flat = displacement[0] == 'n';
+    const Terrain terrain = prepared(loadExample("grid.toml", {std::string("displacement.kind=") + displacement}));
+    const TerrainData& t = terrain.data();
+    // a is wider than the largest float: c1 - c0 overflows, a's edge at u = 1 is inf (then NaN along it).
+    expectSeam(t, squareOf(t, -big, 0, big, 1), Ueq1, squareOf(t, big, 0, FLT_MAX, 1), SeamProof::NotProven, true);
+    // Finite everywhere: flat, the same points; displaced, the texture coordinate x / extent times the texture
+    // width overflows and the height is NaN on both sides (NaN is never sameBits).
+    expectSeam(t, squareOf(t, 1e38f, 0, 2e38f, 1), Veq1, squareOf(t, 1e38f, 1, 2e38f, 2),
+               flat ? SeamProof::Identical : SeamProof::NotProven, !flat);
+  }
+}
+
+TEST_CASE("seam proof fixture: Blend formula", "[seam]") {
+  // Corners whose difference rounds: "lerp" at u = 1 gives -0.1 + (0.2 - -0.1) = 0.20000002, not 0.2, so the
+  // patches disagree at every point of the edge; "blend" gives -0.1 * 0 + 0.2 * 1 = 0.2 exactly on both sides.
+  const Terrain terrain = prepared(loadExample("grid.toml"));
+  TerrainData t = terrain.data();
+  const TerrainPatch a = squareOf(t, -0.1f, 0.0f, 0.2f, 0.3f);
+  const TerrainPatch b = patchOf(t, {glm::vec2(0.2f, 0.0f), glm::vec2(0.5f, 0.0f), glm::vec2(0.2f, 0.3f),
+                                     glm::vec2(0.5f, 0.3f)});
+  expectSeam(t, a, Ueq1, b, SeamProof::NotProven, true);
+  for (LerpFormula f : {LerpFormula::Blend, LerpFormula::BlendFma}) {
+    t.scene.domain.formula = f;
+    expectSeam(t, a, Ueq1, b, SeamProof::Identical, false);
+    // Straddling z = 0 along u: the zero products a * (1 - t) and b * t may have either sign.
+    expectSeam(t, squareOf(t, -1, -1, 1, 0), Veq1, squareOf(t, -1, 0, 1, 1), SeamProof::Identical, false);
+  }
+}
