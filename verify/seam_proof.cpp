@@ -111,7 +111,7 @@ public:
     if (isConst(x) && isConst(y)) return konst(k(x) - k(y));
     if (x == y && at(x).finite) return konst(0.0f);
     if (isZero(y) && (!at(x).negZero || !at(y).negZero)) return x;
-    if (isZero(x) && isConst(y) && k(y) != 0.0f) return konst(-k(y)); // +-0 - c = -c exactly
+    if (isZero(x) && isConst(y) && at(y).finite && k(y) != 0.0f) return konst(-k(y)); // +-0 - c = -c exactly
     return intern(Op::Sub, x, y, -1);
   }
   int mul(int x, int y) {
