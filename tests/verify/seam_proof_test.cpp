@@ -157,7 +157,7 @@ std::vector<DomainShader> everyDomain() {
   return out;
 }
 
-// The k-th and (k + 10)-th of everyDomain(): the variants (k = 0..16, each also with the scene's own domain)
+// The k-th and (k + 10)-th of everyDomain(): the variants (k = 0..18, each also with the scene's own domain)
 // together check every formula, order and height_uv.
 std::vector<DomainShader> someDomains(int k) {
   const std::vector<DomainShader> all = everyDomain();
@@ -215,6 +215,9 @@ const std::vector<Variant>& variants() {
       {"rings_small.toml", {}, someDomains(11)},
       {"t_junction.toml", {}, someDomains(12)},
       {"quadtree_cdlod.toml", {}, someDomains(13)},
+      {"quadtree_cdlod.toml", {"layout.corners=reconstructed", "layout.root_size=10.3", "layout.center=[0.3, -0.2]"},
+       someDomains(17)},
+      {"luna_r16.toml", {"layout.cell_size=0.3"}, someDomains(18)},
       {"broken_lod.toml", {}, someDomains(14)},
       {"geomorph.toml", {}, someDomains(15), true},
       {"bonaventura_mip.toml", {}, someDomains(16), true},
