@@ -28,8 +28,8 @@ enum class SeamProof : uint8_t {
 // of x and z; "interpolated": of the texture coordinates) on a camera-independent domain.
 // Preconditions: a and b have the same size and share edge e of a (b is across it); the scene's domain needs no
 // camera state (domainCamera(t, ...) is empty: no geomorph on a displaced scene, displacement.mip = "none");
-// otherwise NotProven. Cost: a few dozen operations on fixed-size arrays on the stack, no allocation (~1.7 us per
-// call on the default scene, Release); called once per edge per sweep.
+// otherwise NotProven. Cost: a few dozen operations on fixed-size arrays on the stack, no allocation (~0.9 us per
+// call on the default scene, ~2 us with height_uv "interpolated", Release); called once per edge per sweep.
 SeamProof proveSeam(const TerrainData& t, const TerrainPatch& a, int e, const TerrainPatch& b);
 
 } // namespace fftess::verify::detail

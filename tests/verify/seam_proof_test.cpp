@@ -378,4 +378,3 @@ TEST_CASE("seam proof fixture: Blend formula", "[seam]") {
     expectSeam(t, squareOf(t, -1, -1, 1, 0), Veq1, squareOf(t, -1, 0, 1, 1), SeamProof::Identical, false);
   }
 }
-
