@@ -23,12 +23,13 @@ enum class SeamProof : uint8_t {
 // constants only is evaluated in float exactly as domain.cpp evaluates it, equal operations on equal operands are
 // one value, and only simplifications exact for every t in [0, 1] and every operand value are applied (x * 1 = x,
 // x - x = +0 for a finite x, x + (-0) = x, ...). Identical when the two sides' x and z (and texture coordinates) are
-// the same value; the height is then the same because it is a function of those alone (domain.height_uv "world":
+// the same value (or both are zeros of either sign, which neither sameBits' == nor the height sampler tells apart)
+// and finite; the height is then the same because it is a function of those alone (domain.height_uv "world":
 // of x and z; "interpolated": of the texture coordinates) on a camera-independent domain.
 // Preconditions: a and b have the same size and share edge e of a (b is across it); the scene's domain needs no
 // camera state (domainCamera(t, ...) is empty: no geomorph on a displaced scene, displacement.mip = "none");
-// otherwise NotProven. Cost: a few dozen operations; no allocation once warm is not promised (called once per edge
-// per sweep).
+// otherwise NotProven. Cost: a few dozen operations on fixed-size arrays on the stack, no allocation (~0.9 us per
+// call on the default scene, ~2 us with height_uv "interpolated", Release); called once per edge per sweep.
 SeamProof proveSeam(const TerrainData& t, const TerrainPatch& a, int e, const TerrainPatch& b);
 
 } // namespace fftess::verify::detail
