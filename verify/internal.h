@@ -442,6 +442,9 @@ public:
   // over the box). Conservative: false whenever a point of the box may be on screen. Monotone: true for a box also
   // holds for every box inside it.
   bool boxOffScreen(const glm::dvec3& lo, const glm::dvec3& hi) const;
+  // The box [lo, hi] lies strictly inside all six planes (double, no margin): no box inside it is boxOffScreen (nor
+  // boxOutside). Visible first's shortcut for tree nodes wholly in view.
+  bool boxInside(const glm::dvec3& lo, const glm::dvec3& hi) const;
   // The part [t0, t1] (within the given [t0, t1]) of the segment p + t (q - p) inside the frustum's six planes
   // (double, no margin). False: no part of it is inside.
   bool clipSegment(const glm::dvec3& p, const glm::dvec3& q, double& t0, double& t1) const;

@@ -40,6 +40,16 @@ bool FrustumTest::boxOutside(const glm::dvec3& lo, const glm::dvec3& hi) const {
   return false;
 }
 
+bool FrustumTest::boxInside(const glm::dvec3& lo, const glm::dvec3& hi) const {
+  for (int p = 0; p < 6; ++p) {
+    const double* n = plane_[p];
+    // The box corner furthest against the plane's normal.
+    const double x = n[0] >= 0 ? lo.x : hi.x, y = n[1] >= 0 ? lo.y : hi.y, z = n[2] >= 0 ? lo.z : hi.z;
+    if (!(n[0] * x + n[1] * y + n[2] * z + n[3] > 0)) return false;
+  }
+  return true;
+}
+
 // The same planes; a box counts as outside a plane only by a margin: at the corner tested, the plane's value
 // (w +- x, w +- y, w +- z of the clip matrix's rows) must be below -2^-16 * sum over c of (|m[3][c]| + |m[k][c]|) *
 // M_c, M_c = max(|lo_c|, |hi_c|) (M_3 = 1): a bound on the magnitudes a GPU's float clip coordinates w and x (y, z)

@@ -120,24 +120,31 @@ void selectLinear(const TerrainData& t, const FrustumTest& frustum, VisibleSelec
 
 void selectTree(const PatchTree& tree, const FrustumTest& frustum, VisibleSelection& s,
                 Stats& stats, WorkStats& work) {
+  // The stack holds node ids, negated minus one for a node inside a node proven wholly in view (boxInside): its
+  // patches are on screen without a test.
   s.stack.assign(1, 0);
   s.liveNodes.clear();
   while (!s.stack.empty()) {
-    const PatchTree::Node& node = tree.nodes[static_cast<size_t>(s.stack.back())];
-    const int32_t id = s.stack.back();
+    const int32_t top = s.stack.back();
     s.stack.pop_back();
-    ++work.boxTests;
-    if (frustum.boxOffScreen(node.lo, node.hi)) continue;
+    bool inside = top < 0;
+    const int32_t id = inside ? -top - 1 : top;
+    const PatchTree::Node& node = tree.nodes[static_cast<size_t>(id)];
+    if (!inside) {
+      ++work.boxTests;
+      if (frustum.boxOffScreen(node.lo, node.hi)) continue;
+      inside = frustum.boxInside(node.lo, node.hi);
+    }
     s.liveNodes.push_back(id);
     if (node.child[0] >= 0) {
-      s.stack.push_back(node.child[1]);
-      s.stack.push_back(node.child[0]);
+      s.stack.push_back(inside ? -node.child[1] - 1 : node.child[1]);
+      s.stack.push_back(inside ? -node.child[0] - 1 : node.child[0]);
       continue;
     }
     for (int32_t k = node.first; k < node.first + node.count; ++k) {
       const size_t i = static_cast<size_t>(tree.order[static_cast<size_t>(k)]);
-      ++work.boxTests;
-      s.live[i] = frustum.boxOffScreen(tree.boxLo[i], tree.boxHi[i]) ? 0 : 1;
+      if (!inside) ++work.boxTests;
+      s.live[i] = inside || !frustum.boxOffScreen(tree.boxLo[i], tree.boxHi[i]) ? 1 : 0;
       s.need[i] = s.live[i];
     }
   }
