@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <string>
 
 using clitest::run;
@@ -18,9 +19,11 @@ const std::string kRings = clitest::source("docs/examples/rings_small.toml");
 
 TEST_CASE("merging N = 1, 2, 7 shards of a sweep gives exactly the single run's report", "[cli][merge]") {
   const std::string dir = clitest::tmpDir();
-  // Cracks (clamp none) so that causes, worst gaps and first cameras all take part.
+  // Cracks (clamp none) so that causes, worst gaps and first cameras all take part. Without the result cache: with it
+  // each shard's cache learns from its own cameras (and with threads from their timing), so the work counters and
+  // "result_cache" are the shards' own (merged below without it, compared apart).
   const std::vector<std::string> base{"sweep", kRings, "--set", "lod.adjacency_clamp=none", "--random", "15",
-                                      "--seed", "4", "-q"};
+                                      "--seed", "4", "-q", "--no-result-cache"};
   auto args = [&](std::vector<std::string> extra) {
     std::vector<std::string> a = base;
     a.insert(a.end(), extra.begin(), extra.end());
@@ -52,6 +55,33 @@ TEST_CASE("merging N = 1, 2, 7 shards of a sweep gives exactly the single run's 
     CHECK(r.status == 1);
     CHECK(r.out.find("CRACKS") != std::string::npos);
     CHECK(clitest::readFile(merged) == single);
+  }
+  // With the result cache (the default): everything but the work and the cache's counters is the single run's.
+  {
+    auto withCache = [&](std::vector<std::string> extra) {
+      std::vector<std::string> a = args(extra);
+      a.erase(std::find(a.begin(), a.end(), "--no-result-cache"));
+      return a;
+    };
+    auto cacheFree = [](json j) {
+      j.erase("work");
+      j.erase("result_cache");
+      return j;
+    };
+    const std::string cachedOne = dir + "/cached_one.json", merged = dir + "/cached_merged.json";
+    REQUIRE(run(withCache({"--json", cachedOne})).status == 1);
+    std::vector<std::string> merge{"merge"};
+    for (int k = 1; k <= 2; ++k) {
+      const std::string part = dir + "/cached_s" + std::to_string(k) + ".json";
+      REQUIRE(run(withCache({"--shard", std::to_string(k) + "/2", "--json", part})).status <= 1);
+      merge.push_back(part);
+    }
+    merge.insert(merge.end(), {"--json", merged});
+    CHECK(run(merge).status == 1);
+    const json a = json::parse(clitest::readFile(cachedOne)), b = json::parse(clitest::readFile(merged));
+    CHECK(cacheFree(a) == cacheFree(b));
+    CHECK(cacheFree(a) == cacheFree(j)); // and the run without the cache's, but for the work
+    CHECK(a.at("result_cache").at("on") == b.at("result_cache").at("on"));
   }
   // A shard missing or given twice, or shards of different sweeps: refused.
   r = run(args({"--shard", "1/2", "--json", dir + "/x1.json"}));
