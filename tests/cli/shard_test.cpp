@@ -107,13 +107,27 @@ TEST_CASE("fftess bench prints the accuracy table and its work counters prove th
                            "heights/8-bit subtexel", "heights/float bilinear", "heights/r16_float", "heights/flat",
                            "mip/bonaventura, no mip", "mip/bonaventura, per_patch", "mip/bonaventura, per_vertex",
                            "lod precision/float", "lod precision/double", "tessellator/denormals kept", "tessellator/denormals flushed", "scope/edges",
-                           "scope/whole mesh"}) {
+                           "scope/whole mesh", "sweep shortcuts/full check", "sweep shortcuts/visible first",
+                           "sweep shortcuts/result cache", "sweep shortcuts/both"}) {
     INFO(name);
     REQUIRE(rows.count(name));
     CHECK_FALSE(rows[name].contains("error"));
     CHECK(r.out.find(rows[name].at("row").get<std::string>()) != std::string::npos);
   }
   auto work = [&](const char* row, const char* key) { return rows[row].at("work").at(key).get<int64_t>(); };
+  // The sweep shortcuts lose no finding on screen, on the same cameras; the full check evaluates every patch's LOD.
+  for (const char* name : {"sweep shortcuts/visible first", "sweep shortcuts/result cache", "sweep shortcuts/both"}) {
+    INFO(name);
+    CHECK(rows[name].at("gained") == 0);
+    CHECK(rows[name].at("lost") == 0);
+    CHECK(rows[name].at("cameras") == 2);
+    CHECK(rows[name].at("sweep").at("cache_hit_rate").is_number());
+    CHECK(work(name, "lod_evaluations") + rows[name].at("stats").at("patches_off_screen").get<int64_t>() ==
+          2 * j.at("patches").get<int64_t>());
+  }
+  CHECK(work("sweep shortcuts/full check", "lod_evaluations") == 2 * j.at("patches").get<int64_t>());
+  CHECK(rows["sweep shortcuts/full check"].at("sweep").at("result_cache") == false);
+  CHECK(rows["sweep shortcuts/full check"].at("sweep").at("visible_first") == false);
   // A flat scene samples no height; the displaced ones sample one per domain evaluation.
   CHECK(work("heights/flat", "height_samples") == 0);
   CHECK(work("heights/flat", "domain_evaluations") > 0);

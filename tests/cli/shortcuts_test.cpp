@@ -7,6 +7,7 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -186,4 +187,16 @@ TEST_CASE("Shortcuts run: fftess sweep runs visible first and answers pairs from
   const std::string line = lineOf(dflt.r.out, "  shortcuts");
   CHECK(line.rfind("  shortcuts      visible first (", 0) == 0);
   CHECK(line.find("; result cache on (") != std::string::npos);
+  // fftess bench's sweep shortcuts rows: less work than the full check on the same cameras.
+  const std::string js = clitest::tmpDir() + "/shortcuts-bench.json";
+  REQUIRE(run({"bench", "--scene", kRings, "--group", "sweep shortcuts", "--cameras", "4", "--repeats", "1", "--json",
+               js, "-q"}).status == 0);
+  std::map<std::string, json> rows;
+  for (const json& x : json::parse(clitest::readFile(js)).at("rows")) rows[x.at("row").get<std::string>()] = x;
+  auto work = [&](const char* row, const char* key) { return rows.at(row).at("work").at(key).get<int64_t>(); };
+  CHECK(work("visible first", "lod_evaluations") < work("full check", "lod_evaluations"));
+  CHECK(work("result cache", "domain_evaluations") < work("full check", "domain_evaluations"));
+  CHECK(rows.at("both").at("sweep").at("cache_hit_rate").get<double>() +
+            rows.at("both").at("sweep").at("seam_hit_rate").get<double>() > 0);
+  CHECK(rows.at("both").at("sweep").at("visible_first") == true);
 }
