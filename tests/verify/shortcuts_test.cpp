@@ -226,6 +226,14 @@ void compareFindingVariants(int random, Kernel kernel) {
   }
 }
 
+// The README's unbalanced CDLOD quadtree (layout.lod_distance_ratio = 1: jumps beyond 2x) cracks with the pow2 clamp
+// on: one of the 10 random cameras of seed 9 sees them.
+void compareJumps(int random) {
+  const Terrain t = prepared(loadExample("quadtree_cdlod.toml", {"layout.balance=none", "layout.lod_distance_ratio=1"}));
+  requireFindings(compareWays("quadtree_cdlod.toml, balance none, lod_distance_ratio 1", t, camerasOf(t, random, 9)),
+                  "quadtree jumps beyond 2x");
+}
+
 } // namespace
 
 TEST_CASE("sweep shortcuts: scenes with findings on screen show the same findings camera by camera with and without "
@@ -233,6 +241,7 @@ TEST_CASE("sweep shortcuts: scenes with findings on screen show the same finding
           "[verify][sweep][shortcuts]") {
   compareFindingVariants(10, Kernel::Epick);
   compareFindingVariants(4, Kernel::Epeck);
+  compareJumps(10);
 }
 
 TEST_CASE("sweep shortcuts: every example scene and the variants with findings show the same findings on 40 random "
@@ -260,6 +269,7 @@ TEST_CASE("sweep shortcuts: every example scene and the variants with findings s
   compareWays("terrain.toml, clamp none (epeck)", none, std::vector<Camera>(cams.begin(), cams.begin() + 12), epeck);
   const Terrain unbalanced = prepared(loadExample("quadtree_cdlod.toml", {"layout.balance=none"}));
   compareWays("quadtree_cdlod.toml, balance none", unbalanced, camerasOf(unbalanced, 40, 11));
+  compareJumps(40);
   compareFindingVariants(40, Kernel::Epick);
 }
 
