@@ -122,7 +122,8 @@ TEST_CASE("fftess bench prints the accuracy table and its work counters prove th
     CHECK(rows[name].at("lost") == 0);
     CHECK(rows[name].at("cameras") == 2);
     CHECK(rows[name].at("sweep").at("cache_hit_rate").is_number());
-    CHECK(work(name, "lod_evaluations") + rows[name].at("stats").at("patches_off_screen").get<int64_t>() ==
+    CHECK(work(name, "lod_evaluations") <= 2 * j.at("patches").get<int64_t>());
+    CHECK(work(name, "lod_evaluations") + rows[name].at("stats").at("patches_off_screen").get<int64_t>() >=
           2 * j.at("patches").get<int64_t>());
   }
   CHECK(work("sweep shortcuts/full check", "lod_evaluations") == 2 * j.at("patches").get<int64_t>());
