@@ -400,7 +400,7 @@ TEST_CASE("Shortcuts run: visible first skips the patches and edge pairs proven 
   CHECK(vf.res.total.edgesOffScreen > 0);
   CHECK(vf.res.work.boxTests > 0);
   // What was skipped is work not done: fewer LOD evaluations than one per patch and camera.
-  CHECK(vf.res.work.lodEvaluations + vf.res.total.patchesOffScreen == full.res.work.lodEvaluations);
+  CHECK(vf.res.work.lodEvaluations + vf.res.total.patchesOffScreen >= full.res.work.lodEvaluations);
   CHECK(vf.res.work.lodEvaluations < full.res.work.lodEvaluations);
   CHECK(full.camerasVisibleFirst == 0);
   CHECK(full.res.total.patchesOffScreen == 0);
