@@ -118,7 +118,8 @@ CLI::App* addSweep(CLI::App& app, SweepArgs& a) {
   sub->add_option("--label", a.label, "Name for this run in the summary (default: the scene's name)");
   sub->add_option("--shard", a.shard,
                   "K/N: check only the cameras i with i % N == K - 1 (1 <= K <= N; indices stay global, so the "
-                  "shards' --json reports merge with 'fftess merge' into the report of one run: exactly, with --no-result-cache)");
+                  "shards' --json reports merge with 'fftess merge' into the report of one run: exactly, with "
+                  "--no-result-cache)");
   sub->add_flag("--no-visible-first", a.noVisibleFirst,
                 "Check every patch and shared edge of each camera, also those proven off screen (default: visible "
                 "first, which skips them: the on-screen findings and the verdict are the same; --offscreen implies "
