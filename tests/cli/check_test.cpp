@@ -344,12 +344,28 @@ TEST_CASE("sweep: workaround on is clean, off cracks, summary names causes, JSON
 TEST_CASE("sweep: causes count every finding, so a cause that is no camera's worst is listed too", "[cli][sweep]") {
   // terrain.toml without the clamp, 24 random cameras: besides the fractional nesting cracks, one camera has cracks
   // where the small side's factor is not half the big side's (the minimum factor clamp), never its worst finding.
+  // --no-visible-first: each camera below is compared with `fftess check`, the full check (off-screen findings too).
   const std::string js = clitest::tmpDir() + "/sweep-causes.json";
   auto r = run({"sweep", kScene, "--random", "24", "--seed", "5", "--set", "lod.adjacency_clamp=none", "--threads",
-                "2", "--json", js});
+                "2", "--json", js, "--no-visible-first"});
   CHECK(r.status == 1);
   const json j = json::parse(clitest::readFile(js));
   checkCauses(j);
+  // The default sweep (visible first) lists the same causes on screen, with the same counts and first cameras.
+  {
+    const std::string vf = clitest::tmpDir() + "/sweep-causes-vf.json";
+    CHECK(run({"sweep", kScene, "--random", "24", "--seed", "5", "--set", "lod.adjacency_clamp=none", "--threads", "2",
+               "--json", vf, "-q"}).status == 1);
+    const json k = json::parse(clitest::readFile(vf));
+    checkCauses(k);
+    auto onScreen = [](const json& causes) {
+      json out = json::array();
+      for (const json& c : causes)
+        if (c.at("cause").get<std::string>().find("(off screen)") == std::string::npos) out.push_back(c);
+      return out;
+    };
+    CHECK(onScreen(k.at("causes")) == onScreen(j.at("causes")));
+  }
   const json& causes = j.at("causes");
   REQUIRE(causes.size() >= 2);
   bool notHalf = false;
