@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <algorithm>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -54,6 +55,60 @@ void BM_CheckSceneMesh(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(vf::checkSceneMesh(t, s.camera).innerBorderEdges);
 }
 BENCHMARK(BM_CheckSceneMesh)->Unit(benchmark::kMillisecond);
+
+// The sweep shortcuts (docs/verify.md, "Sweep shortcuts") on the bundled scene, clamp pow2. BM_CheckSceneVisibleFirst:
+// one camera (the scene's) checked in full and visible first. BM_SweepShortcuts: a sweep of 32 random cameras on one
+// thread without a shortcut, visible first, the result cache, both: the cache lives for one sweep (a camera reuses
+// what the cameras before it proved), so the unit is the sweep; items are cameras.
+void BM_CheckSceneVisibleFirst(benchmark::State& state) {
+  const vf::Scene& s = scene("pow2");
+  const vf::Terrain t = vf::prepareTerrain(s).terrain;
+  vf::CheckOptions o;
+  o.visibleFirst = state.range(0) != 0;
+  int64_t offScreen = 0, cameras = 0;
+  for (auto _ : state) {
+    const vf::Report r = vf::checkScene(t, s.camera, o);
+    offScreen += r.stats.patchesOffScreen;
+    ++cameras;
+    benchmark::DoNotOptimize(r.stats.cracks);
+  }
+  state.SetItemsProcessed(cameras);
+  state.SetLabel(o.visibleFirst ? "visible first, patches off screen " + std::to_string(offScreen / std::max<int64_t>(1, cameras))
+                                : std::string("full check"));
+}
+BENCHMARK(BM_CheckSceneVisibleFirst)->Arg(0)->Arg(1)->ArgName("visible_first")->Unit(benchmark::kMillisecond);
+
+void BM_SweepShortcuts(benchmark::State& state) {
+  const vf::Scene& s = scene("pow2");
+  const vf::Terrain t = vf::prepareTerrain(s).terrain;
+  const std::vector<vf::Camera> cams = vf::randomCameras(t, 32, 1);
+  vf::CheckOptions o;
+  o.visibleFirst = state.range(0) != 0;
+  vf::SweepOptions so;
+  so.threads = 1;
+  so.keepCameras = false;
+  so.resultCache = state.range(1) != 0;
+  vf::WorkStats work;
+  vf::Stats total;
+  for (auto _ : state) {
+    const vf::SweepResult r = vf::sweep(t, cams, o, so);
+    work = r.work;
+    total = r.total;
+    benchmark::DoNotOptimize(r.total.cracks);
+  }
+  state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * cams.size()));
+  const double pairs = static_cast<double>(std::max<int64_t>(1, total.edgesChecked));
+  char label[160];
+  std::snprintf(label, sizeof label, "cameras/s; per camera %lld lod evals, %lld domain evals; hits %.1f %%, seam %.1f %%",
+                static_cast<long long>(work.lodEvaluations / 32), static_cast<long long>(work.domainEvaluations / 32),
+                100.0 * static_cast<double>(work.cacheHits) / pairs, 100.0 * static_cast<double>(work.seamHits) / pairs);
+  state.SetLabel(label);
+}
+// args: visible first (0, 1), result cache (0, 1)
+BENCHMARK(BM_SweepShortcuts)
+    ->ArgsProduct({{0, 1}, {0, 1}})
+    ->ArgNames({"visible_first", "cache"})
+    ->Unit(benchmark::kMillisecond);
 
 // Per-camera cost of a camera-dependent layout beside a static one (docs/verify.md, "Quadtree"): the quadtree's
 // selection alone (cameraLayout into a warm per-thread scratch), and selection + check per camera for the CDLOD

@@ -35,6 +35,8 @@ struct RowSpec {
   bool mesh = false;      // whole-mesh check instead of the edge check
   int lodPrecision = 0;   // 1: lod/ in float (the hull shader), 2: the same shaders in double (screen_sphere only)
   bool reference = false; // the group's reference row
+  bool sweep = false;     // the sweep shortcuts group: vf::sweep on one thread, timed whole
+  bool visibleFirst = false, resultCache = false; // its shortcuts
 };
 
 std::vector<RowSpec> rowSpecs() {
@@ -67,6 +69,14 @@ std::vector<RowSpec> rowSpecs() {
   add("tessellator", "denormals flushed", "--flush-denormals (llvmpipe)", {})->flush = true;
   add("scope", "edges", "edge check: fftess::edgePoints per outer edge", {}, true);
   add("scope", "whole mesh", "--mesh: full tessellation, CGAL polygon soup, border edges", {})->mesh = true;
+  auto sweepRow = [&](const char* n, const char* w, bool visibleFirst, bool cache) {
+    RowSpec* x = add("sweep shortcuts", n, w, {}, !visibleFirst && !cache);
+    x->sweep = true, x->visibleFirst = visibleFirst, x->resultCache = cache;
+  };
+  sweepRow("full check", "sweep --no-visible-first --no-result-cache", false, false);
+  sweepRow("visible first", "sweep --no-result-cache (CheckOptions::visibleFirst)", true, false);
+  sweepRow("result cache", "sweep --no-visible-first (SweepOptions::resultCache)", false, true);
+  sweepRow("both", "sweep (the default)", true, true);
   return r;
 }
 
@@ -83,7 +93,42 @@ struct Row {
   bool compared = false;
   std::string verdict;
   int64_t lodFactorsDiffer = 0, lodJumpFactorsDiffer = 0, lodCullsDiffer = 0;
+  vf::SweepResult swept; // the sweep shortcuts group: the first run's result (its aggregates)
 };
+
+// The sweep shortcuts group: the row's cameras as one vf::sweep on one thread (the result cache lives for one sweep:
+// a camera profits from the cameras before it), timed whole as the fastest of `repeats` runs, each with a fresh
+// cache. Findings: those on screen (visible first skips only what no camera sees; the verdict counts on screen).
+void runSweepRow(Row& row, const vf::Terrain& terrain, const std::vector<vf::Camera>& cams, int repeats) {
+  vf::CheckOptions opt;
+  opt.maxFindings = static_cast<size_t>(-1);
+  opt.visibleFirst = row.spec.visibleFirst;
+  vf::SweepOptions so;
+  so.threads = 1;
+  so.keepCameras = false;
+  so.resultCache = row.spec.resultCache;
+  so.onReport = [&row](size_t c, const vf::Report& r) {
+    for (const vf::Finding& f : r.findings)
+      if (f.onScreen)
+        row.findings.insert({c, f.a.patch.index, f.a.edge, f.b.patch.index, f.b.edge, static_cast<int>(f.classification)});
+    for (const vf::Hole& h : r.holes) row.findings.insert({c, h.patch.index, -1, -1, -1, 10 + static_cast<int>(h.kind)});
+  };
+  double best = 0;
+  for (int k = 0; k < repeats; ++k) {
+    const Clock::time_point t0 = Clock::now();
+    vf::SweepResult res = vf::sweep(terrain, cams, opt, so);
+    const double s = std::chrono::duration<double>(Clock::now() - t0).count();
+    best = k == 0 ? s : std::min(best, s);
+    if (k == 0) row.swept = std::move(res), so.onReport = nullptr; // findings and counters: the first run's
+  }
+  if (!so.resultCache && row.swept.resultCacheOff.empty()) row.swept.resultCacheOff = "--no-result-cache";
+  row.seconds = best;
+  row.cameras = cams.size();
+  row.stats = row.swept.total;
+  row.work = row.swept.work;
+  row.edges = row.swept.total.edgesChecked;
+  row.verdict = vf::toString(vf::verdictOf(row.swept, /*countOffScreen=*/false));
+}
 
 void runRow(Row& row, const BenchReportArgs& a, const std::vector<vf::Camera>& cams, size_t meshCameras) {
   std::vector<std::string> o = a.overrides;
@@ -98,6 +143,7 @@ void runRow(Row& row, const BenchReportArgs& a, const std::vector<vf::Camera>& c
     row.error = tr.error;
     return;
   }
+  if (row.spec.sweep) return runSweepRow(row, tr.terrain, cams, a.repeats);
   vf::CheckOptions opt;
   opt.kernel = row.spec.kernel;
   opt.tessellator.flushDenormals = row.spec.flush;
@@ -237,10 +283,12 @@ BenchTable runBenchTable(const BenchReportArgs& a) {
   auto perCam = [](const Row& r) { return r.seconds / static_cast<double>(r.cameras); };
   double cheapest = 0;
   double lodFloat = 0; // the LOD rows time the LOD alone: their cost is relative to the float LOD
+  double fullSweep = 0; // the sweep shortcuts rows time a sweep: their cost is relative to its full check
   for (const Row& r : rows) {
     if (!r.error.empty() || r.cameras == 0) continue;
     if (r.spec.lodPrecision == 1) lodFloat = perCam(r);
-    if (!r.spec.lodPrecision && (cheapest == 0 || perCam(r) < cheapest)) cheapest = perCam(r);
+    if (r.spec.sweep && r.spec.reference) fullSweep = perCam(r);
+    if (!r.spec.lodPrecision && !r.spec.sweep && (cheapest == 0 || perCam(r) < cheapest)) cheapest = perCam(r);
   }
   for (const Row& r : rows) {
     BenchRow b;
@@ -250,7 +298,7 @@ BenchTable runBenchTable(const BenchReportArgs& a) {
     if (r.error.empty() && r.cameras > 0) {
       b.msPerCamera = 1e3 * perCam(r);
       b.usPerEdge = r.spec.mesh || r.stats.edgesChecked == 0 ? 0 : 1e6 * r.seconds / static_cast<double>(r.stats.edgesChecked);
-      const double unit = r.spec.lodPrecision ? lodFloat : cheapest;
+      const double unit = r.spec.lodPrecision ? lodFloat : r.spec.sweep ? fullSweep : cheapest;
       b.relative = unit > 0 ? perCam(r) / unit : 0;
     }
     b.findings = static_cast<int64_t>(r.findings.size());
@@ -258,6 +306,10 @@ BenchTable runBenchTable(const BenchReportArgs& a) {
     b.verdict = r.verdict;
     b.stats = r.stats;
     b.work = r.work;
+    b.sweep = r.spec.sweep;
+    b.visibleFirst = r.swept.visibleFirst, b.resultCache = r.swept.resultCache;
+    b.resultCacheOff = r.swept.resultCacheOff;
+    b.resultCacheItems = r.swept.resultCacheItems, b.resultCacheBytes = r.swept.resultCacheBytes;
     t.rows.push_back(b);
   }
   return t;
@@ -267,17 +319,25 @@ static std::string perCamera(int64_t v, size_t cameras) {
   return cameras ? formatNumber(static_cast<double>(v) / static_cast<double>(cameras)) : "-";
 }
 
+// The share of the pairs classified (stats.edgesChecked) that `hits` decided without evaluating their points, in %;
+// "-" where the row ran no result cache.
+static std::string hitRate(const BenchRow& r, int64_t hits) {
+  if (!r.resultCache || r.stats.edgesChecked == 0) return "-";
+  return fmt("%.1f %%", 100.0 * static_cast<double>(hits) / static_cast<double>(r.stats.edgesChecked));
+}
+
 std::string benchMarkdown(const BenchTable& t) {
   std::string o;
   o += "Scene `" + t.scene + "` (" + std::to_string(t.patches) + " patches), " + std::to_string(t.cameras.size()) +
        " random cameras (the whole-mesh row: the first " + std::to_string(t.meshCameras) + "), one thread; each edge-check camera timed as the fastest of " + std::to_string(t.repeats) + " runs.\n\n";
   o += "| group | row | setting | ms / camera | µs / edge | cost | findings | vs reference (+gained / -lost) | verdict | "
-       "lod evals | height samples | domain evals | shared points | edge queries | CGAL calls | full tessellations |\n";
-  o += "|---|---|---|---:|---:|---:|---:|---|---|---:|---:|---:|---:|---:|---:|---:|\n";
+       "lod evals | height samples | domain evals | shared points | edge queries | CGAL calls | full tessellations | "
+       "box tests | cache hits | seam hits |\n";
+  o += "|---|---|---|---:|---:|---:|---:|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const BenchRow& r : t.rows) {
     if (!r.error.empty()) {
       o += "| " + r.group + " | " + r.name + " | " + r.what + " | - | - | - | - | not applicable: " + r.error +
-           " | | | | | | | | |\n";
+           " | | | | | | | | | | | |\n";
       continue;
     }
     const size_t c = r.cameras;
@@ -288,12 +348,30 @@ std::string benchMarkdown(const BenchTable& t) {
          " | " + r.verdict + " | " + perCamera(r.work.lodEvaluations, c) + " | " + perCamera(r.work.heightSamples, c) +
          " | " + perCamera(r.work.domainEvaluations, c) + " | " + perCamera(r.work.sharedEdgePoints, c) + " | " +
          perCamera(r.work.edgeQueries, c) + " | " + perCamera(r.work.cgalCalls, c) + " | " +
-         perCamera(r.work.fullTessellations, c) + " |\n";
+         perCamera(r.work.fullTessellations, c) + " | " + perCamera(r.work.boxTests, c) + " | " +
+         hitRate(r, r.work.cacheHits) + " | " + hitRate(r, r.work.seamHits) + " |\n";
   }
   o += "\nWork columns are per camera. Findings: cracks, T-junctions and holes over all cameras (whole mesh: patch "
        "edges holding an inner border edge). cost: time per camera over the cheapest row's; the lod precision rows "
-       "time the LOD alone (every patch), their cost is relative to the float LOD.\n";
+       "time the LOD alone (every patch), their cost is relative to the float LOD. The sweep shortcuts rows time one "
+       "sweep of all the cameras on one thread (the fastest of the runs, each with a fresh result cache), their cost "
+       "relative to the group's full check, and count the findings on screen; cache hits and seam hits: the pairs classified that the result cache or a seam proof "
+       "decided without evaluating their points.\n";
   return o;
+}
+
+// Under a sweep shortcuts row: the work per camera and what the shortcuts did.
+static std::string sweepRowText(const BenchRow& r) {
+  const size_t c = r.cameras;
+  std::string o = "  " + std::string(41, ' ') + "per camera: lod evals " + perCamera(r.work.lodEvaluations, c) +
+                  ", domain evals " + perCamera(r.work.domainEvaluations, c) + ", edge queries " +
+                  perCamera(r.work.edgeQueries, c) + ", box tests " + perCamera(r.work.boxTests, c) + "; ";
+  o += r.visibleFirst ? "visible first (" + perCamera(r.stats.patchesOffScreen, c) + " patches off screen)"
+                      : std::string("full check");
+  o += r.resultCache ? "; result cache hits " + hitRate(r, r.work.cacheHits) + ", seam hits " +
+                           hitRate(r, r.work.seamHits) + " of the pairs classified"
+                     : "; result cache off" + (r.resultCacheOff.empty() ? std::string() : ": " + r.resultCacheOff);
+  return o + "\n";
 }
 
 std::string benchText(const BenchTable& t) {
@@ -315,6 +393,7 @@ std::string benchText(const BenchTable& t) {
                   r.msPerCamera, r.usPerEdge > 0 ? fmt("%.3f", r.usPerEdge).c_str() : "-", r.relative,
                   static_cast<long long>(r.findings), vs.c_str(), r.verdict.c_str());
     o += buf;
+    if (r.sweep) o += sweepRowText(r);
   }
   return o;
 }
@@ -346,6 +425,16 @@ std::string benchJson(const BenchTable& t) {
     x["verdict"] = r.verdict;
     x["stats"] = statsJson(r.stats);
     x["work"] = workJson(r.work);
+    if (r.sweep) {
+      const double pairs = static_cast<double>(std::max<int64_t>(1, r.stats.edgesChecked));
+      x["sweep"] = {{"visible_first", r.visibleFirst},
+                    {"result_cache", r.resultCache},
+                    {"result_cache_off", r.resultCache ? json(nullptr) : json(r.resultCacheOff)},
+                    {"cache_hit_rate", static_cast<double>(r.work.cacheHits) / pairs},
+                    {"seam_hit_rate", static_cast<double>(r.work.seamHits) / pairs},
+                    {"result_cache_items", r.resultCacheItems},
+                    {"result_cache_bytes", r.resultCacheBytes}};
+    }
     rows.push_back(x);
   }
   j["rows"] = rows;

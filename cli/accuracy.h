@@ -28,6 +28,11 @@ struct BenchRow {
   int64_t findings = 0, gained = 0, lost = 0;
   vf::Stats stats;
   vf::WorkStats work; // summed over the row's cameras
+  // The sweep shortcuts group: a whole sweep on one thread; what ran (vf::SweepResult) and the cache's size.
+  bool sweep = false;
+  bool visibleFirst = false, resultCache = false;
+  std::string resultCacheOff;
+  size_t resultCacheItems = 0, resultCacheBytes = 0;
 };
 
 struct BenchTable {

@@ -87,6 +87,10 @@ struct SweepArgs : SceneArgs {
   int threads = 0;
   std::string label;   // --label TEXT: name printed in the summary (default: the scene name)
   std::string shard;   // --shard K/N: only the cameras i with i % N == K - 1 (global indices kept)
+  // The sweep shortcuts (docs/verify.md, "Sweep shortcuts"), on unless turned off: --no-visible-first (also off with
+  // --offscreen: vf::CheckOptions::visibleFirst), --no-result-cache (vf::SweepOptions::resultCache).
+  bool noVisibleFirst = false;
+  bool noResultCache = false;
 };
 
 struct MergeArgs {

@@ -76,6 +76,8 @@ vf::Stats statsOf(const json& j) {
   s.worstGapWorldOnScreen = j.at("worst_gap_world_on_screen");
   s.worstGapPixelsOnScreen = j.at("worst_gap_pixels_on_screen");
   s.undecided = j.at("undecided");
+  s.patchesOffScreen = j.at("patches_off_screen");
+  s.edgesOffScreen = j.at("edges_off_screen");
   return s;
 }
 
@@ -84,7 +86,7 @@ json mergeHeader(const json& shard) {
   json header = shard;
   for (const char* k : {"cameras", "shard", "cameras_total", "cameras_done", "cancelled", "cameras_not_done",
                         "cameras_invalid", "cameras_nothing_checked", "cameras_undecided", "stats", "verdict",
-                        "causes", "work", "terrain_work"})
+                        "causes", "visible_first", "result_cache", "work", "terrain_work"})
     header.erase(k);
   return header;
 }
@@ -208,9 +210,39 @@ json mergedWork(const std::vector<json>& shards) {
   return work;
 }
 
+// The shards' one value of a flag, or "mixed" when they differ (shards may run with and without a shortcut: the
+// findings are the same).
+json agreed(const std::vector<json>& values) {
+  for (const json& v : values)
+    if (v != values.front()) return "mixed";
+  return values.front();
+}
+
+// The sweep shortcuts over the shards: visible_first, result_cache.on and off_reason as every shard says (else
+// "mixed"), the cache's counters summed (each shard has its own cache: items, bytes and dropped add up too).
+void mergeShortcuts(const std::vector<json>& shards, json& summary) {
+  std::vector<json> visible, on, why;
+  json rc = summary.at("result_cache"); // sweepSummaryJson's keys, in its order
+  for (auto it = rc.begin(); it != rc.end(); ++it)
+    if (it.value().is_number()) it.value() = 0;
+  for (const json& s : shards) {
+    visible.push_back(s.at("visible_first"));
+    const json& c = s.at("result_cache");
+    on.push_back(c.at("on"));
+    why.push_back(c.at("off_reason"));
+    for (auto it = rc.begin(); it != rc.end(); ++it)
+      if (it.value().is_number()) it.value() = it.value().get<int64_t>() + c.at(it.key()).get<int64_t>();
+  }
+  rc["on"] = agreed(on);
+  rc["off_reason"] = agreed(why);
+  summary["visible_first"] = agreed(visible);
+  summary["result_cache"] = rc;
+}
+
 // The text summary: what was merged, the stats block, the verdict line.
 std::string mergeText(const std::vector<json>& shards, const json& header, const std::vector<const json*>& cams,
-                      const vf::SweepResult& res, size_t total, vf::Verdict verdict, bool countOffScreen) {
+                      const vf::SweepResult& res, const json& summary, size_t total, vf::Verdict verdict,
+                      bool countOffScreen) {
   size_t crackCameras = 0, holeCameras = 0;
   for (const json* c : cams) {
     if (!c->at("done").get<bool>()) continue;
@@ -223,6 +255,7 @@ std::string mergeText(const std::vector<json>& shards, const json& header, const
                      header.at("cameras_source").get<std::string>() + "): cameras " +
                      std::to_string(res.camerasDone) + " of " + std::to_string(total) +
                      (res.cancelled ? " (interrupted)" : "") + "\n";
+  text += shortcutsText(summary.at("visible_first"), summary.at("result_cache"), res.total, "");
   text += statsText(res.total, countOffScreen);
   text += "verdict: " + verdictWords(verdict, res, crackCameras, holeCameras, total, countOffScreen) + "\n";
   return text;
@@ -250,6 +283,7 @@ int runMerge(const MergeArgs& a) {
   json summary = sweepSummaryJson(total, res, mergedCauses(shards), vf::WorkStats(), countOffScreen);
   summary["work"] = mergedWork(shards);
   summary["terrain_work"] = shards[0].at("terrain_work");
+  mergeShortcuts(shards, summary);
   if (out) {
     out->stream(sweepJsonBegin(header));
     for (size_t i = 0; i < cams.size(); ++i) out->stream(sweepJsonCamera(*cams[i], i == 0));
@@ -258,7 +292,7 @@ int runMerge(const MergeArgs& a) {
   }
   const vf::Verdict verdict = vf::verdictOf(res, countOffScreen);
   if (!a.quiet && a.json != "-") {
-    writeStdout(mergeText(shards, header, cams, res, total, verdict, countOffScreen));
+    writeStdout(mergeText(shards, header, cams, res, summary, total, verdict, countOffScreen));
     flushStdout();
   }
   return sweepStatus(res, verdict, a.failOnTJunctions);

@@ -35,7 +35,10 @@ json workJson(const vf::WorkStats& w) {
           {"edge_queries", w.edgeQueries},       {"cgal_calls", w.cgalCalls},
           {"full_tessellations", w.fullTessellations}, {"shared_edge_points", w.sharedEdgePoints},
           {"visibility_evaluations", w.visibilityEvaluations},
-          {"layout_selections", w.layoutSelections},     {"layout_nodes", w.layoutNodes}};
+          {"layout_selections", w.layoutSelections},     {"layout_nodes", w.layoutNodes},
+          {"cache_hits", w.cacheHits},           {"seam_hits", w.seamHits},
+          {"cache_misses", w.cacheMisses},       {"seam_proofs", w.seamProofs},
+          {"box_tests", w.boxTests}};
 }
 
 static json sideJson(const vf::EdgeSide& s) {
@@ -96,7 +99,8 @@ json statsJson(const vf::Stats& s) {
           {"worst_gap_world", s.worstGapWorld}, {"worst_gap_pixels", s.worstGapPixels},
           {"cracks_off_screen", s.cracksOffScreen}, {"t_junctions_off_screen", s.tJunctionsOffScreen},
           {"worst_gap_world_on_screen", s.worstGapWorldOnScreen},
-          {"worst_gap_pixels_on_screen", s.worstGapPixelsOnScreen}, {"undecided", s.undecided}};
+          {"worst_gap_pixels_on_screen", s.worstGapPixelsOnScreen}, {"undecided", s.undecided},
+          {"patches_off_screen", s.patchesOffScreen}, {"edges_off_screen", s.edgesOffScreen}};
 }
 
 json holeJson(const vf::Hole& h) {
@@ -247,12 +251,65 @@ json sweepSummaryJson(size_t requested, const vf::SweepResult& res, const std::v
     cs.push_back({{"cause", c.cause}, {"fix", c.fix}, {"findings", c.findings}, {"cameras", c.cameras}, {"first_camera", c.firstCamera},
                   {"example", c.example}});
   j["causes"] = cs;
+  j["visible_first"] = res.visibleFirst;
+  j["result_cache"] = resultCacheJson(res);
   vf::WorkStats work = terrainWork;
   work += res.work;
   work.terrainBuilds = terrainWork.terrainBuilds;
   j["work"] = workJson(work);
   j["terrain_work"] = workJson(terrainWork);
   return j;
+}
+
+json resultCacheJson(const vf::SweepResult& res) {
+  const vf::WorkStats& w = res.work;
+  return {{"on", res.resultCache},
+          {"off_reason", res.resultCache ? json(nullptr) : json(res.resultCacheOff)},
+          {"hits", w.cacheHits},
+          {"seam_hits", w.seamHits},
+          {"misses", w.cacheMisses},
+          {"seam_proofs", w.seamProofs},
+          {"items", res.resultCacheItems},
+          {"bytes", res.resultCacheBytes},
+          {"dropped", res.resultCacheDropped}};
+}
+
+// "visible first (...)", "visible first on some shards (...)" or "full check (why)".
+static std::string visibleFirstWords(const json& on, const vf::Stats& s, const std::string& fullCheckWhy) {
+  const std::string counts = " (" + std::to_string(s.patchesOffScreen) + " patches, " +
+                             std::to_string(s.edgesOffScreen) + " edge pairs off screen, not evaluated)";
+  if (on.is_boolean() && on.get<bool>()) return "visible first" + counts;
+  if (on.is_string()) return "visible first on some shards" + counts; // merged: "mixed"
+  return "full check" + (fullCheckWhy.empty() ? std::string() : " (" + fullCheckWhy + ")");
+}
+
+// "result cache on (...)", "result cache on some shards (...)" or "result cache off: why".
+static std::string resultCacheWords(const json& rc, const vf::Stats& s) {
+  const json& on = rc.at("on");
+  const bool some = on.is_string();
+  if (!some && !on.get<bool>()) {
+    const json& why = rc.at("off_reason");
+    const std::string text = why.is_string() ? why.get<std::string>() : std::string();
+    return "result cache off" + (text.empty() ? std::string() : ": " + text);
+  }
+  const int64_t hits = rc.at("hits").get<int64_t>(), seam = rc.at("seam_hits").get<int64_t>();
+  // Hit rate: the pairs decided without evaluating their points, over the pairs classified (stats.edges_checked).
+  char rate[32] = "-";
+  if (s.edgesChecked > 0)
+    std::snprintf(rate, sizeof rate, "%.1f %%", 100.0 * static_cast<double>(hits + seam) / static_cast<double>(s.edgesChecked));
+  char buf[256];
+  std::snprintf(buf, sizeof buf, " (%lld hits, %lld seam hits, hit rate %s, %lld items, %lld KiB, %lld dropped)",
+                static_cast<long long>(hits), static_cast<long long>(seam), rate,
+                static_cast<long long>(rc.at("items").get<int64_t>()),
+                static_cast<long long>(rc.at("bytes").get<int64_t>() / 1024),
+                static_cast<long long>(rc.at("dropped").get<int64_t>()));
+  return (some ? "result cache on some shards" : "result cache on") + std::string(buf);
+}
+
+std::string shortcutsText(const json& visibleFirst, const json& resultCache, const vf::Stats& total,
+                          const std::string& fullCheckWhy) {
+  return "  shortcuts      " + visibleFirstWords(visibleFirst, total, fullCheckWhy) + "; " +
+         resultCacheWords(resultCache, total) + "\n";
 }
 
 // dump(2) of a value nested `depth` levels deep: its continuation lines indented by 2 * depth more.

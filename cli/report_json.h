@@ -23,7 +23,9 @@ using json = nlohmann::ordered_json;
 // 5: sweep: "cameras" streamed before the summary (written as each camera finishes, in index order), "shard" (with
 //    --shard), "terrain_work" (the terrain build's part of "work", so shards merge); work counters
 //    full_tessellations, shared_edge_points, visibility_evaluations.
-constexpr int kReportVersion = 7;
+// 8: the sweep shortcuts: "visible_first" and "result_cache" in the sweep summary, "patches_off_screen" and
+//    "edges_off_screen" in every "stats", work counters cache_hits, seam_hits, cache_misses, seam_proofs, box_tests.
+constexpr int kReportVersion = 8;
 
 json vec3Json(const glm::vec3& v);
 json findingJson(const vf::Finding& f);
@@ -32,6 +34,14 @@ json denormalJson(const vf::DenormalFactor& d); // a denormal hull factor: patch
 json lodJson(const vf::EdgeLod& l);   // one side's LOD record (docs/cli.md)
 json workJson(const vf::WorkStats& w);
 json statsJson(const vf::Stats& s);
+// A sweep's result cache (vf::SweepResult, its work counters): {"on", "off_reason" (null when on), "hits",
+// "seam_hits", "misses", "seam_proofs", "items", "bytes", "dropped"}.
+json resultCacheJson(const vf::SweepResult& res);
+// The summary line of the sweep shortcuts ("  shortcuts      visible first (...); result cache on (...)\n") from the
+// summary's "visible_first" and "result_cache" (a sweep's, or merged: true, false or "mixed") and its stats.
+// fullCheckWhy: why visible first did not run, when the cli knows ("--offscreen", "--no-visible-first"; "" else).
+std::string shortcutsText(const json& visibleFirst, const json& resultCache, const vf::Stats& total,
+                          const std::string& fullCheckWhy);
 json cameraJson(const vf::Camera& c);
 json sceneJson(const SceneArgs& a, const vf::Scene& s);
 

@@ -118,7 +118,15 @@ CLI::App* addSweep(CLI::App& app, SweepArgs& a) {
   sub->add_option("--label", a.label, "Name for this run in the summary (default: the scene's name)");
   sub->add_option("--shard", a.shard,
                   "K/N: check only the cameras i with i % N == K - 1 (1 <= K <= N; indices stay global, so the "
-                  "shards' --json reports merge with 'fftess merge' into exactly the report of one run)");
+                  "shards' --json reports merge with 'fftess merge' into the report of one run: exactly, with "
+                  "--no-result-cache)");
+  sub->add_flag("--no-visible-first", a.noVisibleFirst,
+                "Check every patch and shared edge of each camera, also those proven off screen (default: visible "
+                "first, which skips them: the on-screen findings and the verdict are the same; --offscreen implies "
+                "this)");
+  sub->add_flag("--no-result-cache", a.noResultCache,
+                "Prove every shared edge on every camera again (default: a camera reuses what earlier cameras proved "
+                "about an edge; off by itself for camera-dependent effects, e.g. displacement.mip)");
   return sub;
 }
 
@@ -362,6 +370,7 @@ vf::SweepResult SweepRun::run(const std::atomic<bool>* cancel, bool talk, const 
   so.threads = a_.threads;
   so.cancel = cancel;
   so.keepCameras = false; // per camera: the tallies and the streamed JSON entry, nothing else
+  so.resultCache = !a_.noResultCache;
   if (talk) so.progress = [&progress](size_t done, size_t total) { progress.report(done, total); };
   so.onReport = [this](size_t local, const vf::Report& r) {
     tally_.add(plan_.global(local), r);
@@ -375,6 +384,7 @@ vf::SweepResult SweepRun::run(const std::atomic<bool>* cancel, bool talk, const 
   if (!cancel->load())
     res = vf::sweep(terrain_, requested_, [&](size_t local) { return cams_.at(plan_.global(local)); }, opt_, so);
   res.cancelled = res.cancelled || (cancel->load() && res.camerasDone + res.camerasInvalid < requested_);
+  if (a_.noResultCache && !res.resultCache) res.resultCacheOff = "--no-result-cache"; // the reason the user gave
   progress.finish();
   elapsed_ = progress.elapsed();
   return res;
@@ -412,6 +422,8 @@ std::string SweepRun::summaryText(const vf::SweepResult& res, const std::string&
   text += "  adjacency      " + (shaderReadsClamp(scene) ? std::string(vf::toString(scene.lod.screenSphere.clamp)) + " clamp"
                                                             : std::string("the shader's own neighbour rule")) +
           ", " + toString(scene.partitioning) + " partitioning\n";
+  text += shortcutsText(res.visibleFirst, resultCacheJson(res), res.total,
+                        a_.offscreen ? "--offscreen" : a_.noVisibleFirst ? "--no-visible-first" : "");
   text += statsText(res.total, a_.offscreen);
   text += gpuDiffs_.text(scene, opt_, res.total);
   std::snprintf(buf, sizeof buf, "  cameras with cracks %zu, with T-junctions only %zu, with holes %zu\n", crackCameras_,
@@ -474,6 +486,7 @@ bool SweepRun::worstGltf(ReportFiles& reports, const vf::SweepResult& res) const
   const vf::Camera cam = cams_.at(worst_.camera);
   vf::CheckOptions opt = opt_;
   opt.maxFindings = vf::CheckOptions{}.maxFindings; // what `check` keeps
+  opt.visibleFirst = false;                         // and how it checks: the full check
   const vf::Report r = vf::checkScene(terrain_, cam, opt);
   if (!r.error.empty()) throw std::runtime_error("--gltf: camera " + std::to_string(worst_.camera) + ": " + r.error);
   std::string which = "camera " + std::to_string(worst_.camera) + " of the sweep (" + how_ + "), " + worstWhy();
@@ -493,6 +506,9 @@ int runSweep(const SweepArgs& a) {
   const vf::Terrain terrain = load(a); // the one terrain build of this command
   vf::CheckOptions opt = checkOptions(a, terrain);
   opt.maxFindings = static_cast<size_t>(-1); // every finding reaches onReport, so the cause counts are complete
+  // Visible first unless --offscreen (every finding counts: the full check) or --no-visible-first; `check` keeps the
+  // full check (it lists the off-screen findings apart).
+  opt.visibleFirst = !a.offscreen && !a.noVisibleFirst;
   // Ctrl-C from here on (the sweep, the reports) stops the work; the summary and reports of what was done are still
   // written. A second Ctrl-C kills the process (temporary files removed). Once the work is done, a first Ctrl-C while a
   // report waits for a FIFO's reader ends that wait (AtomicFile: Interrupted, exit 130).

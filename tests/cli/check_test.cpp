@@ -128,7 +128,7 @@ TEST_CASE("check: the bundled scene is watertight with the pow2 workaround, crac
   CHECK(r.status == 0);
   CHECK(r.out.find("verdict: watertight") != std::string::npos);
   json j = json::parse(clitest::readFile(js));
-  CHECK(j.at("version") == 7);
+  CHECK(j.at("version") == 8);
   CHECK(j.at("kind") == "check");
   checkStatsShape(j.at("stats"));
   CHECK(j.at("stats").at("cracks") == 0);
@@ -199,7 +199,10 @@ TEST_CASE("check, check --mesh and sweep build the terrain once", "[cli][check][
   CHECK(r.status == 0);
   j = json::parse(clitest::readFile(js));
   CHECK(j.at("work").at("terrain_builds") == 1);
-  CHECK(j.at("work").at("lod_evaluations") == j.at("stats").at("patches")); // stats sum the patches per camera
+  // stats sum the patches per camera; the LOD runs once for each, but not for those visible first proved off screen
+  const int64_t lodEvals = j.at("work").at("lod_evaluations"), patches = j.at("stats").at("patches");
+  CHECK(lodEvals <= patches);
+  CHECK(lodEvals + j.at("stats").at("patches_off_screen").get<int64_t>() >= patches);
 }
 
 // check --mesh on a cracked camera where a big edge has two half-size neighbours and one of them is culled (random
@@ -307,7 +310,7 @@ TEST_CASE("sweep: workaround on is clean, off cracks, summary names causes, JSON
   CHECK(r.out.find("causes") != std::string::npos);
   CHECK(r.out.find("not a power of two") != std::string::npos);
   const json j = json::parse(clitest::readFile(js));
-  CHECK(j.at("version") == 7);
+  CHECK(j.at("version") == 8);
   CHECK(j.at("kind") == "sweep");
   CHECK(j.at("cameras_total") == 16);
   CHECK(j.at("cameras_done") == 16);
@@ -341,12 +344,28 @@ TEST_CASE("sweep: workaround on is clean, off cracks, summary names causes, JSON
 TEST_CASE("sweep: causes count every finding, so a cause that is no camera's worst is listed too", "[cli][sweep]") {
   // terrain.toml without the clamp, 24 random cameras: besides the fractional nesting cracks, one camera has cracks
   // where the small side's factor is not half the big side's (the minimum factor clamp), never its worst finding.
+  // --no-visible-first: each camera below is compared with `fftess check`, the full check (off-screen findings too).
   const std::string js = clitest::tmpDir() + "/sweep-causes.json";
   auto r = run({"sweep", kScene, "--random", "24", "--seed", "5", "--set", "lod.adjacency_clamp=none", "--threads",
-                "2", "--json", js});
+                "2", "--json", js, "--no-visible-first"});
   CHECK(r.status == 1);
   const json j = json::parse(clitest::readFile(js));
   checkCauses(j);
+  // The default sweep (visible first) lists the same causes on screen, with the same counts and first cameras.
+  {
+    const std::string vf = clitest::tmpDir() + "/sweep-causes-vf.json";
+    CHECK(run({"sweep", kScene, "--random", "24", "--seed", "5", "--set", "lod.adjacency_clamp=none", "--threads", "2",
+               "--json", vf, "-q"}).status == 1);
+    const json k = json::parse(clitest::readFile(vf));
+    checkCauses(k);
+    auto onScreen = [](const json& causes) {
+      json out = json::array();
+      for (const json& c : causes)
+        if (c.at("cause").get<std::string>().find("(off screen)") == std::string::npos) out.push_back(c);
+      return out;
+    };
+    CHECK(onScreen(k.at("causes")) == onScreen(j.at("causes")));
+  }
   const json& causes = j.at("causes");
   REQUIRE(causes.size() >= 2);
   bool notHalf = false;
@@ -401,7 +420,7 @@ TEST_CASE("check: an eye on a shared edge's midpoint plane gives holes, exit 1 (
   CHECK(svg.find("<path class=\"hole\"") != std::string::npos); // the holes are filled on the map
   CHECK(r.out.find("w = 0 in the projection") != std::string::npos);
   const nlohmann::json j = nlohmann::json::parse(clitest::readFile(json));
-  CHECK(j.at("version") == 7);
+  CHECK(j.at("version") == 8);
   CHECK(j.at("verdict") == "holes");
   CHECK(j.at("stats").at("holes").get<int64_t>() >= 2);
   REQUIRE(j.at("holes").size() >= 2);

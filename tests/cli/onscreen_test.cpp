@@ -98,7 +98,8 @@ TEST_CASE("check and sweep: cracks only off screen are not counted, --offscreen 
   CHECK(run({"check", sky, "--path-camera", "0", "--offscreen"}).status == 1);
 
   const std::string sweepSvg = clitest::tmpDir() + "/sky-sweep.svg";
-  r = run({"sweep", sky, "-j", "1", "--svg", sweepSvg});
+  // --no-visible-first: the off-screen cracks are found (visible first would not look for them: the default run below).
+  r = run({"sweep", sky, "-j", "1", "--svg", sweepSvg, "--no-visible-first"});
   CHECK(r.status == 0);
   std::string why;
   const std::string picture = clitest::readFile(sweepSvg);
@@ -107,6 +108,7 @@ TEST_CASE("check and sweep: cracks only off screen are not counted, --offscreen 
   CHECK(picture.find("class=\"bad\"") == std::string::npos);
   CHECK(lineOf(r.out, "verdict:").rfind("verdict: WATERTIGHT from all 2 cameras (", 0) == 0);
   CHECK(run({"sweep", sky, "-j", "1", "--offscreen"}).status == 1);
+  CHECK(run({"sweep", sky, "-j", "1"}).status == 0); // visible first: the same verdict
 
   // Shards merge with the choice they were run with (the report's "offscreen").
   const std::string dir = clitest::tmpDir();
@@ -128,7 +130,8 @@ TEST_CASE("check and sweep: cracks only off screen are not counted, --offscreen 
 // The issue's sweep headline was a vertex near the eye plane (thousands of pixels) that no camera sees.
 TEST_CASE("sweep: the headline's worst gap is the worst on screen", "[cli][sweep][onscreen]") {
   const std::string js = clitest::tmpDir() + "/onscreen-sweep.json";
-  const auto r = run({"sweep", kScene, "--random", "200", "--seed", "3", "-j", "2", "--json", js});
+  // --no-visible-first: visible first does not look for the findings no camera sees, and this compares with them.
+  const auto r = run({"sweep", kScene, "--random", "200", "--seed", "3", "-j", "2", "--json", js, "--no-visible-first"});
   CHECK(r.status == 1);
   const std::string verdict = lineOf(r.out, "verdict:");
   INFO(verdict);

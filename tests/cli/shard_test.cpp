@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <string>
 
 using clitest::run;
@@ -18,9 +19,11 @@ const std::string kRings = clitest::source("docs/examples/rings_small.toml");
 
 TEST_CASE("merging N = 1, 2, 7 shards of a sweep gives exactly the single run's report", "[cli][merge]") {
   const std::string dir = clitest::tmpDir();
-  // Cracks (clamp none) so that causes, worst gaps and first cameras all take part.
+  // Cracks (clamp none) so that causes, worst gaps and first cameras all take part. Without the result cache: with it
+  // each shard's cache learns from its own cameras (and with threads from their timing), so the work counters and
+  // "result_cache" are the shards' own (merged below without it, compared apart).
   const std::vector<std::string> base{"sweep", kRings, "--set", "lod.adjacency_clamp=none", "--random", "15",
-                                      "--seed", "4", "-q"};
+                                      "--seed", "4", "-q", "--no-result-cache"};
   auto args = [&](std::vector<std::string> extra) {
     std::vector<std::string> a = base;
     a.insert(a.end(), extra.begin(), extra.end());
@@ -53,6 +56,33 @@ TEST_CASE("merging N = 1, 2, 7 shards of a sweep gives exactly the single run's 
     CHECK(r.out.find("CRACKS") != std::string::npos);
     CHECK(clitest::readFile(merged) == single);
   }
+  // With the result cache (the default): everything but the work and the cache's counters is the single run's.
+  {
+    auto withCache = [&](std::vector<std::string> extra) {
+      std::vector<std::string> a = args(extra);
+      a.erase(std::find(a.begin(), a.end(), "--no-result-cache"));
+      return a;
+    };
+    auto cacheFree = [](json j) {
+      j.erase("work");
+      j.erase("result_cache");
+      return j;
+    };
+    const std::string cachedOne = dir + "/cached_one.json", merged = dir + "/cached_merged.json";
+    REQUIRE(run(withCache({"--json", cachedOne})).status == 1);
+    std::vector<std::string> merge{"merge"};
+    for (int k = 1; k <= 2; ++k) {
+      const std::string part = dir + "/cached_s" + std::to_string(k) + ".json";
+      REQUIRE(run(withCache({"--shard", std::to_string(k) + "/2", "--json", part})).status <= 1);
+      merge.push_back(part);
+    }
+    merge.insert(merge.end(), {"--json", merged});
+    CHECK(run(merge).status == 1);
+    const json a = json::parse(clitest::readFile(cachedOne)), b = json::parse(clitest::readFile(merged));
+    CHECK(cacheFree(a) == cacheFree(b));
+    CHECK(cacheFree(a) == cacheFree(j)); // and the run without the cache's, but for the work
+    CHECK(a.at("result_cache").at("on") == b.at("result_cache").at("on"));
+  }
   // A shard missing or given twice, or shards of different sweeps: refused.
   r = run(args({"--shard", "1/2", "--json", dir + "/x1.json"}));
   CHECK(run({"merge", dir + "/x1.json"}).status == 2);
@@ -77,13 +107,28 @@ TEST_CASE("fftess bench prints the accuracy table and its work counters prove th
                            "heights/8-bit subtexel", "heights/float bilinear", "heights/r16_float", "heights/flat",
                            "mip/bonaventura, no mip", "mip/bonaventura, per_patch", "mip/bonaventura, per_vertex",
                            "lod precision/float", "lod precision/double", "tessellator/denormals kept", "tessellator/denormals flushed", "scope/edges",
-                           "scope/whole mesh"}) {
+                           "scope/whole mesh", "sweep shortcuts/full check", "sweep shortcuts/visible first",
+                           "sweep shortcuts/result cache", "sweep shortcuts/both"}) {
     INFO(name);
     REQUIRE(rows.count(name));
     CHECK_FALSE(rows[name].contains("error"));
     CHECK(r.out.find(rows[name].at("row").get<std::string>()) != std::string::npos);
   }
   auto work = [&](const char* row, const char* key) { return rows[row].at("work").at(key).get<int64_t>(); };
+  // The sweep shortcuts lose no finding on screen, on the same cameras; the full check evaluates every patch's LOD.
+  for (const char* name : {"sweep shortcuts/visible first", "sweep shortcuts/result cache", "sweep shortcuts/both"}) {
+    INFO(name);
+    CHECK(rows[name].at("gained") == 0);
+    CHECK(rows[name].at("lost") == 0);
+    CHECK(rows[name].at("cameras") == 2);
+    CHECK(rows[name].at("sweep").at("cache_hit_rate").is_number());
+    CHECK(work(name, "lod_evaluations") <= 2 * j.at("patches").get<int64_t>());
+    CHECK(work(name, "lod_evaluations") + rows[name].at("stats").at("patches_off_screen").get<int64_t>() >=
+          2 * j.at("patches").get<int64_t>());
+  }
+  CHECK(work("sweep shortcuts/full check", "lod_evaluations") == 2 * j.at("patches").get<int64_t>());
+  CHECK(rows["sweep shortcuts/full check"].at("sweep").at("result_cache") == false);
+  CHECK(rows["sweep shortcuts/full check"].at("sweep").at("visible_first") == false);
   // A flat scene samples no height; the displaced ones sample one per domain evaluation.
   CHECK(work("heights/flat", "height_samples") == 0);
   CHECK(work("heights/flat", "domain_evaluations") > 0);
