@@ -192,7 +192,10 @@ TEST_CASE("Shortcuts run: fftess sweep runs visible first and answers pairs from
   REQUIRE(run({"bench", "--scene", kRings, "--group", "sweep shortcuts", "--cameras", "4", "--repeats", "1", "--json",
                js, "-q"}).status == 0);
   std::map<std::string, json> rows;
-  for (const json& x : json::parse(clitest::readFile(js)).at("rows")) rows[x.at("row").get<std::string>()] = x;
+  const std::string benchJson = clitest::readFile(js);
+  INFO(benchJson);
+  const json bench = json::parse(benchJson); // kept: a range-for over a temporary's member would dangle
+  for (const json& x : bench.at("rows")) rows[x.at("row").get<std::string>()] = x;
   auto work = [&](const char* row, const char* key) { return rows.at(row).at("work").at(key).get<int64_t>(); };
   CHECK(work("visible first", "lod_evaluations") < work("full check", "lod_evaluations"));
   CHECK(work("result cache", "domain_evaluations") < work("full check", "domain_evaluations"));
