@@ -250,8 +250,9 @@ void findUndrawnPatches(const CameraCheck& c) {
     // A patch lod/ culled is not drawn whatever its factors: no edge query, no domain point (only the hole check's
     // visibility decision below, when its box touches the frustum).
     int discardEdge = -1;
+    // With the sweep's memo most edges are never tessellated (edgeOf when a pair needs them): the discard rule alone.
     for (int e = 0; e < 4 && !lodCulled && discardEdge < 0; ++e)
-      if (c.cache.discards(c.factors[i].factors[e])) discardEdge = e;
+      if (c.memo ? c.cache.discards(c.factors[i].factors[e]) : edgeOf(c, i, e).culled) discardEdge = e;
     const bool dropped = c.fault.is(Fault::Kind::DropPatch) && c.fault.atPatch(i);
     if (!lodCulled && discardEdge < 0 && !dropped) continue;
     culled[i] = 1;
@@ -442,51 +443,6 @@ bool checkEdgePair(const CameraCheck& c, EdgeScratch& s, size_t ia, int e, size_
   return true;
 }
 
-// The sweep's shortcuts for one pair (docs/verify.md, "Sweep shortcuts"). The result cache's values for seam proofs
-// of pairs without a number (quadtree layouts); a factor pair never takes them (a side with factor bits 0 is culled).
-constexpr uint64_t kSeamIdentical = 0, kSeamNotProven = 1;
-
-// The pair's key in the sweep's memo, the same for every camera: its number (static layouts), else the two quadtree
-// nodes' ids and the edge; 0: none (ids too large to pack).
-uint64_t memoKey(const CameraCheck& c, const EdgePair& p) {
-  if (p.number >= 0) return static_cast<uint64_t>(p.number) + 1;
-  if (!c.t.quadtree) return 0;
-  const int na = c.t.patches[static_cast<size_t>(p.ia)].ref.patch, nb = c.t.patches[static_cast<size_t>(p.ib)].ref.patch;
-  if (na < 0 || nb < 0 || na >= (1 << 29)) return 0;
-  return (static_cast<uint64_t>(na) << 34) | (static_cast<uint64_t>(p.e) << 32) | static_cast<uint32_t>(nb);
-}
-
-// The edge's seam proof (seam_proof.h): made by the first camera that needs it, then read by every other.
-SeamProof seamOf(const CameraCheck& c, const EdgePair& p, uint64_t key) {
-  SweepMemo& m = *c.memo;
-  const TerrainPatch& A = c.t.patches[static_cast<size_t>(p.ia)];
-  const TerrainPatch& B = c.t.patches[static_cast<size_t>(p.ib)];
-  if (p.number >= 0 && static_cast<size_t>(p.number) < m.seamCount) {
-    std::atomic<uint8_t>& slot = m.seams[static_cast<size_t>(p.number)];
-    uint8_t v = slot.load(std::memory_order_relaxed);
-    if (v == static_cast<uint8_t>(SeamProof::Unknown)) {
-      ++c.rep.work.seamProofs;
-      v = static_cast<uint8_t>(proveSeam(c.t, A, p.e, B));
-      slot.store(v, std::memory_order_relaxed); // a byte: whole or not at all; two threads prove the same
-    }
-    return static_cast<SeamProof>(v);
-  }
-  if (m.results.contains(key, kSeamIdentical)) return SeamProof::Identical;
-  if (m.results.contains(key, kSeamNotProven)) return SeamProof::NotProven;
-  ++c.rep.work.seamProofs;
-  const SeamProof r = proveSeam(c.t, A, p.e, B);
-  m.results.insert(key, r == SeamProof::Identical ? kSeamIdentical : kSeamNotProven);
-  return r;
-}
-
-bool sameEdgePoints(const EdgePoints& a, const EdgePoints& b) {
-  if (&a == &b) return true;
-  if (a.count != b.count) return false;
-  for (int j = 0; j < a.count; ++j)
-    if (bitsOf(a.param[j]) != bitsOf(b.param[j])) return false;
-  return true;
-}
-
 // True when the memo decides the pair a match without evaluating a point: a same-size pair with the same edge points
 // on both sides and a proven seam, or a pair whose two factor bits matched on an earlier camera. Otherwise storeKey /
 // storeValue say where the pair's result goes if it is a match (storeKey 0: nowhere). The fault hook's patch never
@@ -495,7 +451,7 @@ bool decidedByMemo(const CameraCheck& c, const EdgePair& p, uint64_t& storeKey, 
   storeKey = 0;
   if (!c.memo) return false;
   if (c.fault.atPatch(static_cast<size_t>(p.ia)) || c.fault.atPatch(static_cast<size_t>(p.ib))) return false;
-  const uint64_t key = memoKey(c, p);
+  const uint64_t key = memoKey(c.t, p);
   if (key == 0) return false;
   const int eb = kOpposite[p.e];
   WorkStats& w = c.rep.work;
@@ -505,7 +461,7 @@ bool decidedByMemo(const CameraCheck& c, const EdgePair& p, uint64_t& storeKey, 
   if (c.t.patches[static_cast<size_t>(p.ia)].size == c.t.patches[static_cast<size_t>(p.ib)].size &&
       (bitsOf(fa) == bitsOf(fb) ||
        sameEdgePoints(edgeOf(c, static_cast<size_t>(p.ia), p.e), edgeOf(c, static_cast<size_t>(p.ib), eb))) &&
-      seamOf(c, p, key) == SeamProof::Identical) {
+      seamOf(*c.memo, c.t, p, key, w) == SeamProof::Identical) {
     ++w.seamHits;
     return true;
   }

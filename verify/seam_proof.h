@@ -32,4 +32,14 @@ enum class SeamProof : uint8_t {
 // call on the default scene, ~2 us with height_uv "interpolated", Release); called once per edge per sweep.
 SeamProof proveSeam(const TerrainData& t, const TerrainPatch& a, int e, const TerrainPatch& b);
 
+// sweep_memo.cpp: the sweep's memo (SweepMemo) for one pair.
+// The pair's key, the same for every camera: its number + 1 (static layouts), else the two quadtree nodes' ids and
+// the edge; 0: none (ids too large to pack).
+uint64_t memoKey(const TerrainData& t, const EdgePair& p);
+// The pair's seam proof: proveSeam by the first camera that asks (work.seamProofs), then read by every other, on any
+// thread. key: memoKey's (quadtree pairs keep their proof in the result cache).
+SeamProof seamOf(SweepMemo& memo, const TerrainData& t, const EdgePair& p, uint64_t key, WorkStats& work);
+// The same edge points: the same count and the same parameter bits.
+bool sameEdgePoints(const EdgePoints& a, const EdgePoints& b);
+
 } // namespace fftess::verify::detail

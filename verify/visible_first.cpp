@@ -214,7 +214,4 @@ void selectVisible(const TerrainData& t, const FrustumTest& frustum, VisibleSele
   stats.patchesOffScreen = static_cast<int64_t>(n) - needed;
 }
 
-SweepMemo::SweepMemo(size_t slots, size_t pairs)
-    : results(slots), seams(new std::atomic<uint8_t>[pairs > 0 ? pairs : 1]()), seamCount(pairs) {}
-
 } // namespace fftess::verify::detail
