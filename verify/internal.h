@@ -360,6 +360,7 @@ struct VisibleSelection {
   std::vector<EdgePair> pairs;
   std::vector<uint64_t> pairBits;
   std::vector<int32_t> stack, liveNodes;
+  std::vector<glm::dvec3> boxLo, boxHi; // quadtree layouts: this camera's patch boxes (the tree keeps static ones)
 };
 void selectVisible(const TerrainData& t, const FrustumTest& frustum, VisibleSelection& out, Stats& stats,
                    WorkStats& work);

@@ -100,7 +100,10 @@ bool pairSelected(const FrustumTest& frustum, const std::vector<char>& live, con
 void selectLinear(const TerrainData& t, const FrustumTest& frustum, VisibleSelection& s, Stats& stats,
                   WorkStats& work) {
   const size_t n = t.patches.size();
-  std::vector<glm::dvec3> lo(n), hi(n); // small (a camera's leaves); the tree path keeps them prepared
+  std::vector<glm::dvec3>& lo = s.boxLo; // per-thread scratch: no allocation once warm
+  std::vector<glm::dvec3>& hi = s.boxHi;
+  lo.resize(n);
+  hi.resize(n);
   for (size_t i = 0; i < n; ++i) {
     patchBox(t.patches[i], lo[i], hi[i]);
     ++work.boxTests;
