@@ -31,6 +31,22 @@ enum class Kernel : uint8_t {
 // product code never includes.
 struct Fault;
 
+// Whether a check also asks what conformant GPU compilers may change (CheckOptions::gpuFloat).
+enum class GpuFloat : uint8_t { Off, Conformant };
+
+// A shared edge pair that matches with lod/'s C++ build but whose match depends on a choice a conformant GPU compiler
+// may make (Report::gpuFloat): the two sides compute the edge's factor through different operation sequences, and the
+// factor sets they may produce tessellate the edge differently. Which operation differs, on which side, and the fix.
+struct GpuFloatFinding {
+  PatchRef a, b;               // the two sides (a: the bigger or lower-index patch), as Finding's
+  int edgeA = 0, edgeB = 0;    // FactorIndex of the edge on each side
+  float factorA = 0, factorB = 0;         // the C++ build's factors (they match)
+  float loA = 0, hiA = 0, loB = 0, hiB = 0; // what a conformant compiler may produce on each side
+  std::string operationA, operationB;     // the first operation where the two sides' sequences differ (BoundContext::describe)
+  std::string fix;             // e.g. "declare the edge's factor computation precise, or compute it once from the
+                               // edge's two ends in a fixed order"
+};
+
 // The options of one check (checkScene) and of every camera of a sweep. Each field's default is its initialiser;
 // the defaults are what the cli runs without options.
 struct CheckOptions {
@@ -64,6 +80,12 @@ struct CheckOptions {
   // check. Ignored (the full check runs, Report::visibleFirst false) with countOffScreen or keepDrawn. The cli's
   // sweep turns it on (--no-visible-first: off); check runs the full check (it lists off-screen findings apart).
   bool visibleFirst = false;
+  // GPU float freedom (--gpu-float conformant; docs/verify.md, "GPU float freedom"): each side of each shared edge pair
+  // that matches is evaluated again with lod/lod_bound.h under FloatModel::Conformant (every contraction choice, the
+  // spec's error bounds of the transcendental operations); a pair whose two sides compute their factors through
+  // different operation sequences and whose match then depends on those choices is a GpuFloatFinding. Needs a
+  // built-in scheme on the CPU path (Report::error otherwise). Off: nothing is done.
+  GpuFloat gpuFloat = GpuFloat::Off;
 };
 
 // The denormal rule one check runs with, and where it came from: the first that is not Auto of
@@ -114,6 +136,10 @@ struct Stats {
   // edgesChecked nor in skippedCulled). 0 in a full check.
   int64_t patchesOffScreen = 0;
   int64_t edgesOffScreen = 0;
+  // GPU float freedom (CheckOptions::gpuFloat): matching pairs evaluated under the conformant model, and those whose
+  // match depends on a compiler's choice (GpuFloatFinding).
+  int64_t gpuFloatPairs = 0;
+  int64_t gpuFloatFindings = 0;
   int64_t cracksOnScreen() const { return cracks - cracksOffScreen; }
   int64_t tJunctionsOnScreen() const { return tJunctions - tJunctionsOffScreen; }
 };
@@ -127,6 +153,7 @@ struct Report {
                                  // order (at most maxFindings; Stats::undecided counts all)
   std::vector<FactorDiff> factorDiffs; // GPU vs C++ build, in layout order (at most maxFindings; Stats counts all)
   std::vector<DenormalFactor> denormalFactors; // in layout order (at most maxFindings; Stats counts all)
+  std::vector<GpuFloatFinding> gpuFloat; // CheckOptions::gpuFloat: in layout order (at most maxFindings; Stats counts all)
   bool denormalsFlushed = false; // the rule this camera ran with (denormalRule)
   bool truncated = false;        // more findings than maxFindings
   Stats stats;
