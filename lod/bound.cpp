@@ -44,25 +44,41 @@ Bound nanOnly() { return makeSet(kInf, -kInf, true); }
 bool hasInf(const Bound& x) { return x.hasValues() && (x.lo == -kInf || x.hi == kInf); }
 bool hasZero(const Bound& x) { return x.lo <= 0.0f && x.hi >= 0.0f; }
 
+// std::nextafter(f, -Inf) / (f, +Inf) for f not NaN, by the bits.
+float stepDown(float f) {
+  if (f == -kInf) return f;
+  if (f == 0.0f) return -0x1p-149f;
+  uint32_t u = bitsOf(f);
+  u = f > 0.0f ? u - 1 : u + 1;
+  std::memcpy(&f, &u, sizeof f);
+  return f;
+}
+float stepUp(float f) { return -stepDown(-f); }
+
 // The largest float <= d, the smallest float >= d (d not NaN; beyond the float range: +-FLT_MAX or +-Inf).
 float down(double d) {
   float f = static_cast<float>(d);
-  if (static_cast<double>(f) > d) f = std::nextafter(f, -kInf);
+  if (static_cast<double>(f) > d) f = stepDown(f);
   return f;
 }
 float up(double d) {
   float f = static_cast<float>(d);
-  if (static_cast<double>(f) < d) f = std::nextafter(f, kInf);
+  if (static_cast<double>(f) < d) f = stepUp(f);
   return f;
 }
 
 // The float ulp at magnitude |v| (v a double, possibly beyond the float range): 2^(e - 23) for |v| in the binade
 // [2^e, 2^(e+1)), 2^-149 below 2^-126; Inf for Inf.
 double ulpD(double v) {
-  const double a = std::fabs(v);
-  if (std::isinf(a)) return a;
-  if (a < 0x1p-126) return 0x1p-149;
-  return std::ldexp(1.0, std::ilogb(a) - 23);
+  uint64_t bits;
+  std::memcpy(&bits, &v, sizeof bits);
+  const int e = static_cast<int>((bits >> 52) & 0x7ff) - 1023;
+  if (e == 1024) return HUGE_VAL; // Inf (NaN: callers do not ask)
+  if (e < -126) return 0x1p-149;
+  const uint64_t u = static_cast<uint64_t>(e - 23 + 1023) << 52;
+  double r;
+  std::memcpy(&r, &u, sizeof r);
+  return r;
 }
 
 // [vlo - k ulps, vhi + k ulps], rounded outward to float.
@@ -181,8 +197,8 @@ Bound fusedSum(const Bound& p, const Bound& other) {
   const double phi = static_cast<double>(p.hi) + 0.5 * ulpD(p.hi);
   const double l = plo + static_cast<double>(other.lo);
   const double h = phi + static_cast<double>(other.hi);
-  const float lo = std::isnan(l) ? -kInf : std::nextafter(down(l), -kInf);
-  const float hi = std::isnan(h) ? kInf : std::nextafter(up(h), kInf);
+  const float lo = std::isnan(l) ? -kInf : stepDown(down(l));
+  const float hi = std::isnan(h) ? kInf : stepUp(up(h));
   return makeSet(lo, hi, p.nan || other.nan || std::isnan(l) || std::isnan(h));
 }
 
@@ -303,6 +319,7 @@ Bound operator/(const Bound& a, const Bound& b) {
 Bound operator-(const Bound& a) {
   Impl* c = activeImpl();
   Bound r = negSet(a);
+  if (conformant(c)) flushDenormals(r);
   if (c == nullptr) return r;
   const uint32_t op = bound::kNeg | modelBit(c);
   finish(c, r, op, nodeOf(c, a), 0, false);
@@ -523,10 +540,16 @@ namespace {
 
 // GLM's min(a, b) = b < a ? b : a and max(a, b) = a < b ? b : a: a NaN first operand is returned, a NaN second
 // operand returns the first. Conformant (GLSL leaves NaN undefined): either operand, or NaN.
-Bound minMax(uint32_t op, const Bound& a, const Bound& b) {
+Bound minMax(uint32_t op, const Bound& x, const Bound& y) {
   Impl* c = activeImpl();
   const bool conf = conformant(c);
   const bool isMin = op == bound::kMin;
+  Bound a = x;
+  Bound b = y;
+  if (conf) {
+    flushDenormals(a);
+    flushDenormals(b);
+  }
   Bound r = nanOnly();
   r.nan = a.nan;
   if (a.hasValues() && b.hasValues()) {
@@ -537,7 +560,7 @@ Bound minMax(uint32_t op, const Bound& a, const Bound& b) {
   if (conf && (a.nan || b.nan)) r = unite(unite(r, a), b);
   r.product = 0;
   r.node = 0;
-  if (c != nullptr) finish(c, r, op | modelBit(c), nodeOf(c, a), nodeOf(c, b), true);
+  if (c != nullptr) finish(c, r, op | modelBit(c), nodeOf(c, x), nodeOf(c, y), true);
   return r;
 }
 
@@ -624,7 +647,7 @@ Bound powPositive(const Bound& x, const Bound& y, bool conf) {
 Bound powSet(const Bound& x, const Bound& y, bool conf) {
   if (!x.hasValues() || !y.hasValues()) return nanOnly();
   if (x.lo < 0.0f) return makeSet(-kInf, kInf, true); // a negative base: NaN, +-values; not modelled closer
-  if (!conf && x.point() && y.point()) {              // the C++ build's own powf
+  if (!conf && x.point() && y.point() && x.lo != 0.0f) { // the C++ build's own powf (a zero base: either sign)
     const float v = std::pow(x.lo, y.lo);
     return std::isnan(v) ? nanOnly() : makeSet(v, v, x.nan || y.nan);
   }
@@ -632,9 +655,10 @@ Bound powSet(const Bound& x, const Bound& y, bool conf) {
   r.nan = x.nan || y.nan;
   if (x.lo <= 0.0f) { // pow(0, y): 0 for y > 0, 1 for y == 0, +Inf for y < 0 (Conformant: undefined for y <= 0)
     if (conf && y.lo <= 0.0f) return makeSet(-kInf, kInf, true);
-    if (y.hi > 0.0f) r = unite(r, makeSet(0.0f, 0.0f, false));
+    if (y.hi > 0.0f) r = unite(r, conf ? widened(0.0, 0.0, 3.5, false) : makeSet(0.0f, 0.0f, false));
     if (hasZero(y)) r = unite(r, makeSet(1.0f, 1.0f, false));
     if (y.lo < 0.0f) r = unite(r, makeSet(kInf, kInf, false));
+    if (y.lo <= -1.0f) r = unite(r, makeSet(-kInf, -kInf, false)); // pow(-0, odd negative integer) = -Inf
   }
   if (x.hi > 0.0f) {
     Bound positive = x;

@@ -15,28 +15,11 @@ namespace {
 thread_local BoundContext* tActive = nullptr;
 thread_local BoundContext::Impl* tActiveImpl = nullptr;
 
-uint32_t floatBits(float x) {
-  uint32_t u;
-  std::memcpy(&u, &x, sizeof u);
-  return u;
-}
 
 float bitsFloat(uint32_t u) {
   float x;
   std::memcpy(&x, &u, sizeof x);
   return x;
-}
-
-uint64_t hashNode(const bound::Node& n) {
-  uint64_t h = (static_cast<uint64_t>(n.op) << 32 | n.a) * 0x9e3779b97f4a7c15ull;
-  h ^= (static_cast<uint64_t>(n.b) << 32 | n.c) * 0xc2b2ae3d27d4eb4full;
-  h ^= h >> 29;
-  h *= 0xbf58476d1ce4e5b9ull;
-  return h ^ (h >> 32);
-}
-
-bool sameNode(const bound::Node& x, const bound::Node& y) {
-  return x.op == y.op && x.a == y.a && x.b == y.b && x.c == y.c;
 }
 
 // Operands of a node that are nodes themselves (constants, inputs and fresh nodes have none).
@@ -71,32 +54,24 @@ const char* opName(uint32_t op) {
 
 BoundContext::Impl::Impl() {
   nodes.resize(1);
-  table.assign(1024, 0);
+  table.assign(1024, Slot{});
 }
 
-uint32_t BoundContext::Impl::intern(const bound::Node& n) {
-  const size_t mask = table.size() - 1;
-  size_t i = hashNode(n) & mask;
-  while (table[i] != 0) {
-    if (sameNode(nodes[table[i]], n)) return table[i];
-    i = (i + 1) & mask;
-  }
+uint32_t BoundContext::Impl::insert(const bound::Node& n, size_t slot) {
   const uint32_t id = static_cast<uint32_t>(nodes.size());
   nodes.push_back(n);
-  table[i] = id;
+  table[slot] = Slot{n, id};
   if (nodes.size() * 2 > table.size()) { // keep the load under one half
-    table.assign(table.size() * 2, 0);
-    const size_t m2 = table.size() - 1;
+    table.assign(table.size() * 2, Slot{});
+    const size_t mask = table.size() - 1;
     for (uint32_t k = 1; k < nodes.size(); ++k) {
-      size_t j = hashNode(nodes[k]) & m2;
-      while (table[j] != 0) j = (j + 1) & m2;
-      table[j] = k;
+      size_t j = hash(nodes[k]) & mask;
+      while (table[j].id != 0) j = (j + 1) & mask;
+      table[j] = Slot{nodes[k], k};
     }
   }
   return id;
 }
-
-uint32_t BoundContext::Impl::constant(float x) { return intern(bound::Node{bound::kConst, floatBits(x), 0, 0}); }
 
 uint32_t BoundContext::Impl::fresh() { return intern(bound::Node{bound::kFresh, ++freshSerial, 0, 0}); }
 
@@ -251,7 +226,7 @@ uint32_t BoundContext::firstDifference(uint32_t a, uint32_t b, uint32_t* otherSi
 
 void BoundContext::clearTrace() {
   impl_->nodes.resize(1);
-  std::fill(impl_->table.begin(), impl_->table.end(), 0u);
+  std::fill(impl_->table.begin(), impl_->table.end(), Impl::Slot{});
   impl_->freshSerial = 0;
 }
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 #include "lod/bound.h"
@@ -58,9 +59,14 @@ struct BoundContext::Impl {
   FloatModel evalModel = FloatModel::Cpp; // the model operations use now (boundCameraRegion evaluates under Cpp)
   int maxPaths = 256;
 
-  // The trace: nodes[id] for id >= 1 (nodes[0] unused); table: open addressing over node ids (0 empty).
+  // The trace: nodes[id] for id >= 1 (nodes[0] unused); table: open addressing, each slot the node and its id
+  // (id 0: empty), load under one half.
+  struct Slot {
+    bound::Node key;
+    uint32_t id;
+  };
   std::vector<bound::Node> nodes;
-  std::vector<uint32_t> table;
+  std::vector<Slot> table;
   uint32_t freshSerial = 0;
 
   // forEachPath: the forced prefix of answers, the answers of this run, the memo of this run.
@@ -87,8 +93,25 @@ struct BoundContext::Impl {
   int64_t undecidedOutside = 0;
 
   Impl();
-  uint32_t intern(const bound::Node& n);
-  uint32_t constant(float x);
+  uint32_t intern(const bound::Node& n) {
+    const size_t mask = table.size() - 1;
+    for (size_t i = hash(n) & mask;; i = (i + 1) & mask) {
+      const Slot& s = table[i];
+      if (s.id == 0) return insert(n, i);
+      if (s.key.op == n.op && s.key.a == n.a && s.key.b == n.b && s.key.c == n.c) return s.id;
+    }
+  }
+  uint32_t constant(float x) {
+    uint32_t bits;
+    std::memcpy(&bits, &x, sizeof bits);
+    return intern(bound::Node{bound::kConst, bits, 0, 0});
+  }
+  static size_t hash(const bound::Node& n) {
+    uint64_t h = (static_cast<uint64_t>(n.op) << 32 | n.a) * 0x9e3779b97f4a7c15ull;
+    h += (static_cast<uint64_t>(n.b) << 32 | n.c) * 0xc2b2ae3d27d4eb4full;
+    return static_cast<size_t>(h ^ (h >> 31));
+  }
+  uint32_t insert(const bound::Node& n, size_t slot);
   uint32_t fresh();
   bool choose(uint32_t kind, uint32_t a, uint32_t b);
 };
