@@ -108,7 +108,7 @@ TEST_CASE("Bound trace: a tile-ring jump on flat integer corners rebuilds the la
     // No clamp: the smaller side's factor is (the larger side's own factor) * 0.5, node for node.
     BoundContext ctx(model);
     bool nonPoint = false;
-    REQUIRE(ctx.forEachPath([&] {
+    const bool completeNone = ctx.forEachPath([&] {
       const BoundCamera cam = regionCamera(eyeLo, eyeHi, target);
       const NvidiaTileParams p = tileParams(AdjacencyClamp::None);
       const Bound own = nvidiaTileBound(j.large, j.largeSides, cam, p).factors[2];
@@ -119,11 +119,12 @@ TEST_CASE("Bound trace: a tile-ring jump on flat integer corners rebuilds the la
         REQUIRE(rebuilt.node == half.node);
       }
       nonPoint = nonPoint || !own.point();
-    }));
+    });
+    REQUIRE(completeNone);
     REQUIRE(nonPoint);
     // Power-of-two clamp: the runs branch on the larger factor; each run gives both sides the same choice.
     std::set<uint32_t> largerValues;
-    REQUIRE(ctx.forEachPath([&] {
+    const bool completePow2 = ctx.forEachPath([&] {
       const BoundCamera cam = regionCamera(eyeLo, eyeHi, target);
       const NvidiaTileParams p = tileParams(AdjacencyClamp::Pow2);
       const Bound large = nvidiaTileBound(j.large, j.largeSides, cam, p).factors[2];
@@ -135,7 +136,8 @@ TEST_CASE("Bound trace: a tile-ring jump on flat integer corners rebuilds the la
         REQUIRE(small.point());
         REQUIRE(bitsOf(small.lo * 2.0f) == bitsOf(large.lo));
       }
-    }));
+    });
+    REQUIRE(completePow2);
     REQUIRE(largerValues.size() == 2); // 16 and 32: the region straddles the clamp's threshold
   }
 }
