@@ -110,31 +110,30 @@ using namespace bound;
 Bound addOrSub(const Bound& a, const Bound& b, bool negateB) {
   Impl* c = activeImpl();
   const bool conf = conformant(c);
+  uint32_t flags = 0;
+  if (conf && a.product != 0) flags |= bound::kFuseA;
+  if (conf && b.product != 0) flags |= bound::kFuseB;
+  uint32_t na = flags & bound::kFuseA ? a.product : nodeOf(c, a);
+  uint32_t nb = flags & bound::kFuseB ? b.product : nodeOf(c, b);
+  if (!negateB && flags == 0 && na > nb) std::swap(na, nb); // a + b == b + a bit for bit (not once fused)
+  const Node key{(negateB ? bound::kSub : bound::kAdd) | flags | modelBit(c), na, nb, 0};
+  Bound r;
+  if (recalled(c, key, true, r)) return r;
   Bound x = a;
   Bound y = negateB ? negSet(b) : b;
   if (conf) {
     flushDenormals(x);
     flushDenormals(y);
   }
-  Bound r = addSet(x, y);
-  uint32_t flags = 0;
-  if (conf && a.product != 0) {
-    r = unite(r, fusedSum(x, y));
-    flags |= bound::kFuseA;
-  }
-  if (conf && b.product != 0) {
-    r = unite(r, fusedSum(y, x));
-    flags |= bound::kFuseB;
-  }
+  r = addSet(x, y);
+  if (flags & bound::kFuseA) r = unite(r, fusedSum(x, y));
+  if (flags & bound::kFuseB) r = unite(r, fusedSum(y, x));
   if (conf) flushDenormals(r);
   if (c == nullptr) return r;
-  uint32_t na = flags & bound::kFuseA ? a.product : nodeOf(c, a);
-  uint32_t nb = flags & bound::kFuseB ? b.product : nodeOf(c, b);
-  if (!negateB && flags == 0 && na > nb) std::swap(na, nb); // a + b == b + a bit for bit (not once fused)
-  finish(c, r, (negateB ? bound::kSub : bound::kAdd) | flags | modelBit(c), na, nb, true);
+  finish(c, r, key.op, na, nb, true);
+  keep(c, key, true, r);
   return r;
 }
-
 
 } // namespace
 
@@ -180,34 +179,40 @@ Bound operator-(const Bound& a, const Bound& b) { return addOrSub(a, b, true); }
 Bound operator*(const Bound& a, const Bound& b) {
   Impl* c = activeImpl();
   const bool conf = conformant(c);
+  uint32_t na = nodeOf(c, a);
+  uint32_t nb = nodeOf(c, b);
+  if (na > nb) std::swap(na, nb); // x * y == y * x, fused or not
+  const Node key{bound::kMul | modelBit(c), na, nb, 0};
+  Bound r;
+  if (recalled(c, key, true, r)) return r;
   Bound x = a;
   Bound y = b;
   if (conf) {
     flushDenormals(x);
     flushDenormals(y);
   }
-  Bound r = mulSet(x, y);
+  r = mulSet(x, y);
   if (conf) flushDenormals(r);
   if (c == nullptr) return r;
-  uint32_t na = nodeOf(c, a);
-  uint32_t nb = nodeOf(c, b);
-  if (na > nb) std::swap(na, nb); // x * y == y * x, fused or not
-  const uint32_t op = bound::kMul | modelBit(c);
-  finish(c, r, op, na, nb, true);
-  if (conf) r.product = r.point() ? (na && nb ? c->intern(bound::Node{op, na, nb, 0}) : c->fresh()) : r.node;
+  finish(c, r, key.op, na, nb, true);
+  if (conf) r.product = r.point() ? (na && nb ? c->intern(key) : c->fresh()) : r.node;
+  keep(c, key, true, r);
   return r;
 }
 
 Bound operator/(const Bound& a, const Bound& b) {
   Impl* c = activeImpl();
   const bool conf = conformant(c);
+  const Node key{bound::kDiv | modelBit(c), nodeOf(c, a), nodeOf(c, b), 0};
+  Bound r;
+  if (recalled(c, key, true, r)) return r;
   Bound x = a;
   Bound y = b;
   if (conf) {
     flushDenormals(x);
     flushDenormals(y);
   }
-  Bound r = divSet(x, y);
+  r = divSet(x, y);
   if (conf && r.hasValues()) {
     // 2.5 ulp for |divisor| in [2^-126, 2^126]; beyond that range the spec leaves the result undefined.
     const bool inRange = y.hasValues() && std::max(std::fabs(y.lo), std::fabs(y.hi)) <= 0x1p126f &&
@@ -215,18 +220,22 @@ Bound operator/(const Bound& a, const Bound& b) {
     r = inRange ? widenUlps(r, 3.5) : makeSet(-kInf, kInf, true);
     flushDenormals(r);
   }
-  finish(c, r, bound::kDiv | modelBit(c), nodeOf(c, a), nodeOf(c, b), true);
+  finish(c, r, key.op, key.a, key.b, true);
+  keep(c, key, true, r);
   return r;
 }
 
 Bound operator-(const Bound& a) {
   Impl* c = activeImpl();
-  Bound r = negSet(a);
+  const Node key{bound::kNeg | modelBit(c), nodeOf(c, a), a.product, 0}; // the product decides what -a may fuse into
+  Bound r;
+  if (recalled(c, key, false, r)) return r;
+  r = negSet(a);
   if (conformant(c)) flushDenormals(r);
   if (c == nullptr) return r;
-  const uint32_t op = bound::kNeg | modelBit(c);
-  finish(c, r, op, nodeOf(c, a), 0, false);
-  if (a.product != 0) r.product = c->intern(bound::Node{op, a.product, 0, 0}); // -(x*y) + z fuses too
+  finish(c, r, key.op, key.a, 0, false);
+  if (a.product != 0) r.product = c->intern(bound::Node{key.op, a.product, 0, 0}); // -(x*y) + z fuses too
+  keep(c, key, false, r);
   return r;
 }
 

@@ -22,13 +22,18 @@ template <class F>
 Bound unary(uint32_t op, const Bound& x, F f) {
   Impl* c = activeImpl();
   const bool conf = conformant(c);
+  const Node key{op | modelBit(c), nodeOf(c, x), 0, 0};
+  Bound r;
+  if (recalled(c, key, false, r)) return r;
   Bound in = x;
   if (conf) flushDenormals(in);
-  Bound r = f(in, conf);
+  r = f(in, conf);
   if (conf) flushDenormals(r);
   r.product = 0;
   r.node = 0;
-  if (c != nullptr) finish(c, r, op | modelBit(c), nodeOf(c, x), 0, false);
+  if (c == nullptr) return r;
+  finish(c, r, key.op, key.a, 0, false);
+  keep(c, key, false, r);
   return r;
 }
 
@@ -124,6 +129,9 @@ namespace {
 Bound minMax(uint32_t op, const Bound& x, const Bound& y) {
   Impl* c = activeImpl();
   const bool conf = conformant(c);
+  const Node key{op | modelBit(c), nodeOf(c, x), nodeOf(c, y), 0};
+  Bound recall;
+  if (recalled(c, key, true, recall)) return recall;
   const bool isMin = op == bound::kMin;
   Bound a = x;
   Bound b = y;
@@ -141,7 +149,9 @@ Bound minMax(uint32_t op, const Bound& x, const Bound& y) {
   if (conf && (a.nan || b.nan)) r = unite(unite(r, a), b);
   r.product = 0;
   r.node = 0;
-  if (c != nullptr) finish(c, r, op | modelBit(c), nodeOf(c, x), nodeOf(c, y), true);
+  if (c == nullptr) return r;
+  finish(c, r, key.op, key.a, key.b, true);
+  keep(c, key, true, r);
   return r;
 }
 
@@ -153,6 +163,9 @@ Bound max(const Bound& a, const Bound& b) { return minMax(bound::kMax, a, b); }
 Bound pow(const Bound& x, const Bound& y) {
   Impl* c = activeImpl();
   const bool conf = conformant(c);
+  const Node key{bound::kPow | modelBit(c), nodeOf(c, x), nodeOf(c, y), 0};
+  Bound recall;
+  if (recalled(c, key, true, recall)) return recall;
   Bound bx = x;
   Bound by = y;
   if (conf) {
@@ -161,7 +174,9 @@ Bound pow(const Bound& x, const Bound& y) {
   }
   Bound r = powSet(bx, by, conf);
   if (conf) flushDenormals(r);
-  if (c != nullptr) finish(c, r, bound::kPow | modelBit(c), nodeOf(c, x), nodeOf(c, y), true);
+  if (c == nullptr) return r;
+  finish(c, r, key.op, key.a, key.b, true);
+  keep(c, key, true, r);
   return r;
 }
 

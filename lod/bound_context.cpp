@@ -13,7 +13,6 @@ namespace fftess::lod {
 namespace {
 
 thread_local BoundContext* tActive = nullptr;
-thread_local BoundContext::Impl* tActiveImpl = nullptr;
 
 
 float bitsFloat(uint32_t u) {
@@ -55,6 +54,7 @@ const char* opName(uint32_t op) {
 BoundContext::Impl::Impl() {
   nodes.resize(1);
   table.assign(1024, Slot{});
+  results.assign(1024, Result{});
 }
 
 uint32_t BoundContext::Impl::insert(const bound::Node& n, size_t slot) {
@@ -71,6 +71,30 @@ uint32_t BoundContext::Impl::insert(const bound::Node& n, size_t slot) {
     }
   }
   return id;
+}
+
+void BoundContext::Impl::remember(const bound::Node& k, const Bound& v) {
+  if ((resultCount + 1) * 2 > results.size()) { // keep the load under one half
+    std::vector<Result> old(results.size() * 2, Result{});
+    old.swap(results);
+    const size_t mask = results.size() - 1;
+    for (const Result& r : old) {
+      if (r.key.op == 0) continue;
+      size_t j = hash(r.key) & mask;
+      while (results[j].key.op != 0) j = (j + 1) & mask;
+      results[j] = r;
+    }
+  }
+  const size_t mask = results.size() - 1;
+  size_t i = hash(k) & mask;
+  while (results[i].key.op != 0) {
+    if (results[i].key.op == k.op && results[i].key.a == k.a && results[i].key.b == k.b && results[i].key.c == k.c) {
+      return;
+    }
+    i = (i + 1) & mask;
+  }
+  results[i] = Result{k, v};
+  ++resultCount;
 }
 
 uint32_t BoundContext::Impl::fresh() { return intern(bound::Node{bound::kFresh, ++freshSerial, 0, 0}); }
@@ -95,7 +119,7 @@ bool BoundContext::Impl::choose(uint32_t kind, uint32_t a, uint32_t b) {
 
 namespace bound {
 
-BoundContext::Impl* activeImpl() { return tActiveImpl; }
+thread_local BoundContext::Impl* tActiveImpl = nullptr;
 
 FloatModel activeModel() {
   BoundContext::Impl* c = activeImpl();
@@ -113,11 +137,6 @@ ModelOverride::~ModelOverride() {
   if (impl_) impl_->evalModel = previous_;
 }
 
-uint32_t nodeOf(BoundContext::Impl* c, const Bound& x) {
-  if (x.node != 0 || c == nullptr) return x.node;
-  return x.point() ? c->constant(x.lo) : 0;
-}
-
 void resolveNode(Bound& x) { x.node = nodeOf(activeImpl(), x); }
 
 } // namespace bound
@@ -131,7 +150,7 @@ BoundContext::BoundContext(FloatModel model, int maxPaths) : impl_(std::make_uni
 BoundContext::~BoundContext() {
   if (tActive == this) {
     tActive = nullptr;
-    tActiveImpl = nullptr;
+    bound::tActiveImpl = nullptr;
   }
 }
 
@@ -169,11 +188,11 @@ int BoundContext::choicesInRun() const {
 
 BoundContext::Scope::Scope(BoundContext& c) : previous_(tActive) {
   tActive = &c;
-  tActiveImpl = c.impl_.get();
+  bound::tActiveImpl = c.impl_.get();
 }
 BoundContext::Scope::~Scope() {
   tActive = previous_;
-  tActiveImpl = previous_ ? previous_->impl_.get() : nullptr;
+  bound::tActiveImpl = previous_ ? previous_->impl_.get() : nullptr;
 }
 
 int64_t BoundContext::undecidedOutsidePath() const { return impl_->undecidedOutside; }
@@ -225,9 +244,12 @@ uint32_t BoundContext::firstDifference(uint32_t a, uint32_t b, uint32_t* otherSi
 }
 
 void BoundContext::clearTrace() {
+  // Back to the first tables' size: clearing a large table costs more than growing a small one again.
   impl_->nodes.resize(1);
-  std::fill(impl_->table.begin(), impl_->table.end(), Impl::Slot{});
+  impl_->table.assign(1024, Impl::Slot{});
   impl_->freshSerial = 0;
+  impl_->results.assign(1024, Impl::Result{});
+  impl_->resultCount = 0;
 }
 
 size_t BoundContext::traceSize() const { return impl_->nodes.size() - 1; }

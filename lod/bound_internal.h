@@ -67,6 +67,14 @@ struct BoundContext::Impl {
   };
   std::vector<bound::Node> nodes;
   std::vector<Slot> table;
+  // Results by (operation, operand nodes): the same operation on the same nodes gives the same set, so a repeated
+  // operation (the next run of forEachPath, the other patch of a pair, the camera's planes) is one lookup.
+  struct Result {
+    bound::Node key; // op 0: empty
+    Bound value;
+  };
+  std::vector<Result> results;
+  size_t resultCount = 0;
   uint32_t freshSerial = 0;
 
   // forEachPath: the forced prefix of answers, the answers of this run, the memo of this run.
@@ -112,6 +120,15 @@ struct BoundContext::Impl {
     return static_cast<size_t>(h ^ (h >> 31));
   }
   uint32_t insert(const bound::Node& n, size_t slot);
+  const Bound* recall(const bound::Node& k) const {
+    const size_t mask = results.size() - 1;
+    for (size_t i = hash(k) & mask;; i = (i + 1) & mask) {
+      const Result& r = results[i];
+      if (r.key.op == 0) return nullptr;
+      if (r.key.op == k.op && r.key.a == k.a && r.key.b == k.b && r.key.c == k.c) return &r.value;
+    }
+  }
+  void remember(const bound::Node& k, const Bound& v);
   uint32_t fresh();
   bool choose(uint32_t kind, uint32_t a, uint32_t b);
 };
@@ -119,7 +136,8 @@ struct BoundContext::Impl {
 namespace bound {
 
 // The active context's state (null when none).
-BoundContext::Impl* activeImpl();
+extern thread_local BoundContext::Impl* tActiveImpl; // lod/bound_context.cpp
+inline BoundContext::Impl* activeImpl() { return tActiveImpl; }
 // The model operations use now (Cpp when no context is active).
 FloatModel activeModel();
 // Evaluate under another model for a scope (boundCameraRegion: the camera is built on the CPU, FloatModel::Cpp).
@@ -135,7 +153,10 @@ private:
   FloatModel previous_;
 };
 // x's node: its own, else (a point made outside a context) the constant of its bits, else 0.
-uint32_t nodeOf(BoundContext::Impl* c, const Bound& x);
+inline uint32_t nodeOf(BoundContext::Impl* c, const Bound& x) {
+  if (x.node != 0 || c == nullptr) return x.node;
+  return x.point() ? c->constant(x.lo) : 0;
+}
 // Gives x its node when it is a point made outside a context (for results handed to callers).
 void resolveNode(Bound& x);
 

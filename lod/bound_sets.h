@@ -115,6 +115,18 @@ inline void finish(Impl* c, Bound& r, uint32_t op, uint32_t na, uint32_t nb, boo
   }
 }
 
+// The result of `key` from an earlier evaluation in this trace (false when none, or an operand is untraced).
+inline bool recalled(const Impl* c, const Node& key, bool binary, Bound& out) {
+  if (c == nullptr || key.a == 0 || (binary && key.b == 0)) return false;
+  const Bound* r = c->recall(key);
+  if (r == nullptr) return false;
+  out = *r;
+  return true;
+}
+inline void keep(Impl* c, const Node& key, bool binary, const Bound& r) {
+  if (c != nullptr && key.a != 0 && (!binary || key.b != 0)) c->remember(key, r);
+}
+
 // Sets (no trace): lod/bound.cpp.
 Bound fromCandidates(const float* v, int n, bool nan);
 Bound addSet(const Bound& a, const Bound& b);

@@ -19,6 +19,17 @@ using vec2 = BoundVec2;
 using vec3 = BoundVec3;
 using vec4 = BoundVec4;
 using mat4 = BoundMat4;
+// Component by component, in GLM's order, without GLM's temporaries (the operations the shaders use).
+inline vec2 operator*(const vec2& v, const Bound& s) { return vec2(v.x * s, v.y * s); }
+inline vec3 operator*(const vec3& v, const Bound& s) { return vec3(v.x * s, v.y * s, v.z * s); }
+inline vec4 operator*(const vec4& v, const Bound& s) { return vec4(v.x * s, v.y * s, v.z * s, v.w * s); }
+inline vec3 operator*(const Bound& s, const vec3& v) { return vec3(s * v.x, s * v.y, s * v.z); }
+inline vec3 operator/(const vec3& v, const Bound& s) { return vec3(v.x / s, v.y / s, v.z / s); }
+inline vec3 operator+(const vec3& a, const vec3& b) { return vec3(a.x + b.x, a.y + b.y, a.z + b.z); }
+inline vec3 operator-(const vec3& a, const vec3& b) { return vec3(a.x - b.x, a.y - b.y, a.z - b.z); }
+inline vec4 operator+(const vec4& a, const vec4& b) { return vec4(a.x + b.x, a.y + b.y, a.z + b.z, a.w + b.w); }
+inline vec4 operator-(const vec4& a, const vec4& b) { return vec4(a.x - b.x, a.y - b.y, a.z - b.z, a.w - b.w); }
+// A vector times a float literal: the literal as a constant Bound.
 inline vec2 operator*(const vec2& v, float s) { return v * Bound(s); }
 inline vec3 operator*(const vec3& v, float s) { return v * Bound(s); }
 inline vec4 operator*(const vec4& v, float s) { return v * Bound(s); }
