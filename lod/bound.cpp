@@ -117,8 +117,9 @@ Bound addOrSub(const Bound& a, const Bound& b, bool negateB) {
   uint32_t nb = flags & bound::kFuseB ? b.product : nodeOf(c, b);
   if (!negateB && flags == 0 && na > nb) std::swap(na, nb); // a + b == b + a bit for bit (not once fused)
   const Node key{(negateB ? bound::kSub : bound::kAdd) | flags | modelBit(c), na, nb, 0};
+  const bool memo = worthKeeping(c, a, b);
   Bound r;
-  if (recalled(c, key, true, r)) return r;
+  if (memo && recalled(c, key, true, r)) return r;
   Bound x = a;
   Bound y = negateB ? negSet(b) : b;
   if (conf) {
@@ -131,7 +132,7 @@ Bound addOrSub(const Bound& a, const Bound& b, bool negateB) {
   if (conf) flushDenormals(r);
   if (c == nullptr) return r;
   finish(c, r, key.op, na, nb, true);
-  keep(c, key, true, r);
+  if (memo) keep(c, key, true, r);
   return r;
 }
 
@@ -183,8 +184,9 @@ Bound operator*(const Bound& a, const Bound& b) {
   uint32_t nb = nodeOf(c, b);
   if (na > nb) std::swap(na, nb); // x * y == y * x, fused or not
   const Node key{bound::kMul | modelBit(c), na, nb, 0};
+  const bool memo = worthKeeping(c, a, b);
   Bound r;
-  if (recalled(c, key, true, r)) return r;
+  if (memo && recalled(c, key, true, r)) return r;
   Bound x = a;
   Bound y = b;
   if (conf) {
@@ -196,7 +198,7 @@ Bound operator*(const Bound& a, const Bound& b) {
   if (c == nullptr) return r;
   finish(c, r, key.op, na, nb, true);
   if (conf) r.product = r.point() ? (na && nb ? c->intern(key) : c->fresh()) : r.node;
-  keep(c, key, true, r);
+  if (memo) keep(c, key, true, r);
   return r;
 }
 
@@ -204,8 +206,9 @@ Bound operator/(const Bound& a, const Bound& b) {
   Impl* c = activeImpl();
   const bool conf = conformant(c);
   const Node key{bound::kDiv | modelBit(c), nodeOf(c, a), nodeOf(c, b), 0};
+  const bool memo = worthKeeping(c, a, b);
   Bound r;
-  if (recalled(c, key, true, r)) return r;
+  if (memo && recalled(c, key, true, r)) return r;
   Bound x = a;
   Bound y = b;
   if (conf) {
@@ -221,7 +224,7 @@ Bound operator/(const Bound& a, const Bound& b) {
     flushDenormals(r);
   }
   finish(c, r, key.op, key.a, key.b, true);
-  keep(c, key, true, r);
+  if (memo) keep(c, key, true, r);
   return r;
 }
 

@@ -116,6 +116,10 @@ inline void finish(Impl* c, Bound& r, uint32_t op, uint32_t na, uint32_t nb, boo
 }
 
 // The result of `key` from an earlier evaluation in this trace (false when none, or an operand is untraced).
+// Operations on points under Cpp are one float operation: cheaper to redo than to look up; they are not kept.
+inline bool worthKeeping(const Impl* c, const Bound& a, const Bound& b) {
+  return c != nullptr && (c->evalModel != FloatModel::Cpp || !a.point() || !b.point());
+}
 inline bool recalled(const Impl* c, const Node& key, bool binary, Bound& out) {
   if (c == nullptr || key.a == 0 || (binary && key.b == 0)) return false;
   const Bound* r = c->recall(key);
