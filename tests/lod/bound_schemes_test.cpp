@@ -197,10 +197,15 @@ TEST_CASE("Bound schemes: boundCameraRegion's view holds makeCamera's view for e
   std::mt19937 rng(5);
   for (int iter = 0; iter < 600; ++iter) {
     const bool d3d = (iter & 1) != 0;
-    const glm::vec3 eyeLo = uniformIn(rng, glm::vec3(-100.0f, 1.0f, -100.0f), glm::vec3(100.0f, 50.0f, 100.0f));
-    const glm::vec3 targetLo = uniformIn(rng, glm::vec3(-10.0f, -1.0f, -10.0f), glm::vec3(10.0f, 1.0f, 10.0f));
+    glm::vec3 eyeLo = uniformIn(rng, glm::vec3(-100.0f, 1.0f, -100.0f), glm::vec3(100.0f, 50.0f, 100.0f));
+    glm::vec3 targetLo = uniformIn(rng, glm::vec3(-10.0f, -1.0f, -10.0f), glm::vec3(10.0f, 1.0f, 10.0f));
+    if (iter % 5 == 2) { // the eye on a diagonal through the target: dot(s, eye) cancels to ~0, many ulps of rounding
+      const float a = uniform(rng, 50.0f, 300.0f);
+      eyeLo = glm::vec3(a, uniform(rng, 1.0f, 20.0f), (iter & 2) ? a : -a);
+      targetLo = glm::vec3(0.0f);
+    }
     // Point regions on some axes (iter % 4 == 0: a point camera, every entry the float's bits).
-    const float w = (iter % 4 == 0) ? 0.0f : std::ldexp(1.0f, 2 - static_cast<int>(rng() % 16));
+    const float w = (iter % 4 == 0) ? 0.0f : std::ldexp(1.0f, 2 - static_cast<int>(rng() % 24));
     // Some regions with a tilted up vector of another length (the cross products then round).
     const glm::vec3 up = (iter % 3 == 1) ? uniformIn(rng, glm::vec3(-0.4f, 0.5f, -0.4f), glm::vec3(0.4f, 2.0f, 0.4f))
                                          : kUp;
