@@ -86,8 +86,13 @@ inline Bound widenUlps(const Bound& x, double k) {
   return widened(x.lo, x.hi, k, x.nan);
 }
 
+// min / max that order -0 before +0, so that a set holding both zeros is [-0, +0], never a point: a point claims
+// one float, and the sign of a zero can matter (1 / x).
+inline float lower(float a, float b) { return (b < a || (b == a && std::signbit(b))) ? b : a; }
+inline float upper(float a, float b) { return (b > a || (b == a && !std::signbit(b))) ? b : a; }
+
 inline Bound unite(const Bound& a, const Bound& b) {
-  return makeSet(std::min(a.lo, b.lo), std::max(a.hi, b.hi), a.nan || b.nan);
+  return makeSet(lower(a.lo, b.lo), upper(a.hi, b.hi), a.nan || b.nan);
 }
 
 // Conformant: a denormal may be read or written as 0 (of either sign).

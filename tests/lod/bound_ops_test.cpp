@@ -366,3 +366,18 @@ TEST_CASE("Bound: a comparison the sets decide agrees with every sampled pair", 
   REQUIRE(fail.count == 0);
   REQUIRE(decided > 1000);
 }
+
+TEST_CASE("Bound: a result that may be -0 or +0 is not a point, a zero of known sign is", "[lod][bound]") {
+  BoundContext ctx(FloatModel::Cpp);
+  BoundContext::Scope scope(ctx);
+  const Bound x = Bound::input(-1.0f, 1.0f, 1);
+  const Bound zero = x * Bound(0.0f); // -0 for x < 0, +0 for x > 0
+  INFO(setText(zero));
+  REQUIRE(!zero.point());
+  REQUIRE(zero.contains(0.0f));
+  REQUIRE(zero.node != Bound(0.0f).node);
+  REQUIRE(zero.node != Bound(-0.0f).node);
+  const Bound negative = Bound(-1.0f) * Bound(0.0f);
+  REQUIRE(negative.point());
+  REQUIRE(std::signbit(negative.lo));
+}
