@@ -30,8 +30,8 @@ Bound fromCandidates(const float* v, int n, bool nan) {
       nan = true;
       continue;
     }
-    lo = std::min(lo, v[i]);
-    hi = std::max(hi, v[i]);
+    lo = lower(lo, v[i]);
+    hi = upper(hi, v[i]);
   }
   return makeSet(lo, hi, nan);
 }
