@@ -340,6 +340,8 @@ bool compare(uint32_t kind, const Bound& a, const Bound& b) {
 
 } // namespace
 
+Bound BoundContext::narrowed(const Bound& x) const { return effective(impl_.get(), x, x.node); }
+
 bool operator<(const Bound& a, const Bound& b) { return compare(bound::kLess, a, b); }
 bool operator<=(const Bound& a, const Bound& b) { return compare(bound::kLessEqual, a, b); }
 bool operator>(const Bound& a, const Bound& b) { return compare(bound::kLess, b, a); }

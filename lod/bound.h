@@ -143,6 +143,11 @@ public:
   bool forEachPath(const std::function<void()>& run);
   // Undecided comparisons answered in the current run (0 when the run's Bounds decided every comparison).
   int choicesInRun() const;
+  // x's set narrowed by what the current run's answers imply for its node (an answer against a constant: after
+  // `f < 1.0f` answered false, f is >= 1 or NaN; after it answered true, f < 1 and not NaN). Comparisons use these
+  // narrowed sets already; the operations do not (their results are remembered across runs by operand nodes), so a
+  // value read after the run (a factor after the shader's clamp) is narrowed here. x outside a run: x itself.
+  Bound narrowed(const Bound& x) const;
 
   // Makes this context active on the calling thread for a scope (for evaluations outside forEachPath: an undecided
   // comparison there answers true and counts in undecidedOutsidePath()).

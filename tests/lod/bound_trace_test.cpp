@@ -174,3 +174,30 @@ TEST_CASE("Bound trace: describe and firstDifference name the operation where tw
   REQUIRE(cpp.describe(d, 1) == "mul(3 (0x40400000), input 1 [1, 2])");
   REQUIRE(cpp.describe(other, 1) == "mul(input 1 [1, 2], 5 (0x40a00000))");
 }
+
+TEST_CASE("Bound narrowed: a run's answers against constants narrow what is read after the run's clamp",
+          "[lod][bound]") {
+  // The shader's clamp, `if (f < 1) f = 1; if (f > 64) f = 64;`, keeps f's whole set in the run where both answers are
+  // false; narrowed() reads it as [1, 64] (NaN kept: NaN answers both false). The run where f < 1 is true gives the
+  // point 1 (no narrowing needed). Outside a run nothing is narrowed.
+  BoundContext context(FloatModel::Cpp);
+  std::vector<Bound> clampedKept;
+  std::vector<Bound> raw;
+  REQUIRE(context.forEachPath([&]() {
+    Bound f = Bound::input(0.25f, 100.0f, 1) * Bound(1.0f);
+    if (f < Bound(1.0f)) f = Bound(1.0f);
+    if (f > Bound(64.0f)) f = Bound(64.0f);
+    raw.push_back(f);
+    clampedKept.push_back(context.narrowed(f));
+  }));
+  REQUIRE(raw.size() == 3);
+  bool sawWhole = false;
+  for (size_t i = 0; i < raw.size(); ++i) {
+    CHECK(clampedKept[i].lo >= 1.0f);
+    CHECK(clampedKept[i].hi <= 64.0f);
+    if (raw[i].lo < 1.0f) sawWhole = true; // the run that kept f's own set: narrowed() is what makes it [1, 64]
+  }
+  CHECK(sawWhole);
+  const Bound outside = Bound::input(0.25f, 100.0f, 1);
+  CHECK(context.narrowed(outside).lo == 0.25f);
+}
