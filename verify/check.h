@@ -45,6 +45,10 @@ struct GpuFloatFinding {
   std::string operationA, operationB;     // the first operation where the two sides' sequences differ (BoundContext::describe)
   std::string fix;             // e.g. "declare the edge's factor computation precise, or compute it once from the
                                // edge's two ends in a fixed order"
+  // Why the match depends on the compiler, in words: the two sides' operations differ and their factor sets
+  // tessellate the edge differently (operationA / operationB set), or a side may be culled, discarded (its factor set
+  // holds NaN or <= 0), or the evaluation had too many undecided comparisons (operationA / operationB empty).
+  std::string why;
 };
 
 // The options of one check (checkScene) and of every camera of a sweep. Each field's default is its initialiser;
