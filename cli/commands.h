@@ -69,6 +69,7 @@ struct SceneArgs {
   std::string cameras;      // --cameras FILE: cameras from a CSV / JSON file (cli/camera_file.h)
   std::string gltf;         // --gltf FILE: the checked camera in 3D (check: its camera; sweep: the worst camera's)
   std::string view;         // check --view FILE.svg: what the camera sees (cli/report_view.h); "" for sweep
+  std::string gpuFloat = "off"; // --gpu-float off|conformant (vf::CheckOptions::gpuFloat)
 };
 
 struct CheckArgs : SceneArgs {

@@ -92,6 +92,11 @@ struct CheckOptions {
   GpuFloat gpuFloat = GpuFloat::Off;
 };
 
+// Why the scene cannot run CheckOptions::gpuFloat = Conformant (a user shader, lod.evaluate = "gpu", geomorph: the
+// GPU float model covers lod/'s built-in schemes on the CPU path), or "" when it can. checkScene reports it as
+// Report::error for every camera; the cli refuses the command with it.
+std::string gpuFloatRefusal(const Scene& scene);
+
 // The denormal rule one check runs with, and where it came from: the first that is not Auto of
 // CheckOptions::flushDenormals ("--flush-denormals"), lod.flush_denormals ("lod.flush_denormals"); else the driver's
 // (FactorProvider::flushesDenormals, on the GPU path with a provider) or CheckOptions::tessellator.flushDenormals.

@@ -81,6 +81,10 @@ const char* const kFix = "declare the edge factor's computation precise (GLSL `p
 
 } // namespace
 
+} // namespace fftess::verify::detail
+
+namespace fftess::verify {
+
 std::string gpuFloatRefusal(const Scene& s) {
   if (!s.lod.shader.empty())
     return "--gpu-float conformant: lod.shader is a user shader; the GPU float model covers lod/'s built-in schemes only "
@@ -93,6 +97,10 @@ std::string gpuFloatRefusal(const Scene& s) {
            "convert floats to ints; lod/lod_bound.h)";
   return "";
 }
+
+} // namespace fftess::verify
+
+namespace fftess::verify::detail {
 
 GpuFloatChecker::GpuFloatChecker(const TerrainData& t, const Camera& camera, int maxPaths)
     : t_(t), context_(std::make_unique<lod::BoundContext>(lod::FloatModel::Conformant, maxPaths)) {

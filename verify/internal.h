@@ -409,8 +409,6 @@ ExactVerdict classifyExact(Kernel kernel, const glm::vec3* a, int na, const glm:
 // ---------------------------------------------------------------------------------------------------------------
 // gpu_float.cpp: CheckOptions::gpuFloat (docs/verify.md, "GPU float freedom").
 
-// Why the scene cannot run --gpu-float conformant (a user shader, the GPU path, geomorph), or "" when it can.
-std::string gpuFloatRefusal(const Scene& s);
 // One camera's GPU float check: a BoundContext under lod::FloatModel::Conformant and the camera as its constants.
 class GpuFloatChecker {
 public:
