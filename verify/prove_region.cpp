@@ -171,10 +171,10 @@ RegionResult evaluateRegion(const TerrainData& t, const CameraRegion& region, Pr
         continue;
       }
     }
-    if (!ev.pair(p, seams[static_cast<size_t>(p.number)]) && res.outcome == RegionOutcome::Suspect) return res;
+    if (!ev.pair(p, seams[static_cast<size_t>(p.number)])) return res; // the first reason met: split
   }
-  for (size_t i = 0; i < n && res.outcome != RegionOutcome::Suspect; ++i)
-    if (!s.evaluated[i] && !s.offScreen[i]) ev.single(i);
+  for (size_t i = 0; i < n; ++i)
+    if (!s.evaluated[i] && !s.offScreen[i] && !ev.single(i)) return res;
   return res;
 }
 
