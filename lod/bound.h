@@ -4,8 +4,11 @@
 // A Bound stands for every float an operation can produce, in lod/'s C++ build or on any conformant GPU (FloatModel),
 // for every input in its operands' sets: the closed interval [lo, hi] (lo <= hi; -0 and +0 are both in [-0, +0] and
 // in any interval that contains 0), plus NaN when `nan` is set, plus -Inf / +Inf when lo / hi are infinite. Every
-// operation rounds outward (it is computed in double from the float bounds and widened by one float ulp beyond the
-// double result, so the exact real result and every float result of the modelled operation lie inside) and is
+// operation rounds outward: +, -, *, /, sqrt, floor, ceil, abs, min and max are evaluated in float at the bounds of
+// their operands (correctly rounded float arithmetic is monotone, so the float results at the bounds bound every
+// float result exactly, and an operation on points gives the C++ build's float: a point); exp2, log2, pow and acos
+// are evaluated in double at the bounds and widened by their error bound in float ulps plus one, the last step
+// rounded outward to float (std::nextafter); and every result is
 // widened by the model's error bound for that operation.
 //
 // The trace: every Bound carries `node`, the value number of the operation sequence that produced it, kept by the
@@ -49,11 +52,17 @@ enum class FloatModel : uint8_t {
   Conformant,
 };
 
+// Bound() leaves the members uninitialised, as float does (GLM's vectors keep their components in unions, which
+// need a trivial default constructor); Bound{} is the point +0, untraced (node 0).
 struct Bound {
-  float lo = 0.0f;
-  float hi = 0.0f;
-  bool nan = false;
-  uint32_t node = 0; // the trace's value number (0: not traced: made outside a BoundContext)
+  float lo;
+  float hi;
+  bool nan;
+  uint32_t node; // the trace's value number (0: not traced: made outside a BoundContext)
+  // FloatModel::Conformant only: when this Bound is the result of a multiplication (or its negation), the node of
+  // that product (operation and operand nodes, even when the result is a point and `node` is a constant), so that
+  // an add or subtract it feeds knows it may be contracted into an FMA; 0 otherwise.
+  uint32_t product;
 
   Bound() = default;
   // A constant: the point {x} (NaN: the NaN-only set), traced as the constant of x's bits. Implicit: the shaders'
@@ -73,6 +82,8 @@ struct Bound {
   // Every value is finite (no NaN, no infinity).
   bool finite() const;
   bool contains(float x) const; // x in the set (NaN: nan; -0 and +0 alike)
+  // The set holds at least one number (not only NaN). The NaN-only set is lo = +Inf, hi = -Inf, nan.
+  bool hasValues() const { return lo <= hi; }
 };
 
 Bound operator+(const Bound& a, const Bound& b);

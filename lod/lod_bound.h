@@ -44,7 +44,7 @@ BoundCamera boundCameraRegion(glm::vec3 eyeLo, glm::vec3 eyeHi, glm::vec3 target
 // A patch's factors as Bounds: one run's answer. factors in PatchLod order (Ueq0 Veq0 Ueq1 Veq1 insideU insideV);
 // culled: this run culled the patch (every factor is then the cull value).
 struct BoundPatchLod {
-  Bound factors[6];
+  Bound factors[6]{};
   bool culled = false;
 };
 
