@@ -139,10 +139,10 @@ std::string counterexampleText(const ProveArgs& a, const vf::ProveReport& r) {
   const vf::Report& rep = r.counterexampleReport;
   int shown = 0;
   for (const vf::Hole& h : rep.holes)
-    if (shown++ < a.show) text += "  " + holeLine(h) + "\n";
+    if (shown++ < a.show) text += holeLine(h) + "\n";
   for (const vf::Finding& f : rep.findings)
     if (f.classification != vf::Classification::Match && f.onScreen && shown++ < a.show)
-      text += "  " + findingLine(f) + "\n";
+      text += findingLine(f) + "\n";
   if (shown > a.show) text += "  ... " + std::to_string(shown - a.show) + " more (--show N, or --json FILE)\n";
   return text;
 }
