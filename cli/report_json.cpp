@@ -193,7 +193,7 @@ static json reportHeader(const char* kind, const SceneArgs& a, const vf::Scene& 
   std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(scene.contentHash));
   j["scene_hash"] = std::string("fnv1a64:") + hash; // vf::Scene::contentHash: the scene's bytes, overrides, files
   j["offscreen"] = a.offscreen; // --offscreen: findings outside the view frustum count in the verdict
-  j["gpu_float"] = a.gpuFloat; // --gpu-float: "off" or "conformant"
+  j["gpu_float_mode"] = a.gpuFloat; // --gpu-float: "off" or "conformant"
   return j;
 }
 

@@ -25,7 +25,7 @@ using json = nlohmann::ordered_json;
 //    full_tessellations, shared_edge_points, visibility_evaluations.
 // 8: the sweep shortcuts: "visible_first" and "result_cache" in the sweep summary, "patches_off_screen" and
 //    "edges_off_screen" in every "stats", work counters cache_hits, seam_hits, cache_misses, seam_proofs, box_tests.
-// 9: --gpu-float: "gpu_float" ("off" | "conformant") in the header, "gpu_float_pairs" and "gpu_float_findings" in
+// 9: --gpu-float: "gpu_float_mode" ("off" | "conformant") in the header, "gpu_float_pairs" and "gpu_float_findings" in
 //    every "stats", check: "gpu_float" (the GPU float findings), sweep: "first_gpu_float" per camera and
 //    "cameras_gpu_float" in the summary; verdict "gpu_float".
 constexpr int kReportVersion = 9;
