@@ -55,8 +55,9 @@ TEST_CASE("prove: without the clamp the counterexample camera's printed values m
           "[cli][prove]") {
   // A box whose corners are not simple decimals: the sampled camera (the box's centre or its simplest floats) is
   // printed with %.9g, which check's --eye / --target read back to the same floats.
+  const std::string path = clitest::tmpDir() + "/prove_counterexample.json";
   const auto r = run({"prove", kRings, "--set", "lod.adjacency_clamp=none", "--eye-box", "9.3,24.1,-70.7,10.9,25.3,-69.1",
-                      "--target-box", "-0.3,0,0.2,0.1,0,0.7", "-j", "2", "--show", "1"});
+                      "--target-box", "-0.3,0,0.2,0.1,0,0.7", "-j", "2", "--show", "1", "--json", path});
   INFO(r.out << r.err);
   REQUIRE(r.status == 1);
   const std::string line = lineStarting(r.out, "COUNTEREXAMPLE: eye (");
@@ -64,6 +65,13 @@ TEST_CASE("prove: without the clamp the counterexample camera's printed values m
   float e[3], t[3];
   REQUIRE(std::sscanf(line.c_str(), "COUNTEREXAMPLE: eye (%f, %f, %f) target (%f, %f, %f)", &e[0], &e[1], &e[2], &t[0],
                       &t[1], &t[2]) == 6);
+  // The printed values are the camera's floats exactly (the JSON report's numbers are those floats in double).
+  const json report = json::parse(clitest::readFile(path));
+  REQUIRE(report.at("verdict") == "COUNTEREXAMPLE");
+  for (int k = 0; k < 3; ++k) {
+    CHECK(report.at("counterexample").at("eye").at(k).get<double>() == static_cast<double>(e[k]));
+    CHECK(report.at("counterexample").at("target").at(k).get<double>() == static_cast<double>(t[k]));
+  }
   const std::string finding = lineStarting(r.out, "crack      ");
   REQUIRE(!finding.empty());
   const std::string eye = line.substr(line.find("eye (") + 5, line.find(") target") - line.find("eye (") - 5);
