@@ -102,6 +102,10 @@ TEST_CASE("prove: a region left open at --max-regions 1 is UNDECIDED with exit 1
   CHECK(has(head, " regions left open (never PROVED while any remain)"));
   CHECK(has(r.out, "  eye (10, 24, -71)..(11, 26, -69) target (0, 0, 0) (depth 1): "));
   CHECK(!has(r.out, "PROVED:"));
+  // Without boxes: the default region, stated as such.
+  const auto d = run({"prove", kRings, "--max-regions", "1", "-j", "2"});
+  CHECK(d.status == 1);
+  CHECK(has(lineStarting(d.out, "  region         eye ("), " (the default region: eyes above the terrain, targets on it)"));
   // The JSON report says the same.
   const std::string path = clitest::tmpDir() + "/prove_undecided.json";
   const auto j = run({"prove", kRings, "--eye-box", "9,24,-71,11,26,-69", "--target-box", "0,0,0,0,0,0",
