@@ -289,6 +289,28 @@ std::string holeLine(const vf::Hole& h) {
          holeCause(h).detail;
 }
 
+Cause gpuFloatCause(const vf::GpuFloatFinding& g) {
+  Cause c;
+  const bool ops = !g.operationA.empty();
+  c.key = std::string("may crack on some GPUs: ") +
+          (ops ? "the two sides compute the factor through different operations" : g.why);
+  c.detail = "factors " + formatFloat(g.factorA) + " | " + formatFloat(g.factorB) +
+             " (lod/'s C++ build: a match); a conformant GPU compiler may give " + formatFloat(g.loA) + ".." +
+             formatFloat(g.hiA) + " | " + formatFloat(g.loB) + ".." + formatFloat(g.hiB);
+  if (ops)
+    c.detail += ", which tessellate the edge differently; the first operation that differs: side a " + g.operationA +
+                ", side b " + g.operationB;
+  else
+    c.detail += ": " + g.why;
+  c.fix = g.fix;
+  return c;
+}
+
+std::string gpuFloatLine(const vf::GpuFloatFinding& g, bool withCause) {
+  return "gpu float  " + patchText(g.a) + " " + edgeName(g.edgeA) + " | " + patchText(g.b) + " " + edgeName(g.edgeB) +
+         (withCause ? ": " + gpuFloatCause(g).detail : std::string());
+}
+
 std::vector<Cause> reportCauses(const vf::Report& r, bool offScreenToo) {
   std::vector<Cause> out;
   auto add = [&](Cause c, const std::string& prefix) {
@@ -302,6 +324,7 @@ std::vector<Cause> reportCauses(const vf::Report& r, bool offScreenToo) {
   for (const vf::Finding& f : r.findings)
     if (f.classification != vf::Classification::Match && (f.onScreen || offScreenToo))
       add(findingCause(f), std::string(vf::toString(f.classification)) + ": ");
+  for (const vf::GpuFloatFinding& g : r.gpuFloat) add(gpuFloatCause(g), "");
   return out;
 }
 
@@ -352,6 +375,10 @@ std::string statsText(const vf::Stats& s, bool countOffScreen) {
     o += "  undecided      " + std::to_string(s.undecided) + " (" + std::to_string(s.culledUndecided) + " culled, " +
          std::to_string(s.undecided - s.culledUndecided) +
          " discarded): patches not drawn, neither proven visible nor invisible (not clean)\n";
+  if (s.gpuFloatPairs > 0 || s.gpuFloatFindings > 0)
+    o += "  gpu float      " + std::to_string(s.gpuFloatPairs) +
+         " matching pairs evaluated under a conformant GPU compiler's choices (--gpu-float conformant), " +
+         std::to_string(s.gpuFloatFindings) + " may crack on some GPUs\n";
   const int64_t counted = countOffScreen ? s.cracks : s.cracksOnScreen();
   const bool differ = fmtWorld(s.worstGapWorld) != fmtWorld(s.worstGapWorldOnScreen) ||
                       fmtWorld(s.worstGapPixels) != fmtWorld(s.worstGapPixelsOnScreen); // as printed
@@ -398,6 +425,11 @@ static std::string verdictHeadline(vf::Verdict verdict, const vf::SweepResult& r
     return "NOT WATERTIGHT: UNDECIDED from " + std::to_string(res.camerasUndecided) + " of " +
            std::to_string(res.camerasDone) + " cameras (" + std::to_string(res.total.undecided) +
            " patches not drawn, neither proven visible nor invisible)";
+  case vf::Verdict::GpuFloat:
+    return "MAY CRACK ON SOME GPUS: " + std::to_string(res.total.gpuFloatFindings) + " matching shared edges on " +
+           std::to_string(res.camerasGpuFloat) + " of " + std::to_string(res.camerasDone) +
+           " cameras depend on a conformant GPU compiler's choices (--gpu-float conformant); no crack with lod/'s "
+           "C++ build";
   case vf::Verdict::TJunctionsOnly: return res.cancelled ? "no cracks so far (interrupted)" : "no cracks (T-junctions only)";
   case vf::Verdict::Watertight:
     return res.cancelled ? "no cracks so far (interrupted)" : "WATERTIGHT from all " + std::to_string(res.camerasDone) + " cameras";

@@ -40,6 +40,12 @@ std::string findingLine(const vf::Finding& f, bool withCause = true);
 // the projection's w at the edge's midpoint, where the patch was seen).
 Cause holeCause(const vf::Hole& h);
 std::string holeLine(const vf::Hole& h);              // one line: "hole", the patch, the cause
+// A GPU float finding (--gpu-float conformant; vf::GpuFloatFinding): key "may crack on some GPUs: ..." (the reason),
+// the detail (both sides' C++ factors and what a conformant compiler may produce, the first operation that differs on
+// each side) and the finding's fix.
+Cause gpuFloatCause(const vf::GpuFloatFinding& g);
+// One line: "gpu float", both sides, then (withCause) the cause's detail.
+std::string gpuFloatLine(const vf::GpuFloatFinding& g, bool withCause = true);
 // The causes of a report with their fixes, keyed as sweep's table keys them ("hole: KEY", "undecided: ...",
 // "crack: KEY", "t_junction: KEY"), each once, in the report's order: holes, undecided patches, findings (on screen
 // only unless offScreenToo). For the pictures' legends.

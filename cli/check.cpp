@@ -194,12 +194,18 @@ std::string findingLines(const CheckArgs& a, const vf::Report& r) {
     const bool first = std::none_of(groups.begin(), groups.end(), [&](const CauseGroup& g) { return g.key == key; });
     addToGroup(groups, key, c.fix, findingLine(f, first));
   }
+  std::vector<CauseGroup> gpu; // --gpu-float conformant: matching edges that may crack on some GPUs
+  for (const vf::GpuFloatFinding& g : r.gpuFloat) {
+    const Cause c = gpuFloatCause(g);
+    addToGroup(gpu, c.key, c.fix, gpuFloatLine(g));
+  }
   int shown = 0;
-  std::string text = groupText(undrawn, a.show, shown) + groupText(on, a.show, shown);
+  std::string text = groupText(undrawn, a.show, shown) + groupText(on, a.show, shown) + groupText(gpu, a.show, shown);
   if (!off.empty())
     text += std::string("  off screen") + (a.offscreen ? " (counted, --offscreen):" : ", not counted:") + "\n" +
             groupText(off, a.show, shown);
-  const int64_t nonMatch = r.stats.cracks + r.stats.tJunctions + r.stats.holes + r.stats.undecided;
+  const int64_t nonMatch =
+      r.stats.cracks + r.stats.tJunctions + r.stats.holes + r.stats.undecided + r.stats.gpuFloatFindings;
   if (shown > a.show || nonMatch > a.show)
     text += "  ... " + std::to_string(nonMatch - a.show) + " more findings (--show N, or --json FILE)\n";
   return text;
@@ -263,6 +269,11 @@ std::string checkVerdictLine(vf::Verdict verdict, const vf::Stats& stats, bool c
   case vf::Verdict::Undecided:
     words = "UNDECIDED: " + std::to_string(stats.undecided) +
             " patches not drawn could be neither proven visible nor invisible (listed above); not a clean verdict";
+    break;
+  case vf::Verdict::GpuFloat:
+    words = "MAY CRACK ON SOME GPUS: " + std::to_string(stats.gpuFloatFindings) +
+            " matching shared edges depend on a conformant GPU compiler's choices (listed above); no crack with "
+            "lod/'s C++ build";
     break;
   case vf::Verdict::TJunctionsOnly: words = "watertight now (T-junctions)"; break;
   default: words = "watertight"; break;

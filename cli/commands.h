@@ -69,6 +69,7 @@ struct SceneArgs {
   std::string cameras;      // --cameras FILE: cameras from a CSV / JSON file (cli/camera_file.h)
   std::string gltf;         // --gltf FILE: the checked camera in 3D (check: its camera; sweep: the worst camera's)
   std::string view;         // check --view FILE.svg: what the camera sees (cli/report_view.h); "" for sweep
+  std::string gpuFloat = "off"; // --gpu-float off|conformant (vf::CheckOptions::gpuFloat)
 };
 
 struct CheckArgs : SceneArgs {
@@ -115,6 +116,20 @@ struct LayoutArgs {
 };
 CLI::App* addLayout(CLI::App& app, LayoutArgs& a);
 int runLayout(const LayoutArgs& a);
+
+// ---- prove (cli/prove.cpp): a scene proven watertight for every camera of a region (verify/prove.h). Exit 0 PROVED,
+// 1 COUNTEREXAMPLE or UNDECIDED, 2 bad usage or scene, 3 internal.
+struct ProveArgs {
+  SceneArgs scene;           // SCENE, --set, --json, -q (the other scene options are not registered)
+  std::string eyeBox;        // --eye-box X0,Y0,Z0,X1,Y1,Z1 ("": the default region's)
+  std::string targetBox;     // --target-box X0,Y0,Z0,X1,Y1,Z1
+  int maxDepth = 24;         // vf::ProveOptions::maxDepth
+  int64_t maxRegions = 200000;
+  int threads = 0;           // 0: all cores
+  int show = 20;             // counterexample finding lines and undecided regions printed
+};
+CLI::App* addProve(CLI::App& app, ProveArgs& a);
+int runProve(const ProveArgs& a);
 
 // ---- compare, driver-check (cli/compare.cpp, cli/driver_check.cpp; their report: cli/compare_report.h). Exit 0
 // same, 1 differs, 2 bad input, 3 internal.

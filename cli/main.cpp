@@ -1,5 +1,5 @@
 // fftess: the command-line tool. Subcommands: tessellate, explain, check, sweep, compare, driver-check, bench,
-// merge, layout (docs/cli.md).
+// merge, layout, gen, prove (docs/cli.md).
 // Exit statuses: 0 clean, 1 cracks found, 2 bad usage or input, 3 internal error. Errors go to stderr.
 #include "commands.h"
 #include "common.h"
@@ -63,6 +63,8 @@ int main(int argc, char** argv) {
   CLI::App* layout = addLayout(app, layoutArgs);
   GenArgs genArgs;
   CLI::App* gen = addGen(app, genArgs);
+  ProveArgs proveArgs;
+  CLI::App* prove = addProve(app, proveArgs);
 
   std::string names;
   bool known = false;
@@ -98,6 +100,7 @@ int main(int argc, char** argv) {
     if (driver->parsed()) return runDriverCheck(driverArgs);
     if (layout->parsed()) return runLayout(layoutArgs);
     if (gen->parsed()) return runGen(genArgs);
+    if (prove->parsed()) return runProve(proveArgs);
     if (bench->parsed()) {
       benchArgs.passThrough = bench->remaining();
       return runBench(benchArgs, argv[0]);

@@ -78,6 +78,8 @@ vf::Stats statsOf(const json& j) {
   s.undecided = j.at("undecided");
   s.patchesOffScreen = j.at("patches_off_screen");
   s.edgesOffScreen = j.at("edges_off_screen");
+  s.gpuFloatPairs = j.value("gpu_float_pairs", int64_t(0));
+  s.gpuFloatFindings = j.value("gpu_float_findings", int64_t(0));
   return s;
 }
 
@@ -85,7 +87,7 @@ vf::Stats statsOf(const json& j) {
 json mergeHeader(const json& shard) {
   json header = shard;
   for (const char* k : {"cameras", "shard", "cameras_total", "cameras_done", "cancelled", "cameras_not_done",
-                        "cameras_invalid", "cameras_nothing_checked", "cameras_undecided", "stats", "verdict",
+                        "cameras_invalid", "cameras_nothing_checked", "cameras_undecided", "cameras_gpu_float", "stats", "verdict",
                         "causes", "visible_first", "result_cache", "work", "terrain_work"})
     header.erase(k);
   return header;
@@ -156,6 +158,7 @@ vf::SweepResult mergedResult(const std::vector<json>& shards, size_t& total) {
     res.camerasInvalid += s.at("cameras_invalid").get<size_t>();
     res.camerasNothingChecked += s.at("cameras_nothing_checked").get<size_t>();
     res.camerasUndecided += s.at("cameras_undecided").get<size_t>();
+    res.camerasGpuFloat += s.value("cameras_gpu_float", size_t(0));
     res.cancelled = res.cancelled || s.at("cancelled").get<bool>();
     vf::accumulate(res.total, statsOf(s.at("stats")));
   }

@@ -100,7 +100,23 @@ json statsJson(const vf::Stats& s) {
           {"cracks_off_screen", s.cracksOffScreen}, {"t_junctions_off_screen", s.tJunctionsOffScreen},
           {"worst_gap_world_on_screen", s.worstGapWorldOnScreen},
           {"worst_gap_pixels_on_screen", s.worstGapPixelsOnScreen}, {"undecided", s.undecided},
-          {"patches_off_screen", s.patchesOffScreen}, {"edges_off_screen", s.edgesOffScreen}};
+          {"patches_off_screen", s.patchesOffScreen}, {"edges_off_screen", s.edgesOffScreen},
+          {"gpu_float_pairs", s.gpuFloatPairs}, {"gpu_float_findings", s.gpuFloatFindings}};
+}
+
+json gpuFloatJson(const vf::GpuFloatFinding& g) {
+  auto side = [](const vf::PatchRef& p, int edge, float factor, float lo, float hi, const std::string& op) {
+    return json{{"patch", {{"index", p.index}, {"ring", p.ring}, {"tile", p.tile}, {"patch", p.patch}, {"level", p.level}}},
+                {"edge", edgeName(edge)},
+                {"factor", formatFloat(factor)}, // strings: NaN and Inf are not JSON numbers
+                {"conformant_lo", formatFloat(lo)},
+                {"conformant_hi", formatFloat(hi)},
+                {"operation", op.empty() ? json(nullptr) : json(op)}};
+  };
+  const Cause c = gpuFloatCause(g);
+  return {{"cause", c.key}, {"why", g.why}, {"fix", g.fix}, {"explanation", c.detail},
+          {"a", side(g.a, g.edgeA, g.factorA, g.loA, g.hiA, g.operationA)},
+          {"b", side(g.b, g.edgeB, g.factorB, g.loB, g.hiB, g.operationB)}};
 }
 
 json holeJson(const vf::Hole& h) {
@@ -177,6 +193,7 @@ static json reportHeader(const char* kind, const SceneArgs& a, const vf::Scene& 
   std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(scene.contentHash));
   j["scene_hash"] = std::string("fnv1a64:") + hash; // vf::Scene::contentHash: the scene's bytes, overrides, files
   j["offscreen"] = a.offscreen; // --offscreen: findings outside the view frustum count in the verdict
+  j["gpu_float_mode"] = a.gpuFloat; // --gpu-float: "off" or "conformant"
   return j;
 }
 
@@ -200,6 +217,9 @@ json checkJson(const SceneArgs& a, const vf::Terrain& terrain, const vf::Camera&
   json ds = json::array();
   for (const vf::DenormalFactor& d : r.denormalFactors) ds.push_back(denormalJson(d));
   j["denormal_factors"] = ds;
+  json gs = json::array();
+  for (const vf::GpuFloatFinding& g : r.gpuFloat) gs.push_back(gpuFloatJson(g));
+  j["gpu_float"] = gs;
   if (mesh)
     j["mesh"] = {{"triangles", mesh->triangles}, {"vertices", mesh->vertices}, {"border_edges", mesh->borderEdges},
                  {"inner_border_edges", mesh->innerBorderEdges}, {"flagged_patch_edges", mesh->flagged.size()}};
@@ -231,6 +251,7 @@ json sweepCameraJson(size_t globalIndex, const vf::Camera& cam, const vf::Camera
   jc["first_undecided"] = c.hasUndecided ? holeJson(c.firstUndecided) : json(nullptr);
   jc["stats"] = statsJson(c.stats);
   jc["worst"] = c.hasFinding ? findingJson(c.worst) : json(nullptr);
+  jc["first_gpu_float"] = c.hasGpuFloat ? gpuFloatJson(c.firstGpuFloat) : json(nullptr);
   return jc;
 }
 
@@ -244,6 +265,7 @@ json sweepSummaryJson(size_t requested, const vf::SweepResult& res, const std::v
   j["cameras_invalid"] = res.camerasInvalid;
   j["cameras_nothing_checked"] = res.camerasNothingChecked;
   j["cameras_undecided"] = res.camerasUndecided;
+  j["cameras_gpu_float"] = res.camerasGpuFloat;
   j["stats"] = statsJson(res.total);
   j["verdict"] = vf::toString(vf::verdictOf(res, countOffScreen));
   json cs = json::array();

@@ -25,9 +25,13 @@ using json = nlohmann::ordered_json;
 //    full_tessellations, shared_edge_points, visibility_evaluations.
 // 8: the sweep shortcuts: "visible_first" and "result_cache" in the sweep summary, "patches_off_screen" and
 //    "edges_off_screen" in every "stats", work counters cache_hits, seam_hits, cache_misses, seam_proofs, box_tests.
-constexpr int kReportVersion = 8;
+// 9: --gpu-float: "gpu_float_mode" ("off" | "conformant") in the header, "gpu_float_pairs" and "gpu_float_findings" in
+//    every "stats", check: "gpu_float" (the GPU float findings), sweep: "first_gpu_float" per camera and
+//    "cameras_gpu_float" in the summary; verdict "gpu_float".
+constexpr int kReportVersion = 9;
 
 json vec3Json(const glm::vec3& v);
+json gpuFloatJson(const vf::GpuFloatFinding& g); // one GPU float finding (--gpu-float conformant)
 json findingJson(const vf::Finding& f);
 json holeJson(const vf::Hole& h);
 json denormalJson(const vf::DenormalFactor& d); // a denormal hull factor: patch, factor, value, bits, flushed

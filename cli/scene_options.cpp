@@ -68,11 +68,17 @@ vf::CheckOptions checkOptions(const SceneArgs& a) {
   else if (fd == "auto") o.flushDenormals = vf::DenormalFlush::Auto;
   else throw UsageError("--flush-denormals=" + quoteToken(fd) + ": expected on|off|auto");
   o.countOffScreen = a.offscreen;
+  if (a.gpuFloat == "conformant") o.gpuFloat = vf::GpuFloat::Conformant;
+  else if (a.gpuFloat != "off") throw UsageError("--gpu-float " + quoteToken(a.gpuFloat) + ": expected off|conformant");
   return o;
 }
 
 vf::CheckOptions checkOptions(const SceneArgs& a, const vf::Terrain& terrain) {
   vf::CheckOptions o = checkOptions(a);
+  if (o.gpuFloat == vf::GpuFloat::Conformant) {
+    const std::string why = vf::gpuFloatRefusal(terrain.scene());
+    if (!why.empty()) throw UsageError(why);
+  }
   attachGpuLod(terrain, a, o);
   return o;
 }
@@ -167,6 +173,12 @@ void addSceneOptions(CLI::App* sub, SceneArgs& a) {
                   "up_y,up_z,fov_y,near,far,width,height,convention) or, for FILE.json, a JSON array of objects with "
                   "those fields; what a camera leaves out comes from the scene's [camera] (docs/cli.md)")
       ->type_name("FILE");
+  sub->add_option("--gpu-float", a.gpuFloat,
+                  "off (default) | conformant: also evaluate each matching shared edge under every choice a "
+                  "conformant GPU compiler may make (a*b+c fused or not, the spec's error bounds of /, sqrt, exp2, "
+                  "log2, pow) and report edges whose match depends on it (\"may crack on some GPUs\"; exit 1); "
+                  "built-in lod.scheme on the CPU path only (docs/verify.md, \"GPU float freedom\")")
+      ->type_name("off|conformant");
   sub->add_flag("--gpu-hardware", a.gpuHardware,
                 "lod.shader / lod.evaluate = \"gpu\": use a GPU's EGL device (default: Mesa's llvmpipe first)");
 }

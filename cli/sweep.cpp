@@ -61,6 +61,12 @@ struct CauseTally {
       const Cause cause = holeCause(r.undecided[k]);
       addKey(cause.key, cause, camera, r.findings.size() + r.holes.size() + k, here);
     }
+    const size_t gpuFirst = r.findings.size() + r.holes.size() + r.undecided.size();
+    for (size_t k = 0; k < r.gpuFloat.size(); ++k) { // --gpu-float: the key starts with "may crack on some GPUs: "
+      Cause cause = gpuFloatCause(r.gpuFloat[k]);
+      cause.detail = gpuFloatLine(r.gpuFloat[k]); // the example names the sides
+      addKey(cause.key, cause, camera, gpuFirst + k, here);
+    }
   }
 
   void addKey(const std::string& key, const Cause& cause, size_t camera, size_t k, std::set<std::string>& here) {
@@ -431,6 +437,11 @@ std::string SweepRun::summaryText(const vf::SweepResult& res, const std::string&
   text += buf;
   if (res.camerasUndecided > 0) {
     std::snprintf(buf, sizeof buf, "  cameras with undecided patches (not clean): %zu\n", res.camerasUndecided);
+    text += buf;
+  }
+  if (res.camerasGpuFloat > 0) {
+    std::snprintf(buf, sizeof buf, "  cameras with edges that may crack on some GPUs (--gpu-float): %zu\n",
+                  res.camerasGpuFloat);
     text += buf;
   }
   if (res.camerasNothingChecked > 0) {

@@ -22,6 +22,10 @@ const char* glslCodeName(Reconstruction v) {
   switch (v) { FFTESS_LOD_RECONSTRUCTION_CODES(FFTESS_LOD_CODE_NAME) }
   return "kRebuildEdgeVector";
 }
+const char* glslCodeName(SphereCentre v) {
+  switch (v) { FFTESS_LOD_SPHERE_CENTRE_CODES(FFTESS_LOD_CODE_NAME) }
+  return "kCentreHalfSum";
+}
 #undef FFTESS_LOD_CODE_NAME
 
 std::string glslFloat(float f) {
@@ -41,6 +45,7 @@ void put(std::string& out, const std::string& path, bool v) { put(out, path, std
 void put(std::string& out, const std::string& path, InsideRule v) { put(out, path, std::string(glslCodeName(v))); }
 void put(std::string& out, const std::string& path, AdjacencyClamp v) { put(out, path, std::string(glslCodeName(v))); }
 void put(std::string& out, const std::string& path, Reconstruction v) { put(out, path, std::string(glslCodeName(v))); }
+void put(std::string& out, const std::string& path, SphereCentre v) { put(out, path, std::string(glslCodeName(v))); }
 void put(std::string& out, const std::string& path, const glm::vec3& v) {
   put(out, path, "vec3(" + glslFloat(v.x) + ", " + glslFloat(v.y) + ", " + glslFloat(v.z) + ")");
 }

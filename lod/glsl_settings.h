@@ -27,12 +27,17 @@ inline int shaderCode(Reconstruction v) {
   switch (v) { FFTESS_LOD_RECONSTRUCTION_CODES(FFTESS_LOD_CODE_CASE) }
   return 0;
 }
+inline int shaderCode(SphereCentre v) {
+  switch (v) { FFTESS_LOD_SPHERE_CENTRE_CODES(FFTESS_LOD_CODE_CASE) }
+  return 0;
+}
 #undef FFTESS_LOD_CODE_CASE
 
 // The GLSL constant that holds shaderCode(v): "kInsideMin", "kClampPow2", "kRebuildResampled".
 const char* glslCodeName(InsideRule v);
 const char* glslCodeName(AdjacencyClamp v);
 const char* glslCodeName(Reconstruction v);
+const char* glslCodeName(SphereCentre v); // "kCentreHalfSum", "kCentreAroundQuadScaled"
 
 // A float as exact GLSL, no decimal round trip: "uintBitsToFloat(0x40400000u)" for 3.0f (NaN payloads, -0 and
 // denormals kept).

@@ -91,6 +91,14 @@ struct Patch {
 // How the two edge factors of an axis become that axis' inside factor.
 enum class InsideRule : uint8_t { Average, Min, Max };
 
+// Where screen_sphere puts an edge's sphere (ScreenSphereParams::sphereCentre; scene key lod.sphere_centre).
+// HalfSum: the edge's midpoint (p0 + p1) * 0.5, the same operations on the same bits from both sides. AroundQuadScaled:
+// a negative control for --gpu-float (docs/verify.md, "GPU float freedom"): (from * 3 + to * 3) * (1/6) with the ends
+// in the order the patch passes them going around its quad, so the two sides of an edge add the same two rounded
+// products in opposite orders: the same bits in the C++ build, different where a GPU compiler fuses one product into
+// the add.
+enum class SphereCentre : uint8_t { HalfSum, AroundQuadScaled };
+
 // ---------------------------------------------------------------------------------------------------------------
 // Outputs: factors plus the reason for each.
 

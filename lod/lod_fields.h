@@ -32,7 +32,9 @@
   X(InsideRule, inside, InsideRule::Average, int, insideRule)                                                     \
   X(bool, frustumCull, true, bool, frustumCull)                                                                   \
   /* the sample writes -1 */                                                                                      \
-  X(float, culledFactor, -1.0f, float, culledFactor)
+  X(float, culledFactor, -1.0f, float, culledFactor)                                                              \
+  /* the edge midpoint (HalfSum) or the --gpu-float negative control (AroundQuadScaled) */                         \
+  X(SphereCentre, sphereCentre, SphereCentre::HalfSum, int, sphereCentre)
 
 // 2. Tile rings (lod.h nvidiaTile; lod/shaders/nvidia_tile.glsl TileSettings).
 #define FFTESS_LOD_NVIDIA_TILE_FIELDS(X)                                                                          \
@@ -116,8 +118,9 @@
   X(GeomorphParams, GeomorphSettings, "geomorph.glsl", FFTESS_LOD_GEOMORPH_FIELDS)
 
 // The enum codes the shaders take: X(Enum, Enumerator, glslConstant, code). The first entry of each enum is also
-// the code of any value outside the enum. The GLSL constants are declared in common.glsl (InsideRule) and
-// nvidia_tile.glsl (the other two); glsl_cpp.h static_asserts that they equal these codes.
+// the code of any value outside the enum. The GLSL constants are declared in common.glsl (InsideRule),
+// screen_sphere.glsl (SphereCentre) and nvidia_tile.glsl (the other two); glsl_cpp.h static_asserts that they equal
+// these codes.
 #define FFTESS_LOD_INSIDE_RULE_CODES(X)                                                                           \
   X(InsideRule, Average, kInsideAverage, 0)                                                                       \
   X(InsideRule, Min, kInsideMin, 1)                                                                               \
@@ -130,8 +133,12 @@
   X(Reconstruction, EdgeVector, kRebuildEdgeVector, 0)                                                            \
   X(Reconstruction, FarCorner, kRebuildFarCorner, 1)                                                              \
   X(Reconstruction, Resampled, kRebuildResampled, 2)
+#define FFTESS_LOD_SPHERE_CENTRE_CODES(X)                                                                         \
+  X(SphereCentre, HalfSum, kCentreHalfSum, 0)                                                                     \
+  X(SphereCentre, AroundQuadScaled, kCentreAroundQuadScaled, 1)
 #define FFTESS_LOD_ENUM_CODES(X)                                                                                  \
-  FFTESS_LOD_INSIDE_RULE_CODES(X) FFTESS_LOD_ADJACENCY_CLAMP_CODES(X) FFTESS_LOD_RECONSTRUCTION_CODES(X)
+  FFTESS_LOD_INSIDE_RULE_CODES(X) FFTESS_LOD_ADJACENCY_CLAMP_CODES(X) FFTESS_LOD_RECONSTRUCTION_CODES(X)          \
+  FFTESS_LOD_SPHERE_CENTRE_CODES(X)
 
 // lod.h's member declaration of one entry.
 #define FFTESS_LOD_DECLARE_PARAM(cppType, cppName, cppDefault, shaderType, shaderName) cppType cppName = cppDefault;

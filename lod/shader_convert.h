@@ -20,6 +20,7 @@ struct ShaderValue {
   static T from(InsideRule v) { return T(shaderCode(v)); }
   static T from(AdjacencyClamp v) { return T(shaderCode(v)); }
   static T from(Reconstruction v) { return T(shaderCode(v)); }
+  static T from(SphereCentre v) { return T(shaderCode(v)); }
 
 #define FFTESS_LOD_ASSIGN_SETTING(cppType, cppName, cppDefault, shaderType, shaderName)                            \
   s.shaderName = ShaderValue<decltype(s.shaderName)>::from(p.cppName);

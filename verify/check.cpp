@@ -203,6 +203,7 @@ struct CameraCheck {
   Report& rep;
   const std::vector<char>* need; // visible first: the patches to evaluate (null: all)
   SweepMemo* memo;               // the sweep's result cache and seam proofs (null: none)
+  GpuFloatChecker* gpuFloat;     // CheckOptions::gpuFloat: every matching pair goes to it (null: off)
 };
 
 // Adds a not-drawn patch's record to the report: a hole (Visible), or an undecided patch.
@@ -494,7 +495,7 @@ struct PairWalker {
     if (decidedByMemo(c, p, storeKey, storeValue)) {
       ++c.rep.stats.edgesChecked;
       ++c.rep.stats.matches;
-      return true;
+      return gpuFloat(p, true);
     }
     const size_t ia = static_cast<size_t>(p.ia);
     if (fullPatch != p.ia || fullEdge != p.e) {
@@ -502,7 +503,16 @@ struct PairWalker {
       fullPatch = p.ia;
       fullEdge = p.e;
     }
-    return checkEdgePair(c, s, ia, p.e, static_cast<size_t>(p.ib), storeKey, storeValue);
+    const int64_t matches = c.rep.stats.matches;
+    const bool ok = checkEdgePair(c, s, ia, p.e, static_cast<size_t>(p.ib), storeKey, storeValue);
+    return gpuFloat(p, ok && c.rep.stats.matches > matches) && ok;
+  }
+  // A matching pair (matched) under CheckOptions::gpuFloat (gpu_float.cpp). True.
+  bool gpuFloat(const EdgePair& p, bool matched) {
+    if (matched && c.gpuFloat)
+      c.gpuFloat->pair(static_cast<size_t>(p.ia), p.e, static_cast<size_t>(p.ib), c.factors, c.cache,
+                       c.options.maxFindings, c.rep);
+    return true;
   }
 };
 
@@ -560,7 +570,12 @@ Report checkTerrain(const TerrainData& prepared, const Camera& camera, const Che
   const FaultSite fault = faultSite(options, t.patches.size());
   injectFactorFault(t, fault, toLodCamera(camera), cache.factors);
   const DomainCamera domainCam = domainCamera(t, cache.factors); // per-patch domain state (geomorph, mip levels)
-  const CameraCheck c{t, camera, options, fault, cache.factors, view, domainCam, frustum, cache, rep, need, memo};
+  std::unique_ptr<GpuFloatChecker> gpu; // CheckOptions::gpuFloat (the cli refuses the scenes gpuFloatRefusal names)
+  if (options.gpuFloat == GpuFloat::Conformant && (rep.error = gpuFloatRefusal(t.scene)).empty())
+    gpu = std::make_unique<GpuFloatChecker>(t, camera);
+  if (!rep.error.empty()) return rep;
+  const CameraCheck c{t, camera, options, fault, cache.factors, view, domainCam, frustum, cache, rep, need, memo,
+                      gpu.get()};
   findUndrawnPatches(c);
   if (options.keepDrawn)
     for (const char k : cache.culled) rep.drawn.push_back(k ? 0 : 1);

@@ -45,6 +45,10 @@ struct GpuFloatFinding {
   std::string operationA, operationB;     // the first operation where the two sides' sequences differ (BoundContext::describe)
   std::string fix;             // e.g. "declare the edge's factor computation precise, or compute it once from the
                                // edge's two ends in a fixed order"
+  // Why the match depends on the compiler, in words: the two sides' operations differ and their factor sets
+  // tessellate the edge differently (operationA / operationB set), or a side may be culled, discarded (its factor set
+  // holds NaN or <= 0), or the evaluation had too many undecided comparisons (operationA / operationB empty).
+  std::string why;
 };
 
 // The options of one check (checkScene) and of every camera of a sweep. Each field's default is its initialiser;
@@ -87,6 +91,11 @@ struct CheckOptions {
   // built-in scheme on the CPU path (Report::error otherwise). Off: nothing is done.
   GpuFloat gpuFloat = GpuFloat::Off;
 };
+
+// Why the scene cannot run CheckOptions::gpuFloat = Conformant (a user shader, lod.evaluate = "gpu", geomorph: the
+// GPU float model covers lod/'s built-in schemes on the CPU path), or "" when it can. checkScene reports it as
+// Report::error for every camera; the cli refuses the command with it.
+std::string gpuFloatRefusal(const Scene& scene);
 
 // The denormal rule one check runs with, and where it came from: the first that is not Auto of
 // CheckOptions::flushDenormals ("--flush-denormals"), lod.flush_denormals ("lod.flush_denormals"); else the driver's

@@ -14,6 +14,11 @@
 #include <memory>
 #include <vector>
 
+namespace fftess::lod {
+class BoundContext;
+struct BoundCamera;
+} // namespace fftess::lod
+
 namespace fftess::verify::detail {
 
 // ---------------------------------------------------------------------------------------------------------------
@@ -400,6 +405,27 @@ class FrustumTest;
 // frustum: also the worst gap on screen (ExactVerdict::onScreen*); a must then point into aFull.
 ExactVerdict classifyExact(Kernel kernel, const glm::vec3* a, int na, const glm::vec3* aFull, int naFull, const glm::vec3* b,
                            int nb, const FrustumTest* frustum = nullptr);
+
+// ---------------------------------------------------------------------------------------------------------------
+// gpu_float.cpp: CheckOptions::gpuFloat (docs/verify.md, "GPU float freedom").
+
+// One camera's GPU float check: a BoundContext under lod::FloatModel::Conformant and the camera as its constants.
+class GpuFloatChecker {
+public:
+  // t: the camera's layout; camera: the check's (the LOD gets toLodCamera's). maxPaths: BoundContext's.
+  GpuFloatChecker(const TerrainData& t, const Camera& camera, int maxPaths = 256);
+  ~GpuFloatChecker();
+  // The pair edge e of patch ia / the opposite edge of patch ib, which the check found matching with the C++ build's
+  // factors (factors: the check's, lod/'s C++ build): counts Stats::gpuFloatPairs and, where its match depends on a
+  // conformant compiler's choices, Stats::gpuFloatFindings and a Report::gpuFloat entry (at most maxFindings kept).
+  void pair(size_t ia, int e, size_t ib, const std::vector<lod::PatchLod>& factors, EdgeCache& cache,
+            size_t maxFindings, Report& rep);
+
+private:
+  const TerrainData& t_;
+  std::unique_ptr<lod::BoundContext> context_;
+  std::unique_ptr<lod::BoundCamera> camera_;
+};
 
 // ---------------------------------------------------------------------------------------------------------------
 // check.cpp

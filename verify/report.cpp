@@ -25,6 +25,8 @@ void accumulate(Stats& s, const Stats& c) {
   s.visibilityTests += c.visibilityTests;
   s.patchesOffScreen += c.patchesOffScreen;
   s.edgesOffScreen += c.edgesOffScreen;
+  s.gpuFloatPairs += c.gpuFloatPairs;
+  s.gpuFloatFindings += c.gpuFloatFindings;
   s.worstGapWorld = std::max(s.worstGapWorld, c.worstGapWorld);
   s.worstGapPixels = std::max(s.worstGapPixels, c.worstGapPixels);
   s.cracksOffScreen += c.cracksOffScreen;
@@ -37,6 +39,7 @@ Verdict verdictOf(const Stats& s, bool countOffScreen) {
   if ((countOffScreen ? s.cracks : s.cracksOnScreen()) > 0) return Verdict::Cracks;
   if (s.holes > 0) return Verdict::Holes;
   if (s.undecided > 0) return Verdict::Undecided;
+  if (s.gpuFloatFindings > 0) return Verdict::GpuFloat; // counted only with CheckOptions::gpuFloat
   if (s.edgesChecked == 0) return Verdict::NothingChecked;
   if ((countOffScreen ? s.tJunctions : s.tJunctionsOnScreen()) > 0) return Verdict::TJunctionsOnly;
   return Verdict::Watertight;
@@ -44,7 +47,7 @@ Verdict verdictOf(const Stats& s, bool countOffScreen) {
 
 Verdict verdictOf(const SweepResult& r, bool countOffScreen) {
   const Verdict v = verdictOf(r.total, countOffScreen);
-  if (v == Verdict::Cracks || v == Verdict::Holes || v == Verdict::Undecided) return v;
+  if (v == Verdict::Cracks || v == Verdict::Holes || v == Verdict::Undecided || v == Verdict::GpuFloat) return v;
   if (r.camerasInvalid > 0) return Verdict::Unchecked;
   return v;
 }
@@ -58,6 +61,7 @@ const char* toString(Verdict v) {
   case Verdict::NothingChecked: return "nothing_checked";
   case Verdict::Unchecked: return "unchecked";
   case Verdict::Undecided: return "undecided";
+  case Verdict::GpuFloat: return "gpu_float";
   }
   return "?";
 }

@@ -19,7 +19,10 @@ enum class Verdict : uint8_t {
   NothingChecked,  // no shared edge was classified (and no crack or hole): not clean
   Unchecked,       // some cameras could not be checked (and no crack or hole): not clean
   Undecided,       // some patch not drawn could be neither proven visible nor invisible (and no crack or hole): not
-                   // clean. Precedence: Cracks, Holes, Undecided, NothingChecked, Unchecked, TJunctionsOnly, Watertight
+                   // clean. Precedence: Cracks, Holes, Undecided, GpuFloat, NothingChecked, Unchecked, TJunctionsOnly,
+                   // Watertight
+  GpuFloat,        // CheckOptions::gpuFloat only: some matching shared edge may crack on a conformant GPU
+                   // (Stats::gpuFloatFindings > 0; Report::gpuFloat) and no crack, hole or undecided patch: not clean
 };
 // countOffScreen false (default): cracks and T-junctions proven off screen (Stats::cracksOffScreen,
 // tJunctionsOffScreen) do not count; true: every finding counts (CheckOptions::countOffScreen, the cli's --offscreen).
@@ -30,6 +33,6 @@ Verdict verdictOf(const SweepResult& r, bool countOffScreen = false);
 // does per camera; merging shards does it per shard.
 void accumulate(Stats& total, const Stats& s);
 const char* toString(Verdict v); // "watertight", "t_junctions", "cracks", "holes", "nothing_checked", "unchecked",
-                                 // "undecided"
+                                 // "undecided", "gpu_float"
 
 } // namespace fftess::verify

@@ -53,6 +53,8 @@ inline const Enum kInsideRules[] = {{"average", int(lod::InsideRule::Average)},
                              {"min", int(lod::InsideRule::Min)},
                              {"max", int(lod::InsideRule::Max)}};
 inline const Enum kInsideFrom[] = {{"own_edges", 0}, {"fixed_edges", 1}};
+inline const Enum kSphereCentres[] = {{"half_sum", int(lod::SphereCentre::HalfSum)},
+                                      {"around_quad_scaled", int(lod::SphereCentre::AroundQuadScaled)}};
 inline const Enum kClamps[] = {{"none", int(AdjacencyClamp::None)},
                         {"integer", int(AdjacencyClamp::Integer)},
                         {"pow2", int(AdjacencyClamp::Pow2)}};

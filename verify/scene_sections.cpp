@@ -214,6 +214,8 @@ void readLodParams(Reader& r, const toml::table& t, Lod& L) {
   // the NVIDIA sample's constant hull shader computes Inside[] (tile rings with screen_sphere).
   int insideFrom = L.screenSphere.insideFromFixedEdges ? 1 : 0;
   if (r.enumeration(t, p, "inside_from", kInsideFrom, insideFrom)) L.screenSphere.insideFromFixedEdges = insideFrom == 1;
+  // "half_sum" (default): the edge's midpoint; "around_quad_scaled": --gpu-float's negative control (lod.h SphereCentre).
+  r.enumeration(t, p, "sphere_centre", kSphereCentres, L.screenSphere.sphere.sphereCentre);
 }
 
 // The neighbour rule's keys, set explicitly where no neighbour rule runs, are refused (the defaults never are):
@@ -242,7 +244,7 @@ void readLod(Reader& r, const toml::table& root, Scene& s, const std::string& ba
                 {"scheme", "target_pixels", "factor", "min_factor", "max_factor", "min_distance", "max_distance",
                  "min_tess", "max_tess", "angle_correction", "rank", "edges_per_screen_height", "frustum_cull",
                  "displaced_corners", "adjacency_clamp", "reconstruction", "finest_level", "coarsest_level",
-                 "literal_article_weight", "height_bounds", "inside", "inside_from", "shader", "evaluate",
+                 "literal_article_weight", "height_bounds", "inside", "inside_from", "sphere_centre", "shader", "evaluate",
                  "flush_denormals", "entry", "evaluation_shader", "uniforms", "inputs", "control_points",
                  "corner_order", "domain_u", "domain_v"});
   readLodSource(r, t, s.lod, baseDir);

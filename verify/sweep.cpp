@@ -78,6 +78,8 @@ SweepResult sweep(const Terrain& terrain, size_t count, const std::function<Came
       if (cr.hasHole) cr.firstHole = rep.holes.front();
       cr.hasUndecided = !rep.undecided.empty();
       if (cr.hasUndecided) cr.firstUndecided = rep.undecided.front();
+      cr.hasGpuFloat = !rep.gpuFloat.empty();
+      if (cr.hasGpuFloat) cr.firstGpuFloat = rep.gpuFloat.front();
       cr.hasFinding = false;
       // The worst of the findings that count (CameraResult::worst).
       const bool all = options.countOffScreen;
@@ -95,6 +97,7 @@ SweepResult sweep(const Terrain& terrain, size_t count, const std::function<Came
           ++out.camerasDone;
           if (cr.stats.edgesChecked == 0) ++out.camerasNothingChecked;
           if (cr.stats.undecided > 0) ++out.camerasUndecided;
+          if (cr.stats.gpuFloatFindings > 0) ++out.camerasGpuFloat;
           out.work += rep.work;
           allVisibleFirst = allVisibleFirst && rep.visibleFirst;
           accumulate(out.total, cr.stats);

@@ -29,6 +29,8 @@ struct CameraResult {
   Hole firstHole;                // the first hole in layout order
   bool hasUndecided = false;
   Hole firstUndecided;           // the first undecided patch (Report::undecided) in layout order
+  bool hasGpuFloat = false;
+  GpuFloatFinding firstGpuFloat; // CheckOptions::gpuFloat: the first GPU float finding (Report::gpuFloat)
 };
 
 // How a sweep runs (threads, progress, cancel, what it keeps). Each field's default is its initialiser.
@@ -76,6 +78,7 @@ struct SweepResult {
   size_t camerasInvalid = 0;         // cameras that could not be checked (CameraResult::error)
   size_t camerasNothingChecked = 0;  // cameras done that classified no shared edge (everything culled, say)
   size_t camerasUndecided = 0;       // cameras done with Stats::undecided > 0 (not clean)
+  size_t camerasGpuFloat = 0;        // cameras done with Stats::gpuFloatFindings > 0 (CheckOptions::gpuFloat)
   bool cancelled = false;
   // What the shortcuts did (docs/verify.md, "Sweep shortcuts"): visibleFirst when every camera ran visible first;
   // the result cache's state (resultCacheOff: empty when it was on, else why not) and, when on, its size.

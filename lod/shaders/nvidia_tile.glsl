@@ -201,7 +201,9 @@ LodResult nvidiaTileLod(vec3 c0, vec3 c1, vec3 c2, vec3 c3, bool useHeightBounds
     EdgeLod rebuilt = own.e[e];
     if (n.size[e] == 2.0f) {
       RebuiltEdge big = largerNeighbourEdgeOf(e, c0, c1, c2, c3, n, s.rebuild);
-      rebuilt = screenSphereEdge(big.a, big.b, cam, s.sphere);
+      // The larger patch passes its edge (opposite e) around its quad from a to b for e = Ueq0, Veq1, else b to a.
+      bool forward = e == 0 || e == 3;
+      rebuilt = screenSphereEdgeAround(big.a, big.b, forward ? big.a : big.b, forward ? big.b : big.a, cam, s.sphere);
     }
     r.e[e] = neighbourRuleEdge(own.e[e], rebuilt, n.size[e], s.clampMode);
   }

@@ -16,7 +16,7 @@ TEST_CASE("fftess --version", "[cli]") {
 
 TEST_CASE("--help on every subcommand shows an example line", "[cli]") {
   const std::vector<std::string> subs{"tessellate", "explain", "bench", "check", "sweep", "compare", "driver-check",
-                                      "gen"};
+                                      "gen", "prove"};
   const auto top = run({"--help"});
   CHECK(top.status == 0);
   for (const std::string& s : subs) {

@@ -88,7 +88,7 @@ TEST_CASE("sweep: the shortcuts run unless --offscreen, --no-visible-first or --
   // The JSON keys.
   for (const Swept* s : {&dflt, &noVf, &noCache, &none, &offscreen}) {
     const json& j = s->j;
-    CHECK(j.at("version") == 8);
+    CHECK(j.at("version") == 9);
     CHECK(j.at("visible_first").is_boolean());
     const json& rc = j.at("result_cache");
     CHECK(rc.at("on").is_boolean());

@@ -144,3 +144,31 @@ TEST_CASE("screenSphere: glm::lookAt / glm::perspective camera within 8 ulp of a
   }
   CHECK(compared > 200);
 }
+
+TEST_CASE("screenSphere: sphere_centre around_quad_scaled moves the sphere and is sensitive to a fused product",
+          "[lod][screen_sphere]") {
+  // The negative control of --gpu-float (lod.sphere_centre = "around_quad_scaled"): the centre (from * 3 + to * 3) /
+  // 6 is not the midpoint's bits, so the factors differ from the default's on some cameras (the field is used); and
+  // on these displaced corners a compiler that fuses one product into the add, fma(from, 3, to * 3), gets different
+  // bits from the two sides (which pass the ends in opposite orders), so the control has something to find.
+  const Patch a = lodtest::terrainPatch(-4.0f, -4.0f, 8.0f, true);
+  ScreenSphereParams around;
+  around.sphereCentre = SphereCentre::AroundQuadScaled;
+  around.minFactor = 0.0f;
+  around.maxFactor = 1e30f;
+  ScreenSphereParams half = around;
+  half.sphereCentre = SphereCentre::HalfSum;
+  int differ = 0;
+  for (int i = 0; i < 50; ++i) {
+    const Camera cam = lodtest::sweepCamera(i);
+    const PatchLod ra = screenSphere(a, cam, around), rh = screenSphere(a, cam, half);
+    for (int k = 0; k < 4; ++k) differ += bitsOf(ra.factors[k]) != bitsOf(rh.factors[k]) ? 1 : 0;
+  }
+  CHECK(differ > 0);
+  // Veq0 passes c0 -> c1; the patch across it (its Veq1) passes the same two points c1 -> c0.
+  const float p = a.corners[0].y, q = a.corners[1].y;
+  const float sideA = std::fma(p, 3.0f, q * 3.0f), sideB = std::fma(q, 3.0f, p * 3.0f);
+  INFO("heights " << hex(p) << ", " << hex(q) << ": fused " << hex(sideA) << " / " << hex(sideB));
+  CHECK(bitsOf(p * 3.0f + q * 3.0f) == bitsOf(q * 3.0f + p * 3.0f));
+  CHECK(bitsOf(sideA) != bitsOf(sideB));
+}

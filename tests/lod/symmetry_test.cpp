@@ -81,6 +81,15 @@ TEST_CASE("symmetry: shared edges get bitwise the same factor in every scheme", 
     return bonaventura(p, c, q);
   });
   checkShared("clipDiameter", [](const Patch& p, const Camera& c) { return clipDiameter(p, c); });
+  // --gpu-float's negative control: the two sides add the same two rounded products in opposite orders (the same
+  // bits in the C++ build; tests/lod/screen_sphere_test.cpp shows that a fused product would not be).
+  ScreenSphereParams around;
+  around.sphereCentre = SphereCentre::AroundQuadScaled;
+  checkShared("screenSphere around_quad_scaled", [around](const Patch& p, const Camera& c) { return screenSphere(p, c, around); });
+  NvidiaTileParams aroundTile;
+  aroundTile.sphere = around;
+  checkShared("nvidiaTile around_quad_scaled",
+              [aroundTile](const Patch& p, const Camera& c) { return nvidiaTile(p, TileNeighbours{}, c, aroundTile); });
   checkShared("geomorph", [](const Patch& p, const Camera& c) {
     // Levels from the patch and its neighbours across each edge (shifted by the patch's own edge vectors, so the
     // mirrored patch finds its neighbours too); the shared edge takes the min of the two levels.

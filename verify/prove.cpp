@@ -1,0 +1,248 @@
+// fftess prove (verify/prove.h): branch and bound over a region of cameras. Regions are evaluated on a pool of
+// threads (each with its own BoundContext and edge cache) from a shared depth-first stack; a region that is not
+// decided is split in two along its widest coordinate (relative to the root's width). The root, every suspect region
+// (a pair's factors give a mismatch, a patch may be discarded on screen) and every undecided leaf are sampled: their
+// centre camera and their simplest camera go through the full check (checkScene), and an on-screen finding or a hole
+// there is the counterexample.
+#include "verify/prove.h"
+#include "verify/prove_internal.h"
+#include "verify/sweep.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <condition_variable>
+#include <mutex>
+#include <thread>
+
+namespace fftess::verify {
+
+const char* toString(ProveVerdict v) {
+  switch (v) {
+  case ProveVerdict::Proved: return "PROVED";
+  case ProveVerdict::Counterexample: return "COUNTEREXAMPLE";
+  case ProveVerdict::Undecided: return "UNDECIDED";
+  }
+  return "UNDECIDED";
+}
+
+CameraRegion defaultRegion(const Terrain& terrain) {
+  const Extent& e = terrain.extent();
+  float lowY = 0, highY = 0;
+  bool first = true;
+  for (const detail::TerrainPatch& p : terrain.data().patches) {
+    const float lo = std::min({p.surfaceMinY, p.corners[0].y, p.lod.corners[0].y});
+    const float hi = std::max({p.surfaceMaxY, p.corners[0].y, p.lod.corners[0].y});
+    lowY = first ? lo : std::min(lowY, lo);
+    highY = first ? hi : std::max(highY, hi);
+    first = false;
+  }
+  const float side = std::max(e.maxX - e.minX, e.maxZ - e.minZ);
+  CameraRegion r;
+  r.eyeLo = glm::vec3(e.minX, highY + 1.0f, e.minZ);
+  r.eyeHi = glm::vec3(e.maxX, highY + 0.25f * side, e.maxZ);
+  r.targetLo = glm::vec3(e.minX, lowY, e.minZ);
+  r.targetHi = glm::vec3(e.maxX, highY, e.maxZ);
+  return r;
+}
+
+namespace {
+
+using detail::RegionOutcome;
+
+float& coord(CameraRegion& r, int d, bool hi) {
+  glm::vec3& v = d < 3 ? (hi ? r.eyeHi : r.eyeLo) : (hi ? r.targetHi : r.targetLo);
+  return v[d % 3];
+}
+float coord(const CameraRegion& r, int d, bool hi) { return coord(const_cast<CameraRegion&>(r), d, hi); }
+
+// The float in [lo, hi] with the fewest significant bits: 0 when inside, else the coarsest multiple of a power of two.
+float simplest(float lo, float hi) {
+  if (lo <= 0 && hi >= 0) return 0.0f;
+  const double a = lo, b = hi;
+  for (int k = 128; k >= -149; --k) {
+    const double step = std::ldexp(1.0, k);
+    const double m = std::ceil(a / step) * step;
+    if (m <= b) return static_cast<float>(m);
+  }
+  return lo;
+}
+
+float centre(float lo, float hi) { return static_cast<float>((static_cast<double>(lo) + hi) * 0.5); }
+
+std::string validate(const Terrain& terrain, const CameraRegion& r) {
+  const Scene& s = terrain.scene();
+  if (!s.lod.shader.empty()) return "lod.shader: a user shader is not compiled with Bounds; prove covers the built-in schemes";
+  if (s.lod.evaluate == LodEvaluate::Gpu) return "lod.evaluate = \"gpu\": prove evaluates lod/'s C++ build over Bounds; use \"cpu\"";
+  if (s.lod.scheme == LodScheme::Geomorph) return "lod.scheme = \"geomorph\": not compiled with Bounds (its levels are integers)";
+  if (s.layout.kind == LayoutKind::Quadtree || terrain.cameraDependent() || !terrain.data().tree)
+    return "layout.kind = \"quadtree\": the layout depends on the camera; prove covers static layouts";
+  const std::vector<std::string> effects = cameraDependentEffects(s);
+  if (!effects.empty()) return "camera-dependent effect: " + effects.front();
+  for (int d = 0; d < 6; ++d) {
+    const float lo = coord(r, d, false), hi = coord(r, d, true);
+    if (!std::isfinite(lo) || !std::isfinite(hi) || !(lo <= hi)) return "the region: each coordinate needs finite lo <= hi";
+  }
+  return {};
+}
+
+bool isCounterexample(const Report& rep) {
+  if (!rep.error.empty()) return false;
+  if (rep.stats.holes > 0) return true;
+  for (const Finding& f : rep.findings)
+    if (f.classification != Classification::Match && f.onScreen) return true;
+  return false;
+}
+
+struct Item {
+  CameraRegion region;
+  int depth = 0;
+};
+
+struct Prover {
+  const Terrain& terrain;
+  const ProveOptions& o;
+  ProveReport& rep;
+  float rootWidth[6] = {};
+  std::mutex m;
+  std::condition_variable cv;
+  std::vector<Item> stack;
+  int busy = 0;
+  bool stop = false;
+
+  // The dimension to split (-1: none can be split).
+  int splitDimension(const CameraRegion& r) const {
+    int best = -1;
+    double bestWidth = 0;
+    for (int d = 0; d < 6; ++d) {
+      if (!(rootWidth[d] > 0)) continue;
+      const float lo = coord(r, d, false), hi = coord(r, d, true), mid = centre(lo, hi);
+      if (!(mid > lo && mid < hi)) continue;
+      const double w = (static_cast<double>(hi) - lo) / rootWidth[d];
+      if (w > bestWidth) best = d, bestWidth = w;
+    }
+    return best;
+  }
+
+  Camera cameraAt(const CameraRegion& r, bool simple) const {
+    Camera c = terrain.scene().camera;
+    for (int d = 0; d < 6; ++d) {
+      const float lo = coord(r, d, false), hi = coord(r, d, true);
+      (d < 3 ? c.eye : c.target)[d % 3] = simple ? simplest(lo, hi) : centre(lo, hi);
+    }
+    return c;
+  }
+
+  // The region's sampled cameras through the full check; true when one is a counterexample (recorded).
+  bool sample(const CameraRegion& r) {
+    const int count = std::min(2, std::max(0, o.samplesPerRegion)); // the centre, then the simplest camera
+    CheckOptions co;
+    co.kernel = o.kernel;
+    for (int k = 0; k < count; ++k) {
+      const Camera c = cameraAt(r, k == 1);
+      Report cr = checkScene(terrain, c, co);
+      std::lock_guard<std::mutex> lock(m);
+      ++rep.stats.camerasChecked;
+      if (isCounterexample(cr) && rep.verdict != ProveVerdict::Counterexample) {
+        rep.verdict = ProveVerdict::Counterexample;
+        rep.counterexample = c;
+        rep.counterexampleReport = std::move(cr);
+        stop = true;
+        return true;
+      }
+    }
+    return false;
+  }
+
+  void undecided(const Item& it, const std::string& reason) { // under m
+    ++rep.stats.regionsUndecided;
+    if (rep.undecided.size() < o.maxUndecidedListed) rep.undecided.push_back({it.region, it.depth, reason});
+  }
+
+  void finish(const Item& it, const detail::RegionResult& r) {
+    std::lock_guard<std::mutex> lock(m);
+    ProveStats& s = rep.stats;
+    s.pairsByTrace += r.pairsByTrace;
+    s.pairsByValue += r.pairsByValue;
+    s.pairsOffScreen += r.pairsOffScreen;
+    s.patchesOffScreen += r.patchesOffScreen;
+    s.lodPaths += r.lodPaths;
+    s.maxDepthReached = std::max(s.maxDepthReached, it.depth);
+    if (r.outcome == RegionOutcome::Decided) {
+      ++s.regionsProved;
+      return;
+    }
+    const int d = it.depth < o.maxDepth ? splitDimension(it.region) : -1;
+    if (d < 0) {
+      undecided(it, (it.depth >= o.maxDepth ? "maximum depth: " : "cannot split further: ") + r.why);
+      return;
+    }
+    Item a = it, b = it;
+    const float mid = centre(coord(it.region, d, false), coord(it.region, d, true));
+    coord(a.region, d, true) = mid;
+    coord(b.region, d, false) = mid;
+    a.depth = b.depth = it.depth + 1;
+    stack.push_back(b);
+    stack.push_back(a); // depth first: the lower half next
+  }
+
+  void worker() {
+    const detail::TerrainData& t = terrain.data();
+    detail::ProveScratch scratch(t, o.maxPaths);
+    std::vector<uint8_t> seams(t.tree->allPairs.size(), 0);
+    for (;;) {
+      Item it;
+      {
+        std::unique_lock<std::mutex> lock(m);
+        cv.wait(lock, [&] { return stop || !stack.empty() || busy == 0; });
+        if (o.cancel && o.cancel->load()) stop = true;
+        if (rep.stats.regions >= o.maxRegions) stop = true;
+        if (stop || stack.empty()) {
+          cv.notify_all();
+          return;
+        }
+        it = stack.back();
+        stack.pop_back();
+        ++busy;
+        ++rep.stats.regions;
+      }
+      const detail::RegionResult r = detail::evaluateRegion(t, it.region, scratch, seams);
+      const bool leaf = r.outcome != RegionOutcome::Decided && (it.depth >= o.maxDepth || splitDimension(it.region) < 0);
+      if (it.depth == 0 || r.outcome == RegionOutcome::Suspect || leaf) sample(it.region);
+      finish(it, r);
+      {
+        std::lock_guard<std::mutex> lock(m);
+        --busy;
+      }
+      cv.notify_all();
+    }
+  }
+};
+
+} // namespace
+
+ProveReport proveScene(const Terrain& terrain, const ProveOptions& options) {
+  const auto t0 = std::chrono::steady_clock::now();
+  ProveReport rep;
+  rep.regionDefault = !options.regionGiven;
+  rep.region = options.regionGiven ? options.region : defaultRegion(terrain);
+  rep.error = validate(terrain, rep.region);
+  if (!rep.error.empty()) return rep;
+  Prover p{terrain, options, rep};
+  for (int d = 0; d < 6; ++d) p.rootWidth[d] = coord(rep.region, d, true) - coord(rep.region, d, false);
+  p.stack.push_back({rep.region, 0});
+  int threads = options.threads > 0 ? options.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  std::vector<std::thread> pool;
+  for (int k = 1; k < threads; ++k) pool.emplace_back([&p] { p.worker(); });
+  p.worker();
+  for (std::thread& th : pool) th.join();
+  if (rep.verdict != ProveVerdict::Counterexample) {
+    for (const Item& it : p.stack)
+      p.undecided(it, options.cancel && options.cancel->load() ? "cancelled" : "maximum regions reached");
+    rep.verdict = rep.stats.regionsUndecided > 0 ? ProveVerdict::Undecided : ProveVerdict::Proved;
+  }
+  rep.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return rep;
+}
+
+} // namespace fftess::verify
