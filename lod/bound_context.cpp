@@ -228,14 +228,30 @@ uint32_t BoundContext::firstDifference(uint32_t a, uint32_t b, uint32_t* otherSi
   const Impl& s = *impl_;
   if (otherSide) *otherSide = 0;
   if (a == b) return 0;
-  // Descend while both sides are the same operation and exactly one operand differs.
+  // Descend while both sides are the same operation: into the one operand that differs, or, when both differ, into
+  // the first pair, unless the two operands are the same two values swapped (an operand order that matters, e.g. a
+  // product fused into an add on one side and not on the other: that node is the difference).
   while (a < s.nodes.size() && b < s.nodes.size() && a != 0 && b != 0) {
     const bound::Node& x = s.nodes[a];
     const bound::Node& y = s.nodes[b];
     if (x.op != y.op || operandCount(x) == 0) break;
     const bool firstDiffers = x.a != y.a;
     const bool secondDiffers = operandCount(x) == 2 && x.b != y.b;
-    if (firstDiffers == secondDiffers) break;
+    if (!firstDiffers && !secondDiffers) break;
+    if (firstDiffers && secondDiffers) {
+      if (x.a == y.b && x.b == y.a) break;
+      // One operand shared crosswise (a commutative operation keeps its operands in node order): follow the other.
+      if (x.a == y.b || x.b == y.a) {
+        const uint32_t na = x.a == y.b ? x.b : x.a;
+        b = x.a == y.b ? y.a : y.b;
+        a = na;
+        continue;
+      }
+      // Both differ: follow the first pair only when each pair is the same kind of operation (mul(px, px) against
+      // mul(px', px')); a commutative operation whose sorted operands no longer pair up stops here.
+      const auto opOf = [&](uint32_t n) { return n < s.nodes.size() ? s.nodes[n].op : 0u; };
+      if (opOf(x.a) != opOf(y.a) || opOf(x.b) != opOf(y.b)) break;
+    }
     a = firstDiffers ? x.a : x.b;
     b = firstDiffers ? y.a : y.b;
   }

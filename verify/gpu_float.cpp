@@ -121,7 +121,8 @@ void GpuFloatChecker::pair(size_t ia, int e, size_t ib, const std::vector<lod::P
   const bool complete = context_->forEachPath([&] {
     const lod::BoundPatchLod la = patchLodBound(t_, A, *camera_);
     const lod::BoundPatchLod lb = patchLodBound(t_, B, *camera_);
-    runs.push_back(PairRun{la.factors[e], lb.factors[eb], la.culled, lb.culled});
+    // Read as the run's answers narrow them (after the shader's clamps: lod/bound.h, BoundContext::narrowed).
+    runs.push_back(PairRun{context_->narrowed(la.factors[e]), context_->narrowed(lb.factors[eb]), la.culled, lb.culled});
   });
   const float fa = factors[ia].factors[e], fb = factors[ib].factors[eb];
   GpuFloatFinding g;

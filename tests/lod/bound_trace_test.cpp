@@ -159,6 +159,12 @@ TEST_CASE("Bound trace: describe and firstDifference name the operation where tw
   REQUIRE(other == right.node);
   REQUIRE(ctx.describe(left.node) == "add~fma(mul~gpu(input 1 [1, 2], 3 (0x40400000)), mul~gpu(input 2 [3, 4], 3 "
                                      "(0x40400000)))");
+  // Deeper in a computation whose every operand differs (the negative control's px * px + py * py over centres
+  // summed in opposite orders), the walk follows the first pair down to the swapped add.
+  const Bound deepLeft = sqrt(left * left + left * Bound(2.0f));
+  const Bound deepRight = sqrt(right * right + right * Bound(2.0f));
+  REQUIRE(ctx.firstDifference(deepLeft.node, deepRight.node, &other) == left.node);
+  REQUIRE(other == right.node);
   // Under Cpp the two orders are one node (a + b is b + a bit for bit without contraction).
   BoundContext cpp(FloatModel::Cpp);
   BoundContext::Scope cppScope(cpp);
