@@ -379,6 +379,10 @@ std::string statsText(const vf::Stats& s, bool countOffScreen) {
     o += "  gpu float      " + std::to_string(s.gpuFloatPairs) +
          " matching pairs evaluated under a conformant GPU compiler's choices (--gpu-float conformant), " +
          std::to_string(s.gpuFloatFindings) + " may crack on some GPUs\n";
+  if (s.gpuModelFactors > 0)
+    o += "  gpu model      " + std::to_string(s.gpuModelFactors) +
+         " GPU factors checked against the conformant model of the scheme, " + std::to_string(s.gpuModelOutside) +
+         " outside it\n";
   const int64_t counted = countOffScreen ? s.cracks : s.cracksOnScreen();
   const bool differ = fmtWorld(s.worstGapWorld) != fmtWorld(s.worstGapWorldOnScreen) ||
                       fmtWorld(s.worstGapPixels) != fmtWorld(s.worstGapPixelsOnScreen); // as printed

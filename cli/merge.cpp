@@ -80,6 +80,8 @@ vf::Stats statsOf(const json& j) {
   s.edgesOffScreen = j.at("edges_off_screen");
   s.gpuFloatPairs = j.value("gpu_float_pairs", int64_t(0));
   s.gpuFloatFindings = j.value("gpu_float_findings", int64_t(0));
+  s.gpuModelFactors = j.value("gpu_model_factors", int64_t(0));
+  s.gpuModelOutside = j.value("gpu_model_outside", int64_t(0));
   return s;
 }
 

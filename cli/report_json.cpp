@@ -101,7 +101,8 @@ json statsJson(const vf::Stats& s) {
           {"worst_gap_world_on_screen", s.worstGapWorldOnScreen},
           {"worst_gap_pixels_on_screen", s.worstGapPixelsOnScreen}, {"undecided", s.undecided},
           {"patches_off_screen", s.patchesOffScreen}, {"edges_off_screen", s.edgesOffScreen},
-          {"gpu_float_pairs", s.gpuFloatPairs}, {"gpu_float_findings", s.gpuFloatFindings}};
+          {"gpu_float_pairs", s.gpuFloatPairs}, {"gpu_float_findings", s.gpuFloatFindings},
+          {"gpu_model_factors", s.gpuModelFactors}, {"gpu_model_outside", s.gpuModelOutside}};
 }
 
 json gpuFloatJson(const vf::GpuFloatFinding& g) {

@@ -573,6 +573,7 @@ Report checkTerrain(const TerrainData& prepared, const Camera& camera, const Che
   std::unique_ptr<GpuFloatChecker> gpu; // CheckOptions::gpuFloat (the cli refuses the scenes gpuFloatRefusal names)
   if (options.gpuFloat == GpuFloat::Conformant && (rep.error = gpuFloatRefusal(t.scene)).empty())
     gpu = std::make_unique<GpuFloatChecker>(t, camera);
+  if (gpu && usesGpu(t.scene)) gpu->model(cache.factors, need, rep); // the GPU's factors against the model
   if (!rep.error.empty()) return rep;
   const CameraCheck c{t, camera, options, fault, cache.factors, view, domainCam, frustum, cache, rep, need, memo,
                       gpu.get()};

@@ -149,6 +149,11 @@ struct Stats {
   // match depends on a compiler's choice (GpuFloatFinding).
   int64_t gpuFloatPairs = 0;
   int64_t gpuFloatFindings = 0;
+  // The GPU path (lod.evaluate = "gpu") under CheckOptions::gpuFloat: the GPU's factors checked against the
+  // conformant model of the scene's built-in scheme (the union of lod/lod_bound.h's runs for the patch and camera),
+  // and those outside it (a driver beyond the GLSL spec's bounds, or a model that is too narrow: never expected).
+  int64_t gpuModelFactors = 0;
+  int64_t gpuModelOutside = 0;
   int64_t cracksOnScreen() const { return cracks - cracksOffScreen; }
   int64_t tJunctionsOnScreen() const { return tJunctions - tJunctionsOffScreen; }
 };

@@ -89,9 +89,6 @@ std::string gpuFloatRefusal(const Scene& s) {
   if (!s.lod.shader.empty())
     return "--gpu-float conformant: lod.shader is a user shader; the GPU float model covers lod/'s built-in schemes only "
            "(lod/lod_bound.h)";
-  if (s.lod.evaluate == LodEvaluate::Gpu)
-    return "--gpu-float conformant: lod.evaluate = \"gpu\" takes the factors from a GPU; the GPU float model evaluates "
-           "lod/'s C++ build (lod.evaluate = \"cpu\")";
   if (s.lod.scheme == LodScheme::Geomorph)
     return "--gpu-float conformant: lod.scheme = \"geomorph\" is not compiled with the GPU float model (its levels "
            "convert floats to ints; lod/lod_bound.h)";
@@ -173,6 +170,33 @@ void GpuFloatChecker::pair(size_t ia, int e, size_t ib, const std::vector<lod::P
                      : "compute the frustum test and the factor from the edge's ends in the same operation order on "
                        "both sides, or declare them precise";
   rep.gpuFloat.push_back(std::move(g));
+}
+
+void GpuFloatChecker::model(const std::vector<lod::PatchLod>& gpu, const std::vector<char>* need, Report& rep) {
+  for (size_t i = 0; i < t_.patches.size() && i < gpu.size(); ++i) {
+    if (need && !(*need)[i]) continue;
+    lod::Bound u[6];
+    bool any = false;
+    const bool complete = context_->forEachPath([&] {
+      const lod::BoundPatchLod l = patchLodBound(t_, t_.patches[i], *camera_);
+      for (int k = 0; k < 6; ++k) {
+        const lod::Bound f = context_->narrowed(l.factors[k]);
+        if (!any) {
+          u[k] = f;
+          continue;
+        }
+        u[k].lo = std::min(u[k].lo, f.lo);
+        u[k].hi = std::max(u[k].hi, f.hi);
+        u[k].nan = u[k].nan || f.nan;
+      }
+      any = true;
+    });
+    if (!complete || !any) continue;
+    for (int k = 0; k < 6; ++k) {
+      ++rep.stats.gpuModelFactors;
+      if (!u[k].contains(gpu[i].factors[k])) ++rep.stats.gpuModelOutside;
+    }
+  }
 }
 
 } // namespace fftess::verify::detail

@@ -420,6 +420,10 @@ public:
   // conformant compiler's choices, Stats::gpuFloatFindings and a Report::gpuFloat entry (at most maxFindings kept).
   void pair(size_t ia, int e, size_t ib, const std::vector<lod::PatchLod>& factors, EdgeCache& cache,
             size_t maxFindings, Report& rep);
+  // The GPU path (lod.evaluate = "gpu"): each factor the GPU returned (gpu, in patch order; need: visible first's
+  // patches, null: all) against the union of the conformant runs' sets for its patch: Stats::gpuModelFactors,
+  // gpuModelOutside. A patch whose runs exceed maxPaths is not counted.
+  void model(const std::vector<lod::PatchLod>& gpu, const std::vector<char>* need, Report& rep);
 
 private:
   const TerrainData& t_;

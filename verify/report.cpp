@@ -27,6 +27,8 @@ void accumulate(Stats& s, const Stats& c) {
   s.edgesOffScreen += c.edgesOffScreen;
   s.gpuFloatPairs += c.gpuFloatPairs;
   s.gpuFloatFindings += c.gpuFloatFindings;
+  s.gpuModelFactors += c.gpuModelFactors;
+  s.gpuModelOutside += c.gpuModelOutside;
   s.worstGapWorld = std::max(s.worstGapWorld, c.worstGapWorld);
   s.worstGapPixels = std::max(s.worstGapPixels, c.worstGapPixels);
   s.cracksOffScreen += c.cracksOffScreen;

@@ -86,3 +86,65 @@ TEST_CASE("gpu float: a geomorph scene is refused with a reason, for every camer
   const Report r = checkScene(prepared(scene), scene.camera, o);
   CHECK(r.error == gpuFloatRefusal(scene));
 }
+
+namespace {
+
+// A stand-in for the GPU path: the C++ build's screen-sphere factors, each edge factor the clamp did not set moved by
+// `ulps` float steps up (a driver's division and sqrt within the spec's bounds), or one factor of one patch set to
+// `far` (a driver outside any bound).
+struct ModelStandIn : FactorProvider {
+  int ulps = 0;
+  int patch = -1;
+  float far = 0.0f;
+  bool evaluate(const LodPatches& patches, const fftess::lod::Camera& camera, std::vector<fftess::lod::PatchLod>& out,
+                std::string&) override {
+    out.resize(patches.size());
+    for (size_t i = 0; i < patches.size(); ++i) {
+      out[i] = fftess::lod::screenSphere(patches[i].patch, camera, patches.scene().lod.screenSphere.sphere);
+      for (int e = 0; e < 4; ++e) {
+        float& f = out[i].factors[e];
+        if (!(f > 1.0f && f < 64.0f)) continue; // a clamp's or the cull's value is exact on any GPU
+        for (int k = 0; k < ulps; ++k) f = std::nextafter(f, 1e30f);
+      }
+    }
+    if (patch >= 0) out[static_cast<size_t>(patch)].factors[0] = far;
+    return true;
+  }
+};
+
+} // namespace
+
+TEST_CASE("gpu float: on the GPU path every factor is checked against the conformant model, and one far off is outside",
+          "[verify][gpu_float]") {
+  // grid.toml's screen sphere on the GPU path (lod.evaluate = "gpu"): a driver that returns the C++ build's bits, or
+  // moves every unclamped edge factor by 2 ulps (inside the spec's division and sqrt bounds), stays inside the model;
+  // a factor of 1000 is outside it. The pair analysis runs as on the CPU path.
+  const Scene scene = loadExample("grid.toml", {"lod.scheme=screen_sphere", "lod.evaluate=gpu"});
+  const Terrain t = prepared(scene);
+  auto run = [&](int ulps, int patch, float far) {
+    auto p = std::make_shared<ModelStandIn>();
+    p->ulps = ulps;
+    p->patch = patch;
+    p->far = far;
+    CheckOptions o;
+    o.gpuFloat = GpuFloat::Conformant;
+    o.factors = p;
+    return checkScene(t, scene.camera, o);
+  };
+  const Report same = run(0, -1, 0.0f);
+  REQUIRE(same.error.empty());
+  CHECK(same.stats.gpuModelFactors == 6 * same.stats.patches);
+  CHECK(same.stats.gpuModelOutside == 0);
+  CHECK(same.stats.gpuFloatPairs > 0);
+  const Report moved = run(2, -1, 0.0f);
+  CHECK(moved.stats.factorDiffs > 0); // the stand-in did move factors
+  CHECK(moved.stats.gpuModelOutside == 0);
+  const Report off = run(0, 5, 1000.0f);
+  CHECK(off.stats.gpuModelFactors == same.stats.gpuModelFactors);
+  CHECK(off.stats.gpuModelOutside == 1);
+  // Off: nothing is evaluated.
+  auto p = std::make_shared<ModelStandIn>();
+  CheckOptions plain;
+  plain.factors = p;
+  CHECK(checkScene(t, scene.camera, plain).stats.gpuModelFactors == 0);
+}
