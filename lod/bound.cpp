@@ -61,6 +61,19 @@ Bound mulSet(const Bound& a, const Bound& b) {
   return fromCandidates(v, 4, nan);
 }
 
+// x * x for one value x (both operands the same node): never negative, and NaN only from a NaN x (0 * Inf needs two
+// values). The set is the squares of x's set: [0 or the smaller square, the larger square], each square a correctly
+// rounded float product (monotone in |x|).
+Bound squareSet(const Bound& x) {
+  if (!x.hasValues()) return nanOnly();
+  if (x.point()) {
+    const float p = x.lo * x.lo;
+    return makeSet(p, p, x.nan);
+  }
+  const float a = x.lo * x.lo, b = x.hi * x.hi;
+  return makeSet(hasZero(x) ? 0.0f : std::min(a, b), std::max(a, b), x.nan);
+}
+
 Bound divSet(const Bound& a, const Bound& b) {
   bool nan = a.nan || b.nan;
   if (!a.hasValues() || !b.hasValues()) return nanOnly();
@@ -193,7 +206,7 @@ Bound operator*(const Bound& a, const Bound& b) {
     flushDenormals(x);
     flushDenormals(y);
   }
-  r = mulSet(x, y);
+  r = na == nb && na != 0 ? squareSet(x) : mulSet(x, y); // the same value times itself: a square, never negative
   if (conf) flushDenormals(r);
   if (c == nullptr) return r;
   finish(c, r, key.op, na, nb, true);

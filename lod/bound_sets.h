@@ -141,6 +141,7 @@ Bound fromCandidates(const float* v, int n, bool nan);
 Bound addSet(const Bound& a, const Bound& b);
 Bound negSet(const Bound& a);
 Bound mulSet(const Bound& a, const Bound& b);
+Bound squareSet(const Bound& x);
 Bound divSet(const Bound& a, const Bound& b);
 Bound sqrtSet(const Bound& x);
 Bound fusedSum(const Bound& p, const Bound& other);

@@ -381,3 +381,27 @@ TEST_CASE("Bound: a result that may be -0 or +0 is not a point, a zero of known 
   REQUIRE(negative.point());
   REQUIRE(std::signbit(negative.lo));
 }
+
+TEST_CASE("Bound square: a value times itself is never negative, and every float square of the set is inside",
+          "[lod][bound]") {
+  // One node times itself is x * x for one x (the shader's px * px): the set is the squares, not the products of two
+  // independent values of the set (which would reach -6 for [-2, 3]).
+  for (FloatModel m : {FloatModel::Cpp, FloatModel::Conformant}) {
+    BoundContext ctx(m);
+    BoundContext::Scope scope(ctx);
+    const Bound x = Bound::input(-2.0f, 3.0f, 1);
+    const Bound s = x * x;
+    CHECK(s.lo == 0.0f);
+    CHECK(s.hi >= 9.0f);
+    CHECK_FALSE(s.nan);
+    const Bound y = Bound::input(0.5f, 3.0f, 2);
+    const Bound t = y * y;
+    CHECK(t.lo <= 0.25f);
+    CHECK(t.lo > 0.0f);
+    // Two different nodes with the same set stay independent.
+    const Bound z = Bound::input(-2.0f, 3.0f, 3);
+    CHECK((x * z).lo <= -6.0f);
+    // Every float square of sampled values of [-2, 3] is inside.
+    for (float v = -2.0f; v <= 3.0f; v += 0.0078125f) CHECK(s.contains(v * v));
+  }
+}
