@@ -13,99 +13,11 @@
 
 #include "lod/bound.h"
 #include "lod/bound_internal.h"
+#include "lod/bound_sets.h"
 
 namespace fftess::lod {
 
-namespace {
-
-using bound::activeImpl;
-using bound::nodeOf;
-using Impl = BoundContext::Impl;
-
-constexpr float kInf = std::numeric_limits<float>::infinity();
-constexpr float kMinNormal = 0x1p-126f;
-
-uint32_t bitsOf(float x) {
-  uint32_t u;
-  std::memcpy(&u, &x, sizeof u);
-  return u;
-}
-
-Bound makeSet(float lo, float hi, bool nan) {
-  Bound r{};
-  r.lo = lo;
-  r.hi = hi;
-  r.nan = nan;
-  return r;
-}
-
-Bound nanOnly() { return makeSet(kInf, -kInf, true); }
-
-bool hasInf(const Bound& x) { return x.hasValues() && (x.lo == -kInf || x.hi == kInf); }
-bool hasZero(const Bound& x) { return x.lo <= 0.0f && x.hi >= 0.0f; }
-
-// The largest float <= d, the smallest float >= d (d not NaN; beyond the float range: +-FLT_MAX or +-Inf).
-float down(double d) {
-  float f = static_cast<float>(d);
-  if (static_cast<double>(f) > d) f = std::nextafter(f, -kInf);
-  return f;
-}
-float up(double d) {
-  float f = static_cast<float>(d);
-  if (static_cast<double>(f) < d) f = std::nextafter(f, kInf);
-  return f;
-}
-
-// The float ulp at magnitude |v| (v a double, possibly beyond the float range): 2^(e - 23) for |v| in the binade
-// [2^e, 2^(e+1)), 2^-149 below 2^-126; Inf for Inf.
-double ulpD(double v) {
-  const double a = std::fabs(v);
-  if (std::isinf(a)) return a;
-  if (a < 0x1p-126) return 0x1p-149;
-  return std::ldexp(1.0, std::ilogb(a) - 23);
-}
-
-// [vlo - k ulps, vhi + k ulps], rounded outward to float.
-Bound widened(double vlo, double vhi, double k, bool nan) {
-  const double l = vlo - k * ulpD(vlo);
-  const double h = vhi + k * ulpD(vhi);
-  return makeSet(std::isnan(l) ? -kInf : down(l), std::isnan(h) ? kInf : up(h), nan);
-}
-
-// Widens a float set by k ulps of each bound (the GPU's error beyond the correctly rounded result).
-Bound widenUlps(const Bound& x, double k) {
-  if (!x.hasValues()) return x;
-  return widened(x.lo, x.hi, k, x.nan);
-}
-
-Bound unite(const Bound& a, const Bound& b) {
-  return makeSet(std::min(a.lo, b.lo), std::max(a.hi, b.hi), a.nan || b.nan);
-}
-
-// Conformant: a denormal may be read or written as 0 (of either sign).
-void flushDenormals(Bound& x) {
-  if (x.hasValues() && x.lo < kMinNormal && x.hi > -kMinNormal) {
-    x.lo = std::min(x.lo, 0.0f);
-    x.hi = std::max(x.hi, 0.0f);
-  }
-}
-
-bool conformant(const Impl* c) { return c != nullptr && c->evalModel == FloatModel::Conformant; }
-uint32_t modelBit(const Impl* c) { return conformant(c) ? bound::kConformantBit : 0u; }
-
-// The result's node: a point is the constant of its bits; otherwise (op, operands), or a fresh node when an operand
-// is untraced.
-void finish(Impl* c, Bound& r, uint32_t op, uint32_t na, uint32_t nb, bool binary) {
-  if (c == nullptr) {
-    r.node = 0;
-  } else if (r.point()) {
-    r.node = c->constant(r.lo);
-  } else if (na == 0 || (binary && nb == 0)) {
-    r.node = c->fresh();
-  } else {
-    r.node = c->intern(bound::Node{op, na, nb, 0});
-  }
-}
+namespace bound {
 
 // ---- sets (no trace) ---------------------------------------------------------------------------------------------
 
@@ -118,8 +30,8 @@ Bound fromCandidates(const float* v, int n, bool nan) {
       nan = true;
       continue;
     }
-    lo = std::min(lo, v[i]);
-    hi = std::max(hi, v[i]);
+    lo = lower(lo, v[i]);
+    hi = upper(hi, v[i]);
   }
   return makeSet(lo, hi, nan);
 }
@@ -181,10 +93,16 @@ Bound fusedSum(const Bound& p, const Bound& other) {
   const double phi = static_cast<double>(p.hi) + 0.5 * ulpD(p.hi);
   const double l = plo + static_cast<double>(other.lo);
   const double h = phi + static_cast<double>(other.hi);
-  const float lo = std::isnan(l) ? -kInf : std::nextafter(down(l), -kInf);
-  const float hi = std::isnan(h) ? kInf : std::nextafter(up(h), kInf);
+  const float lo = std::isnan(l) ? -kInf : stepDown(down(l));
+  const float hi = std::isnan(h) ? kInf : stepUp(up(h));
   return makeSet(lo, hi, p.nan || other.nan || std::isnan(l) || std::isnan(h));
 }
+
+} // namespace bound
+
+namespace {
+
+using namespace bound;
 
 // ---- traced operations -------------------------------------------------------------------------------------------
 
@@ -192,28 +110,29 @@ Bound fusedSum(const Bound& p, const Bound& other) {
 Bound addOrSub(const Bound& a, const Bound& b, bool negateB) {
   Impl* c = activeImpl();
   const bool conf = conformant(c);
+  uint32_t flags = 0;
+  if (conf && a.product != 0) flags |= bound::kFuseA;
+  if (conf && b.product != 0) flags |= bound::kFuseB;
+  uint32_t na = flags & bound::kFuseA ? a.product : nodeOf(c, a);
+  uint32_t nb = flags & bound::kFuseB ? b.product : nodeOf(c, b);
+  if (!negateB && flags == 0 && na > nb) std::swap(na, nb); // a + b == b + a bit for bit (not once fused)
+  const Node key{(negateB ? bound::kSub : bound::kAdd) | flags | modelBit(c), na, nb, 0};
+  const bool memo = worthKeeping(c, a, b);
+  Bound r;
+  if (memo && recalled(c, key, true, r)) return r;
   Bound x = a;
   Bound y = negateB ? negSet(b) : b;
   if (conf) {
     flushDenormals(x);
     flushDenormals(y);
   }
-  Bound r = addSet(x, y);
-  uint32_t flags = 0;
-  if (conf && a.product != 0) {
-    r = unite(r, fusedSum(x, y));
-    flags |= bound::kFuseA;
-  }
-  if (conf && b.product != 0) {
-    r = unite(r, fusedSum(y, x));
-    flags |= bound::kFuseB;
-  }
+  r = addSet(x, y);
+  if (flags & bound::kFuseA) r = unite(r, fusedSum(x, y));
+  if (flags & bound::kFuseB) r = unite(r, fusedSum(y, x));
   if (conf) flushDenormals(r);
   if (c == nullptr) return r;
-  uint32_t na = flags & bound::kFuseA ? a.product : nodeOf(c, a);
-  uint32_t nb = flags & bound::kFuseB ? b.product : nodeOf(c, b);
-  if (!negateB && flags == 0 && na > nb) std::swap(na, nb); // a + b == b + a bit for bit (not once fused)
-  finish(c, r, (negateB ? bound::kSub : bound::kAdd) | flags | modelBit(c), na, nb, true);
+  finish(c, r, key.op, na, nb, true);
+  if (memo) keep(c, key, true, r);
   return r;
 }
 
@@ -261,34 +180,42 @@ Bound operator-(const Bound& a, const Bound& b) { return addOrSub(a, b, true); }
 Bound operator*(const Bound& a, const Bound& b) {
   Impl* c = activeImpl();
   const bool conf = conformant(c);
+  uint32_t na = nodeOf(c, a);
+  uint32_t nb = nodeOf(c, b);
+  if (na > nb) std::swap(na, nb); // x * y == y * x, fused or not
+  const Node key{bound::kMul | modelBit(c), na, nb, 0};
+  const bool memo = worthKeeping(c, a, b);
+  Bound r;
+  if (memo && recalled(c, key, true, r)) return r;
   Bound x = a;
   Bound y = b;
   if (conf) {
     flushDenormals(x);
     flushDenormals(y);
   }
-  Bound r = mulSet(x, y);
+  r = mulSet(x, y);
   if (conf) flushDenormals(r);
   if (c == nullptr) return r;
-  uint32_t na = nodeOf(c, a);
-  uint32_t nb = nodeOf(c, b);
-  if (na > nb) std::swap(na, nb); // x * y == y * x, fused or not
-  const uint32_t op = bound::kMul | modelBit(c);
-  finish(c, r, op, na, nb, true);
-  if (conf) r.product = r.point() ? (na && nb ? c->intern(bound::Node{op, na, nb, 0}) : c->fresh()) : r.node;
+  finish(c, r, key.op, na, nb, true);
+  if (conf) r.product = r.point() ? (na && nb ? c->intern(key) : c->fresh()) : r.node;
+  if (memo) keep(c, key, true, r);
   return r;
 }
 
 Bound operator/(const Bound& a, const Bound& b) {
   Impl* c = activeImpl();
   const bool conf = conformant(c);
+  const Node key{bound::kDiv | modelBit(c), nodeOf(c, a), nodeOf(c, b), 0};
+  const bool memo = worthKeeping(c, a, b);
+  Bound r;
+  if (memo && recalled(c, key, true, r)) return r;
   Bound x = a;
   Bound y = b;
   if (conf) {
     flushDenormals(x);
     flushDenormals(y);
   }
-  Bound r = divSet(x, y);
+  r = divSet(x, y);
   if (conf && r.hasValues()) {
     // 2.5 ulp for |divisor| in [2^-126, 2^126]; beyond that range the spec leaves the result undefined.
     const bool inRange = y.hasValues() && std::max(std::fabs(y.lo), std::fabs(y.hi)) <= 0x1p126f &&
@@ -296,17 +223,22 @@ Bound operator/(const Bound& a, const Bound& b) {
     r = inRange ? widenUlps(r, 3.5) : makeSet(-kInf, kInf, true);
     flushDenormals(r);
   }
-  finish(c, r, bound::kDiv | modelBit(c), nodeOf(c, a), nodeOf(c, b), true);
+  finish(c, r, key.op, key.a, key.b, true);
+  if (memo) keep(c, key, true, r);
   return r;
 }
 
 Bound operator-(const Bound& a) {
   Impl* c = activeImpl();
-  Bound r = negSet(a);
+  const Node key{bound::kNeg | modelBit(c), nodeOf(c, a), a.product, 0}; // the product decides what -a may fuse into
+  Bound r;
+  if (recalled(c, key, false, r)) return r;
+  r = negSet(a);
+  if (conformant(c)) flushDenormals(r);
   if (c == nullptr) return r;
-  const uint32_t op = bound::kNeg | modelBit(c);
-  finish(c, r, op, nodeOf(c, a), 0, false);
-  if (a.product != 0) r.product = c->intern(bound::Node{op, a.product, 0, 0}); // -(x*y) + z fuses too
+  finish(c, r, key.op, key.a, 0, false);
+  if (a.product != 0) r.product = c->intern(bound::Node{key.op, a.product, 0, 0}); // -(x*y) + z fuses too
+  keep(c, key, false, r);
   return r;
 }
 
@@ -414,236 +346,5 @@ bool operator>(const Bound& a, const Bound& b) { return compare(bound::kLess, b,
 bool operator>=(const Bound& a, const Bound& b) { return compare(bound::kLessEqual, b, a); }
 bool operator==(const Bound& a, const Bound& b) { return compare(bound::kEqual, a, b); }
 bool operator!=(const Bound& a, const Bound& b) { return !compare(bound::kEqual, a, b); }
-
-// ---- built-ins ---------------------------------------------------------------------------------------------------
-
-namespace {
-
-// A unary built-in: the set function `f` under the active model, traced as (op, x).
-template <class F>
-Bound unary(uint32_t op, const Bound& x, F f) {
-  Impl* c = activeImpl();
-  const bool conf = conformant(c);
-  Bound in = x;
-  if (conf) flushDenormals(in);
-  Bound r = f(in, conf);
-  if (conf) flushDenormals(r);
-  r.product = 0;
-  r.node = 0;
-  if (c != nullptr) finish(c, r, op | modelBit(c), nodeOf(c, x), 0, false);
-  return r;
-}
-
-// Conformant inversesqrt: 2 ulp; undefined for x <= 0.
-Bound inverseSqrtConformant(const Bound& x) {
-  if (!x.hasValues() || x.lo <= 0.0f) return x.hasValues() ? makeSet(-kInf, kInf, true) : nanOnly();
-  const double vlo = 1.0 / std::sqrt(static_cast<double>(x.hi));
-  const double vhi = 1.0 / std::sqrt(static_cast<double>(x.lo));
-  return widened(vlo, vhi, 2.5, x.nan);
-}
-
-Bound exp2Set(const Bound& x, bool conf) {
-  if (!x.hasValues()) return x;
-  if (!conf && x.point()) { // the C++ build's own exp2f
-    const float v = std::exp2(x.lo);
-    return makeSet(v, v, false);
-  }
-  // Cpp: glibc's exp2f within 1 ulp, modelled as 2 (+ 0.5 for the double evaluation). Conformant: 3 + 2|x|.
-  const double k = conf ? 3.5 + 2.0 * std::max(std::fabs(static_cast<double>(x.lo)), std::fabs(static_cast<double>(x.hi)))
-                        : 2.5;
-  return widened(std::exp2(static_cast<double>(x.lo)), std::exp2(static_cast<double>(x.hi)), k, x.nan);
-}
-
-Bound log2Set(const Bound& x, bool conf) {
-  if (!x.hasValues()) return x;
-  if (conf) { // undefined for x <= 0; 3 ulp outside [0.5, 2], 2^-21 absolute inside
-    if (x.lo <= 0.0f) return makeSet(-kInf, kInf, true);
-    Bound r = widened(std::log2(static_cast<double>(x.lo)), std::log2(static_cast<double>(x.hi)), 3.5, x.nan);
-    if (x.lo <= 2.0f && x.hi >= 0.5f) {
-      r.lo = down(static_cast<double>(r.lo) - 0x1p-21);
-      r.hi = up(static_cast<double>(r.hi) + 0x1p-21);
-    }
-    return r;
-  }
-  if (x.point()) {
-    const float v = std::log2(x.lo);
-    return std::isnan(v) ? nanOnly() : makeSet(v, v, false);
-  }
-  const bool nan = x.nan || x.lo < 0.0f;
-  if (x.hi < 0.0f) return nanOnly();
-  const double lo = x.lo <= 0.0f ? -HUGE_VAL : std::log2(static_cast<double>(x.lo));
-  return widened(lo, std::log2(static_cast<double>(x.hi)), 2.5, nan);
-}
-
-Bound acosSet(const Bound& x, bool conf);
-Bound powSet(const Bound& x, const Bound& y, bool conf);
-
-} // namespace
-
-Bound sqrt(const Bound& x) {
-  return unary(bound::kSqrt, x, [](const Bound& in, bool conf) {
-    Bound r = sqrtSet(in);
-    // Conformant: 1 / inversesqrt(x): 2 ulp of inversesqrt (up to 4 ulp of the root, relatively) and 2.5 of the
-    // division.
-    return conf && r.hasValues() ? widenUlps(r, 7.5) : r;
-  });
-}
-
-Bound inversesqrt(const Bound& x) {
-  return unary(bound::kInverseSqrt, x, [](const Bound& in, bool conf) {
-    return conf ? inverseSqrtConformant(in) : divSet(Bound(1.0f), sqrtSet(in)); // GLM: 1.0f / sqrt(x)
-  });
-}
-
-Bound exp2(const Bound& x) { return unary(bound::kExp2, x, exp2Set); }
-Bound log2(const Bound& x) { return unary(bound::kLog2, x, log2Set); }
-Bound acos(const Bound& x) { return unary(bound::kAcos, x, acosSet); }
-
-Bound floor(const Bound& x) {
-  return unary(bound::kFloor, x, [](const Bound& in, bool) {
-    return in.hasValues() ? makeSet(std::floor(in.lo), std::floor(in.hi), in.nan) : in;
-  });
-}
-
-Bound ceil(const Bound& x) {
-  return unary(bound::kCeil, x, [](const Bound& in, bool) {
-    return in.hasValues() ? makeSet(std::ceil(in.lo), std::ceil(in.hi), in.nan) : in;
-  });
-}
-
-Bound abs(const Bound& x) {
-  return unary(bound::kAbs, x, [](const Bound& in, bool) {
-    if (!in.hasValues()) return in;
-    if (hasZero(in)) return makeSet(0.0f, std::max(-in.lo, in.hi), in.nan);
-    return in.lo > 0.0f ? in : makeSet(-in.hi, -in.lo, in.nan);
-  });
-}
-
-namespace {
-
-// GLM's min(a, b) = b < a ? b : a and max(a, b) = a < b ? b : a: a NaN first operand is returned, a NaN second
-// operand returns the first. Conformant (GLSL leaves NaN undefined): either operand, or NaN.
-Bound minMax(uint32_t op, const Bound& a, const Bound& b) {
-  Impl* c = activeImpl();
-  const bool conf = conformant(c);
-  const bool isMin = op == bound::kMin;
-  Bound r = nanOnly();
-  r.nan = a.nan;
-  if (a.hasValues() && b.hasValues()) {
-    r.lo = isMin ? std::min(a.lo, b.lo) : std::max(a.lo, b.lo);
-    r.hi = isMin ? std::min(a.hi, b.hi) : std::max(a.hi, b.hi);
-  }
-  if (b.nan && a.hasValues()) r = unite(r, makeSet(a.lo, a.hi, r.nan));
-  if (conf && (a.nan || b.nan)) r = unite(unite(r, a), b);
-  r.product = 0;
-  r.node = 0;
-  if (c != nullptr) finish(c, r, op | modelBit(c), nodeOf(c, a), nodeOf(c, b), true);
-  return r;
-}
-
-} // namespace
-
-Bound min(const Bound& a, const Bound& b) { return minMax(bound::kMin, a, b); }
-Bound max(const Bound& a, const Bound& b) { return minMax(bound::kMax, a, b); }
-
-Bound pow(const Bound& x, const Bound& y) {
-  Impl* c = activeImpl();
-  const bool conf = conformant(c);
-  Bound bx = x;
-  Bound by = y;
-  if (conf) {
-    flushDenormals(bx);
-    flushDenormals(by);
-  }
-  Bound r = powSet(bx, by, conf);
-  if (conf) flushDenormals(r);
-  if (c != nullptr) finish(c, r, bound::kPow | modelBit(c), nodeOf(c, x), nodeOf(c, y), true);
-  return r;
-}
-
-namespace {
-
-// acos: Cpp: glibc's acosf (within 1 ulp; modelled as 2), NaN outside [-1, 1]. Conformant: GLSL 4.50 leaves its
-// precision undefined; Vulkan's: atan2(sqrt(1 - x*x), x) with atan2 within 4096 ulp, the rest as modelled here.
-Bound acosSet(const Bound& x, bool conf) {
-  if (!x.hasValues()) return x;
-  if (conf) {
-    if (x.lo < -1.0f || x.hi > 1.0f) return makeSet(-kInf, kInf, true);
-    Bound sq = mulSet(x, x);
-    Bound t = unite(addSet(Bound(1.0f), negSet(sq)), fusedSum(negSet(sq), Bound(1.0f)));
-    flushDenormals(t);
-    Bound s = sqrtSet(t);
-    if (s.hasValues()) s = widenUlps(s, 7.5);
-    if (!s.hasValues()) return makeSet(-kInf, kInf, true);
-    const double slo = std::max(0.0, static_cast<double>(s.lo));
-    const double shi = static_cast<double>(s.hi);
-    if (slo == 0.0 && x.lo <= 0.0f && x.hi >= 0.0f) return widened(0.0, M_PI, 4097.0, true);
-    const double v[4] = {std::atan2(slo, static_cast<double>(x.lo)), std::atan2(slo, static_cast<double>(x.hi)),
-                         std::atan2(shi, static_cast<double>(x.lo)), std::atan2(shi, static_cast<double>(x.hi))};
-    return widened(*std::min_element(v, v + 4), *std::max_element(v, v + 4), 4097.0, x.nan || s.nan);
-  }
-  if (x.point()) {
-    const float v = std::acos(x.lo);
-    return std::isnan(v) ? nanOnly() : makeSet(v, v, false);
-  }
-  const bool nan = x.nan || x.lo < -1.0f || x.hi > 1.0f;
-  if (x.lo > 1.0f || x.hi < -1.0f) return nanOnly();
-  const double lo = std::acos(std::min(static_cast<double>(x.hi), 1.0));
-  const double hi = std::acos(std::max(static_cast<double>(x.lo), -1.0));
-  return widened(lo, hi, 2.5, nan);
-}
-
-// pow over x > 0: the extremes of y * log2(x) (bilinear) are at the corners.
-Bound powPositive(const Bound& x, const Bound& y, bool conf) {
-  if (conf) { // exp2(y * log2(x)), each step as modelled
-    Bound l = log2Set(x, true);
-    Bound p = mulSet(y, l);
-    flushDenormals(p);
-    return exp2Set(p, true);
-  }
-  const double xs[2] = {static_cast<double>(x.lo), static_cast<double>(x.hi)};
-  const double ys[2] = {static_cast<double>(y.lo), static_cast<double>(y.hi)};
-  double lo = HUGE_VAL;
-  double hi = -HUGE_VAL;
-  bool nan = x.nan || y.nan;
-  for (double xv : xs) {
-    for (double yv : ys) {
-      const double v = std::pow(xv, yv);
-      if (std::isnan(v)) {
-        nan = true;
-        continue;
-      }
-      lo = std::min(lo, v);
-      hi = std::max(hi, v);
-    }
-  }
-  if (lo > hi) return nanOnly();
-  return widened(lo, hi, 2.5, nan);
-}
-
-Bound powSet(const Bound& x, const Bound& y, bool conf) {
-  if (!x.hasValues() || !y.hasValues()) return nanOnly();
-  if (x.lo < 0.0f) return makeSet(-kInf, kInf, true); // a negative base: NaN, +-values; not modelled closer
-  if (!conf && x.point() && y.point()) {              // the C++ build's own powf
-    const float v = std::pow(x.lo, y.lo);
-    return std::isnan(v) ? nanOnly() : makeSet(v, v, x.nan || y.nan);
-  }
-  Bound r = nanOnly();
-  r.nan = x.nan || y.nan;
-  if (x.lo <= 0.0f) { // pow(0, y): 0 for y > 0, 1 for y == 0, +Inf for y < 0 (Conformant: undefined for y <= 0)
-    if (conf && y.lo <= 0.0f) return makeSet(-kInf, kInf, true);
-    if (y.hi > 0.0f) r = unite(r, makeSet(0.0f, 0.0f, false));
-    if (hasZero(y)) r = unite(r, makeSet(1.0f, 1.0f, false));
-    if (y.lo < 0.0f) r = unite(r, makeSet(kInf, kInf, false));
-  }
-  if (x.hi > 0.0f) {
-    Bound positive = x;
-    positive.lo = std::max(x.lo, 0x1p-149f);
-    r = unite(r, powPositive(positive, y, conf));
-  }
-  return r;
-}
-
-} // namespace
 
 } // namespace fftess::lod

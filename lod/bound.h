@@ -25,9 +25,16 @@
 // and the same comparison on the same nodes gets the same answer within one run (so the two sides of an edge that
 // compare the same traced value against the same constant branch alike). No comparison narrows its operands.
 //
+// Within a run, an answer about a node compared with a constant also constrains that node for the rest of the run
+// (after `x > 8` is answered true, `x > 4` is decided true), so infeasible combinations are not enumerated.
+//
+// The context remembers each operation's result by (operation, operand nodes): a repeated operation (the next run,
+// the other patch of a pair) is one lookup. The trace and these results grow until clearTrace.
+//
 // lod/lod_bound.h compiles the shaders (lod/shaders/*.glsl) with Bound as their float: the same source as the float
 // build, the same order of operations. Not thread-safe per context: one BoundContext per thread (it is made active
-// for the calling thread by forEachPath or BoundContext::Scope).
+// for the calling thread by forEachPath or BoundContext::Scope). forEachPath is not reentrant (no forEachPath inside
+// a run of the same context).
 #pragma once
 
 #include <cstdint>

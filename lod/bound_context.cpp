@@ -13,30 +13,12 @@ namespace fftess::lod {
 namespace {
 
 thread_local BoundContext* tActive = nullptr;
-thread_local BoundContext::Impl* tActiveImpl = nullptr;
 
-uint32_t floatBits(float x) {
-  uint32_t u;
-  std::memcpy(&u, &x, sizeof u);
-  return u;
-}
 
 float bitsFloat(uint32_t u) {
   float x;
   std::memcpy(&x, &u, sizeof x);
   return x;
-}
-
-uint64_t hashNode(const bound::Node& n) {
-  uint64_t h = (static_cast<uint64_t>(n.op) << 32 | n.a) * 0x9e3779b97f4a7c15ull;
-  h ^= (static_cast<uint64_t>(n.b) << 32 | n.c) * 0xc2b2ae3d27d4eb4full;
-  h ^= h >> 29;
-  h *= 0xbf58476d1ce4e5b9ull;
-  return h ^ (h >> 32);
-}
-
-bool sameNode(const bound::Node& x, const bound::Node& y) {
-  return x.op == y.op && x.a == y.a && x.b == y.b && x.c == y.c;
 }
 
 // Operands of a node that are nodes themselves (constants, inputs and fresh nodes have none).
@@ -71,32 +53,49 @@ const char* opName(uint32_t op) {
 
 BoundContext::Impl::Impl() {
   nodes.resize(1);
-  table.assign(1024, 0);
+  table.assign(1024, Slot{});
+  results.assign(1024, Result{});
 }
 
-uint32_t BoundContext::Impl::intern(const bound::Node& n) {
-  const size_t mask = table.size() - 1;
-  size_t i = hashNode(n) & mask;
-  while (table[i] != 0) {
-    if (sameNode(nodes[table[i]], n)) return table[i];
-    i = (i + 1) & mask;
-  }
+uint32_t BoundContext::Impl::insert(const bound::Node& n, size_t slot) {
   const uint32_t id = static_cast<uint32_t>(nodes.size());
   nodes.push_back(n);
-  table[i] = id;
+  table[slot] = Slot{n, id};
   if (nodes.size() * 2 > table.size()) { // keep the load under one half
-    table.assign(table.size() * 2, 0);
-    const size_t m2 = table.size() - 1;
+    table.assign(table.size() * 2, Slot{});
+    const size_t mask = table.size() - 1;
     for (uint32_t k = 1; k < nodes.size(); ++k) {
-      size_t j = hashNode(nodes[k]) & m2;
-      while (table[j] != 0) j = (j + 1) & m2;
-      table[j] = k;
+      size_t j = hash(nodes[k]) & mask;
+      while (table[j].id != 0) j = (j + 1) & mask;
+      table[j] = Slot{nodes[k], k};
     }
   }
   return id;
 }
 
-uint32_t BoundContext::Impl::constant(float x) { return intern(bound::Node{bound::kConst, floatBits(x), 0, 0}); }
+void BoundContext::Impl::remember(const bound::Node& k, const Bound& v) {
+  if ((resultCount + 1) * 2 > results.size()) { // keep the load under one half
+    std::vector<Result> old(results.size() * 2, Result{});
+    old.swap(results);
+    const size_t mask = results.size() - 1;
+    for (const Result& r : old) {
+      if (r.key.op == 0) continue;
+      size_t j = hash(r.key) & mask;
+      while (results[j].key.op != 0) j = (j + 1) & mask;
+      results[j] = r;
+    }
+  }
+  const size_t mask = results.size() - 1;
+  size_t i = hash(k) & mask;
+  while (results[i].key.op != 0) {
+    if (results[i].key.op == k.op && results[i].key.a == k.a && results[i].key.b == k.b && results[i].key.c == k.c) {
+      return;
+    }
+    i = (i + 1) & mask;
+  }
+  results[i] = Result{k, v};
+  ++resultCount;
+}
 
 uint32_t BoundContext::Impl::fresh() { return intern(bound::Node{bound::kFresh, ++freshSerial, 0, 0}); }
 
@@ -120,7 +119,7 @@ bool BoundContext::Impl::choose(uint32_t kind, uint32_t a, uint32_t b) {
 
 namespace bound {
 
-BoundContext::Impl* activeImpl() { return tActiveImpl; }
+thread_local BoundContext::Impl* tActiveImpl = nullptr;
 
 FloatModel activeModel() {
   BoundContext::Impl* c = activeImpl();
@@ -138,11 +137,6 @@ ModelOverride::~ModelOverride() {
   if (impl_) impl_->evalModel = previous_;
 }
 
-uint32_t nodeOf(BoundContext::Impl* c, const Bound& x) {
-  if (x.node != 0 || c == nullptr) return x.node;
-  return x.point() ? c->constant(x.lo) : 0;
-}
-
 void resolveNode(Bound& x) { x.node = nodeOf(activeImpl(), x); }
 
 } // namespace bound
@@ -156,7 +150,7 @@ BoundContext::BoundContext(FloatModel model, int maxPaths) : impl_(std::make_uni
 BoundContext::~BoundContext() {
   if (tActive == this) {
     tActive = nullptr;
-    tActiveImpl = nullptr;
+    bound::tActiveImpl = nullptr;
   }
 }
 
@@ -194,11 +188,11 @@ int BoundContext::choicesInRun() const {
 
 BoundContext::Scope::Scope(BoundContext& c) : previous_(tActive) {
   tActive = &c;
-  tActiveImpl = c.impl_.get();
+  bound::tActiveImpl = c.impl_.get();
 }
 BoundContext::Scope::~Scope() {
   tActive = previous_;
-  tActiveImpl = previous_ ? previous_->impl_.get() : nullptr;
+  bound::tActiveImpl = previous_ ? previous_->impl_.get() : nullptr;
 }
 
 int64_t BoundContext::undecidedOutsidePath() const { return impl_->undecidedOutside; }
@@ -250,9 +244,12 @@ uint32_t BoundContext::firstDifference(uint32_t a, uint32_t b, uint32_t* otherSi
 }
 
 void BoundContext::clearTrace() {
+  // Back to the first tables' size: clearing a large table costs more than growing a small one again.
   impl_->nodes.resize(1);
-  std::fill(impl_->table.begin(), impl_->table.end(), 0u);
+  impl_->table.assign(1024, Impl::Slot{});
   impl_->freshSerial = 0;
+  impl_->results.assign(1024, Impl::Result{});
+  impl_->resultCount = 0;
 }
 
 size_t BoundContext::traceSize() const { return impl_->nodes.size() - 1; }

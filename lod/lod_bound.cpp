@@ -3,6 +3,9 @@
 // Bound; the vector min/max the shaders use are written per component (GLM's static_assert an IEEE float type).
 #include "lod/lod_bound.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include <glm/glm.hpp>
 
 #include "lod/bound_internal.h"
@@ -19,6 +22,17 @@ using vec2 = BoundVec2;
 using vec3 = BoundVec3;
 using vec4 = BoundVec4;
 using mat4 = BoundMat4;
+// Component by component, in GLM's order, without GLM's temporaries (the operations the shaders use).
+inline vec2 operator*(const vec2& v, const Bound& s) { return vec2(v.x * s, v.y * s); }
+inline vec3 operator*(const vec3& v, const Bound& s) { return vec3(v.x * s, v.y * s, v.z * s); }
+inline vec4 operator*(const vec4& v, const Bound& s) { return vec4(v.x * s, v.y * s, v.z * s, v.w * s); }
+inline vec3 operator*(const Bound& s, const vec3& v) { return vec3(s * v.x, s * v.y, s * v.z); }
+inline vec3 operator/(const vec3& v, const Bound& s) { return vec3(v.x / s, v.y / s, v.z / s); }
+inline vec3 operator+(const vec3& a, const vec3& b) { return vec3(a.x + b.x, a.y + b.y, a.z + b.z); }
+inline vec3 operator-(const vec3& a, const vec3& b) { return vec3(a.x - b.x, a.y - b.y, a.z - b.z); }
+inline vec4 operator+(const vec4& a, const vec4& b) { return vec4(a.x + b.x, a.y + b.y, a.z + b.z, a.w + b.w); }
+inline vec4 operator-(const vec4& a, const vec4& b) { return vec4(a.x - b.x, a.y - b.y, a.z - b.z, a.w - b.w); }
+// A vector times a float literal: the literal as a constant Bound.
 inline vec2 operator*(const vec2& v, float s) { return v * Bound(s); }
 inline vec3 operator*(const vec3& v, float s) { return v * Bound(s); }
 inline vec4 operator*(const vec4& v, float s) { return v * Bound(s); }
@@ -154,6 +168,79 @@ BoundMat4 lookAtBound(const BoundVec3& eye, const BoundVec3& center, const Bound
   return r;
 }
 
+// A second enclosure of lookAt's entries, intersected with the GLM-order one (which treats s, u, f and the eye as
+// independent, so a region's entries come out a few times wider than they vary): the exact lookAt at the centre of
+// the region (double), plus a Lipschitz bound of the exact function over the region, plus a bound of the rounding of
+// GLM's float sequence (eps = 2^-24, each term four times the derivation's, docs/lod.md "Bounds"):
+//   d = target - eye, |d - dc| <= r = re + rt (half diagonals); on |d| >= md = |dc| - r, |f - fc| <= r / md = rhoF;
+//   c = f x up: |c - cc| <= |up| rhoF; s = c / |c|: rhoS = |up| rhoF / mc, mc = |cc| - |up| rhoF;
+//   u = s x f: rhoU = rhoS + rhoF; dot(s, eye): rhoS |eye|max + re (likewise u, f).
+//   Rounding: f 6.5 eps (16 used); c 21 eps |up| (32); s 2 errC / (mc - errC) + 6.5 eps (16); u errS + errF + 5.2
+//   eps (16); dot(v, eye) (errV + 3.1 eps) |eye|max (4).
+// Applied only when the region is small against the eye-target distance and the up vector's angle (md > dc / 2,
+// mc > cc / 2); otherwise the GLM-order enclosure stands alone.
+void tightenLookAt(BoundMat4& view, glm::dvec3 eLo, glm::dvec3 eHi, glm::dvec3 tLo, glm::dvec3 tHi, glm::dvec3 up,
+                   bool leftHanded) {
+  const double eps = 0x1p-24;
+  const double safety = 4.0;
+  const glm::dvec3 ec = (eLo + eHi) * 0.5;
+  const glm::dvec3 tc = (tLo + tHi) * 0.5;
+  const double re = glm::length(eHi - eLo) * 0.5;
+  const double r = re + glm::length(tHi - tLo) * 0.5;
+  const glm::dvec3 dc = tc - ec;
+  const double nd = glm::length(dc);
+  const double md = nd - r;
+  if (!(md > 0.5 * nd)) return;
+  const glm::dvec3 fc = dc / nd;
+  const double rhoF = r / md;
+  const double nu = glm::length(up);
+  const glm::dvec3 cc = leftHanded ? glm::cross(up, fc) : glm::cross(fc, up);
+  const double nc = glm::length(cc);
+  const double mc = nc - nu * rhoF;
+  if (!(mc > 0.5 * nc)) return;
+  const glm::dvec3 sc = cc / nc;
+  const glm::dvec3 uc = leftHanded ? glm::cross(fc, sc) : glm::cross(sc, fc);
+  const double rhoS = nu * rhoF / mc;
+  const double rhoU = rhoS + rhoF;
+  const double eyeMax = glm::length(ec) + re;
+  const double errF = safety * 16.0 * eps;
+  const double errC = safety * 32.0 * eps * nu;
+  if (!(mc - errC > 0.0)) return;
+  const double errS = safety * (2.0 * errC / (mc - errC) + 16.0 * eps);
+  const double errU = errS + errF + safety * 16.0 * eps;
+  const double slack = 1e-12 * (1.0 + eyeMax); // the double evaluation of the centre
+  const double fSign = leftHanded ? 1.0 : -1.0;
+  struct Entry {
+    int col, row;
+    double centre, radius;
+  } entries[12] = {
+      {0, 0, sc.x, rhoS + errS},
+      {1, 0, sc.y, rhoS + errS},
+      {2, 0, sc.z, rhoS + errS},
+      {0, 1, uc.x, rhoU + errU},
+      {1, 1, uc.y, rhoU + errU},
+      {2, 1, uc.z, rhoU + errU},
+      {0, 2, fSign * fc.x, rhoF + errF},
+      {1, 2, fSign * fc.y, rhoF + errF},
+      {2, 2, fSign * fc.z, rhoF + errF},
+      {3, 0, -glm::dot(sc, ec), rhoS * eyeMax + re + (errS + safety * 4.0 * eps) * eyeMax},
+      {3, 1, -glm::dot(uc, ec), rhoU * eyeMax + re + (errU + safety * 4.0 * eps) * eyeMax},
+      {3, 2, fSign * glm::dot(fc, ec), rhoF * eyeMax + re + (errF + safety * 4.0 * eps) * eyeMax},
+  };
+  for (const Entry& e : entries) {
+    Bound& b = view[e.col][e.row];
+    const double radius = e.radius * 1.01 + slack;
+    const float lo = std::max(b.lo, static_cast<float>(e.centre - radius)); // float(x) rounds to nearest: step out
+    const float hi = std::min(b.hi, static_cast<float>(e.centre + radius));
+    const float loOut = std::nextafter(lo, -INFINITY);
+    const float hiOut = std::nextafter(hi, INFINITY);
+    if (b.hasValues() && std::max(b.lo, loOut) <= std::min(b.hi, hiOut)) {
+      b.lo = std::max(b.lo, loOut);
+      b.hi = std::min(b.hi, hiOut);
+    }
+  }
+}
+
 } // namespace
 
 BoundCamera boundCamera(const Camera& camera) {
@@ -178,6 +265,8 @@ BoundCamera boundCameraRegion(glm::vec3 eyeLo, glm::vec3 eyeHi, glm::vec3 target
                                : makeCamera(eyeLo, targetLo, up, fovyRadians, zNear, zFar, viewport);
   BoundCamera c = boundCamera(reference);
   c.view = lookAtBound(eye, target, toB(up), d3d);
+  tightenLookAt(c.view, glm::dvec3(eyeLo), glm::dvec3(eyeHi), glm::dvec3(targetLo), glm::dvec3(targetHi),
+                glm::dvec3(up), d3d);
   c.eye = eye;
   return c;
 }

@@ -195,24 +195,32 @@ TEST_CASE("Bound schemes: every camera sampled in a small region is held by one 
 TEST_CASE("Bound schemes: boundCameraRegion's view holds makeCamera's view for every sampled eye and target",
           "[lod][bound]") {
   std::mt19937 rng(5);
-  for (int iter = 0; iter < 200; ++iter) {
+  for (int iter = 0; iter < 600; ++iter) {
     const bool d3d = (iter & 1) != 0;
-    const glm::vec3 eyeLo = uniformIn(rng, glm::vec3(-100.0f, 1.0f, -100.0f), glm::vec3(100.0f, 50.0f, 100.0f));
-    const glm::vec3 targetLo = uniformIn(rng, glm::vec3(-10.0f, -1.0f, -10.0f), glm::vec3(10.0f, 1.0f, 10.0f));
+    glm::vec3 eyeLo = uniformIn(rng, glm::vec3(-100.0f, 1.0f, -100.0f), glm::vec3(100.0f, 50.0f, 100.0f));
+    glm::vec3 targetLo = uniformIn(rng, glm::vec3(-10.0f, -1.0f, -10.0f), glm::vec3(10.0f, 1.0f, 10.0f));
+    if (iter % 5 == 2) { // the eye on a diagonal through the target: dot(s, eye) cancels to ~0, many ulps of rounding
+      const float a = uniform(rng, 50.0f, 300.0f);
+      eyeLo = glm::vec3(a, uniform(rng, 1.0f, 20.0f), (iter & 2) ? a : -a);
+      targetLo = glm::vec3(0.0f);
+    }
     // Point regions on some axes (iter % 4 == 0: a point camera, every entry the float's bits).
-    const float w = (iter % 4 == 0) ? 0.0f : std::ldexp(1.0f, -static_cast<int>(rng() % 12));
+    const float w = (iter % 4 == 0) ? 0.0f : std::ldexp(1.0f, 2 - static_cast<int>(rng() % 24));
+    // Some regions with a tilted up vector of another length (the cross products then round).
+    const glm::vec3 up = (iter % 3 == 1) ? uniformIn(rng, glm::vec3(-0.4f, 0.5f, -0.4f), glm::vec3(0.4f, 2.0f, 0.4f))
+                                         : kUp;
     const glm::vec3 eyeHi = eyeLo + glm::vec3(w, (iter % 3 == 0) ? 0.0f : w, w);
     const glm::vec3 targetHi = targetLo + glm::vec3((iter % 5 == 0) ? 0.0f : w, w, w);
     BoundContext ctx(FloatModel::Conformant); // the camera is built under Cpp whatever the context's model
     BoundContext::Scope scope(ctx);
     const BoundCamera bc =
-        boundCameraRegion(eyeLo, eyeHi, targetLo, targetHi, kUp, 0.9f, 0.5f, 3000.0f, kViewport, d3d);
+        boundCameraRegion(eyeLo, eyeHi, targetLo, targetHi, up, 0.9f, 0.5f, 3000.0f, kViewport, d3d);
     REQUIRE(ctx.undecidedOutsidePath() == 0);
     for (int s = 0; s < 40; ++s) {
       const glm::vec3 eye = s == 0 ? eyeLo : s == 1 ? eyeHi : uniformIn(rng, eyeLo, eyeHi);
       const glm::vec3 target = s == 0 ? targetLo : s == 1 ? targetHi : uniformIn(rng, targetLo, targetHi);
-      const Camera cam = d3d ? makeCameraD3d(eye, target, kUp, 0.9f, 0.5f, 3000.0f, kViewport)
-                             : makeCamera(eye, target, kUp, 0.9f, 0.5f, 3000.0f, kViewport);
+      const Camera cam = d3d ? makeCameraD3d(eye, target, up, 0.9f, 0.5f, 3000.0f, kViewport)
+                             : makeCamera(eye, target, up, 0.9f, 0.5f, 3000.0f, kViewport);
       for (int i = 0; i < 4; ++i) {
         for (int j = 0; j < 4; ++j) {
           INFO("iteration " << iter << " entry [" << i << "][" << j << "] float " << hex(cam.view[i][j]) << " bound ["
