@@ -66,7 +66,7 @@ float uniformIn(uint64_t& state, float lo, float hi) {
 TEST_CASE("prove proves rings_small with the pow2 clamp on a small region around its camera", "[verify][prove]") {
   const Terrain t = prepared(loadExample("rings_small.toml"));
   ProveOptions o = withRegion(ringsSmallRegion());
-  o.maxRegions = 2000;
+  o.maxRegions = 8; // decided at the root: a failing proof stops soon
   const ProveReport r = proveScene(t, o);
   INFO(r.error << (r.undecided.empty() ? std::string() : r.undecided.front().why));
   REQUIRE(r.error.empty());
@@ -81,7 +81,9 @@ TEST_CASE("prove proves rings_small with the pow2 clamp on a small region around
 TEST_CASE("prove gives rings_small without an adjacency clamp a counterexample that the check confirms",
           "[verify][prove]") {
   const Terrain t = prepared(loadExample("rings_small.toml", {"lod.adjacency_clamp=none"}));
-  const ProveReport r = proveScene(t, withRegion(ringsSmallRegion()));
+  ProveOptions o = withRegion(ringsSmallRegion());
+  o.maxRegions = 8; // found at the root: a prover that misses it stops soon
+  const ProveReport r = proveScene(t, o);
   REQUIRE(r.error.empty());
   REQUIRE(r.verdict == ProveVerdict::Counterexample);
   CHECK(onScreenFindingOrHole(r.counterexampleReport));
@@ -112,7 +114,9 @@ TEST_CASE("prove finds the w = 0 hole of prove_w0 that 1,000 random cameras of i
   CHECK(s.camerasDone == 1000);
   CHECK(verdictOf(s) == Verdict::Watertight);
   // The proof: a counterexample, a hole the check confirms, at an eye in the eye plane of an edge midpoint.
-  const ProveReport r = proveScene(t, withRegion(g));
+  ProveOptions o = withRegion(g);
+  o.maxRegions = 64; // found at the root: a prover that misses it stops soon
+  const ProveReport r = proveScene(t, o);
   REQUIRE(r.error.empty());
   REQUIRE(r.verdict == ProveVerdict::Counterexample);
   const Report again = checkScene(t, r.counterexample);
