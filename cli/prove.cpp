@@ -27,15 +27,16 @@ CLI::App* addProve(CLI::App& app, ProveArgs& a) {
               "  fftess prove docs/examples/rings_small.toml --eye-box 0,20,-80,20,30,-60 --target-box 0,0,0,0,0,0\n"
               "  fftess prove docs/examples/rings_small.toml --set lod.adjacency_clamp=none\n"
               "A box is X0,Y0,Z0,X1,Y1,Z1 (a point when both corners are equal); without --eye-box / --target-box the "
-              "default region around the terrain (stated in the output). fov, viewport, near and far are the "
+              "default region: the scene camera's eye and target, each moved by up to 2^-12 of the terrain's larger side "
+              "(stated in the output). fov, viewport, near and far are the "
               "scene camera's. What PROVED assumes: docs/verify.md, \"Proofs\".\n"
               "Exit status: 0 PROVED, 1 COUNTEREXAMPLE or UNDECIDED, 2 bad usage or scene, 3 internal error.");
   sub->add_option("scene", a.scene.scene, "Scene file (TOML, docs/verify.md)")->required();
   sub->add_option("--set", a.scene.overrides, "Override a scene key: KEY=VALUE (repeatable), validated like the file")
       ->type_name("KEY=VALUE");
-  sub->add_option("--eye-box", a.eyeBox, "Eyes in the box X0,Y0,Z0,X1,Y1,Z1 (default: over the terrain)")
+  sub->add_option("--eye-box", a.eyeBox, "Eyes in the box X0,Y0,Z0,X1,Y1,Z1 (default: the scene eye +-2^-12 of the terrain's side)")
       ->type_name("X0,Y0,Z0,X1,Y1,Z1");
-  sub->add_option("--target-box", a.targetBox, "Targets in the box X0,Y0,Z0,X1,Y1,Z1 (default: on the terrain)")
+  sub->add_option("--target-box", a.targetBox, "Targets in the box X0,Y0,Z0,X1,Y1,Z1 (default: the scene target +-2^-12 of the terrain's side)")
       ->type_name("X0,Y0,Z0,X1,Y1,Z1");
   sub->add_option("--max-depth", a.maxDepth, "Splits of a region on the way from the root (each halves one coordinate)")
       ->capture_default_str();
@@ -164,7 +165,7 @@ std::string proveText(const ProveArgs& a, const vf::Scene& scene, const vf::Prov
   std::string text = "fftess prove " + a.scene.scene + (scene.name.empty() ? "" : " (" + scene.name + ")") + "\n";
   for (const std::string& s : a.scene.overrides) text += "  --set " + s + "\n";
   text += "  region         " + regionText(r.region) +
-          (r.regionDefault ? " (the default region: eyes above the terrain, targets on it)" : "") + "\n";
+          (r.regionDefault ? " (the default region: the scene camera's eye and target, each +-2^-12 of the terrain's side)" : "") + "\n";
   text += "  lod            " + std::string(vf::toString(scene.lod.scheme)) + ", " +
           vf::toString(scene.lod.screenSphere.clamp) + " clamp, " + toString(scene.partitioning) +
           " partitioning; the scene camera's fov, viewport, near and far\n";

@@ -28,22 +28,15 @@ const char* toString(ProveVerdict v) {
 
 CameraRegion defaultRegion(const Terrain& terrain) {
   const Extent& e = terrain.extent();
-  float lowY = 0, highY = 0;
-  bool first = true;
-  for (const detail::TerrainPatch& p : terrain.data().patches) {
-    const float lo = std::min({p.surfaceMinY, p.corners[0].y, p.lod.corners[0].y});
-    const float hi = std::max({p.surfaceMaxY, p.corners[0].y, p.lod.corners[0].y});
-    lowY = first ? lo : std::min(lowY, lo);
-    highY = first ? hi : std::max(highY, hi);
-    first = false;
-  }
   const float side = std::max(e.maxX - e.minX, e.maxZ - e.minZ);
-  CameraRegion r;
-  r.eyeLo = glm::vec3(e.minX, highY + 1.0f, e.minZ);
-  r.eyeHi = glm::vec3(e.maxX, highY + 0.25f * side, e.maxZ);
-  r.targetLo = glm::vec3(e.minX, lowY, e.minZ);
-  r.targetHi = glm::vec3(e.maxX, highY, e.maxZ);
-  return r;
+  const float r = std::ldexp(side, -12); // exact (a power-of-two scaling)
+  const Camera& c = terrain.scene().camera;
+  CameraRegion g;
+  g.eyeLo = c.eye - glm::vec3(r);
+  g.eyeHi = c.eye + glm::vec3(r);
+  g.targetLo = c.target - glm::vec3(r);
+  g.targetHi = c.target + glm::vec3(r);
+  return g;
 }
 
 namespace {

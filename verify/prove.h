@@ -41,7 +41,7 @@ struct ProveOptions {
   // Regions evaluated in all (the root counts) before the proof stops; what is left open is reported undecided.
   int64_t maxRegions = 200000;
   // Runs of one patch pair's joint evaluation (BoundContext::forEachPath's maxPaths) before that pair is undecided.
-  int maxPaths = 256;
+  int maxPaths = 4096;
   // Cameras sampled per region for counterexamples (the centre first, then the simplest floats of the region).
   int samplesPerRegion = 2;
   // Threads (0: hardware concurrency).
@@ -99,9 +99,11 @@ struct ProveReport {
   ProveStats stats;
 };
 
-// The default region: eyes over the terrain's extent (x and z) from 1 unit above the highest displaced point to a
-// quarter of the extent's larger side above it, targets on the extent at heights between the lowest and highest
-// displaced point. Stated in the report (ProveReport::regionDefault).
+// The default region: the scene camera's eye and target, each moved by up to 2^-12 of the terrain extent's larger side
+// in every coordinate (rings_small.toml: +-0.0625 around eye (10, 25, -70) and target (0, 0, 0)), a box of cameras
+// the interval evaluation decides in seconds. Whole-terrain regions are given explicitly (--eye-box, --target-box);
+// docs/verify.md, "Proofs", says what decides how wide a region can be. Stated in the report
+// (ProveReport::regionDefault).
 CameraRegion defaultRegion(const Terrain& terrain);
 
 // Proves or refutes the terrain watertight for every camera of the region. terrain: built; static layouts

@@ -69,7 +69,7 @@ struct RegionEval {
     }
     if (s.offScreen[i]) return true;
     for (int k = 0; k < 4; ++k) {
-      const lod::Bound& f = l.factors[k];
+      const lod::Bound f = s.context.narrowed(l.factors[k]); // after the shader's clamp (lod/bound.h)
       if (f.nan || s.edges.discards(f.lo)) {
         fail(RegionOutcome::Suspect, "patch " + std::to_string(i) + " edge " + std::to_string(k) +
                                          " may be discarded while on screen (factor " + range(f) + ")");
@@ -96,8 +96,8 @@ struct RegionEval {
       const bool da = drawnIn(ia, la, problem);
       const bool db = drawnIn(ib, lb, problem);
       if (problem || !da || !db) return;
-      const lod::Bound& fa = la.factors[p.e];
-      const lod::Bound& fb = lb.factors[eb];
+      const lod::Bound fa = s.context.narrowed(la.factors[p.e]);
+      const lod::Bound fb = s.context.narrowed(lb.factors[eb]);
       if (A.size == B.size && fa.node != 0 && fa.node == fb.node) {
         if (seam == 0) seam = static_cast<uint8_t>(proveSeam(t, A, p.e, B));
         if (static_cast<SeamProof>(seam) == SeamProof::Identical) return;

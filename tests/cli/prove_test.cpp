@@ -102,10 +102,6 @@ TEST_CASE("prove: a region left open at --max-regions 1 is UNDECIDED with exit 1
   CHECK(has(head, " regions left open (never PROVED while any remain)"));
   CHECK(has(r.out, "  eye (10, 24, -71)..(11, 26, -69) target (0, 0, 0) (depth 1): "));
   CHECK(!has(r.out, "PROVED:"));
-  // Without boxes: the default region, stated as such.
-  const auto d = run({"prove", kRings, "--max-regions", "1", "-j", "2"});
-  CHECK(d.status == 1);
-  CHECK(has(lineStarting(d.out, "  region         eye ("), " (the default region: eyes above the terrain, targets on it)"));
   // The JSON report says the same.
   const std::string path = clitest::tmpDir() + "/prove_undecided.json";
   const auto j = run({"prove", kRings, "--eye-box", "9,24,-71,11,26,-69", "--target-box", "0,0,0,0,0,0",
@@ -188,4 +184,17 @@ TEST_CASE("gpu float: scenes the model does not cover and unknown values are usa
   clitest::checkUsageError({"sweep", clitest::source("docs/examples/gpu_sphere_hlsl.toml"), "--gpu-float", "conformant"},
                            "--gpu-float conformant: lod.shader");
   clitest::checkUsageError({"check", kRings, "--gpu-float", "fast"}, "--gpu-float 'fast': expected off|conformant");
+}
+
+TEST_CASE("prove: rings_small's default region is PROVED with the pow2 clamp and stated as the default", "[cli][prove]") {
+  // The issue's first "Done when": `fftess prove docs/examples/rings_small.toml` says PROVED (exit 0); the region is
+  // the scene camera's eye and target +-2^-12 of the terrain's side (256: +-0.0625), and the output says it is the
+  // default one.
+  const auto d = run({"prove", kRings, "-j", "2"});
+  INFO(d.out << d.err);
+  CHECK(d.status == 0);
+  CHECK(has(lineStarting(d.out, "  region         eye ("),
+            "eye (9.9375, 24.9375, -70.0625)..(10.0625, 25.0625, -69.9375) target (-0.0625, -0.0625, -0.0625)..(0.0625, "
+            "0.0625, 0.0625) (the default region: the scene camera's eye and target, each +-2^-12 of the terrain's side)"));
+  CHECK(has(d.out, "\nPROVED: "));
 }

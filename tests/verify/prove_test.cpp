@@ -126,12 +126,15 @@ TEST_CASE("prove finds the w = 0 hole of prove_w0 that 1,000 random cameras of i
 
 TEST_CASE("prove is undecided, never proved, while regions are left open", "[verify][prove]") {
   const Terrain t = prepared(loadExample("rings_small.toml"));
-  ProveOptions o; // the default region: not decided at its root
+  ProveOptions o; // eye +-1 around the scene camera: not decided at its root
+  o.region.eyeLo = glm::vec3(9.0f, 24.0f, -71.0f);
+  o.region.eyeHi = glm::vec3(11.0f, 26.0f, -69.0f);
+  o.regionGiven = true;
   o.maxRegions = 1;
   o.threads = 1;
   const ProveReport r = proveScene(t, o);
   REQUIRE(r.error.empty());
-  CHECK(r.regionDefault);
+  CHECK_FALSE(r.regionDefault);
   CHECK(r.verdict == ProveVerdict::Undecided);
   CHECK(r.stats.regions == 1);
   CHECK(r.stats.regionsUndecided >= 1);
