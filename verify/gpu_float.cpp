@@ -15,6 +15,7 @@
 #include "verify/internal.h"
 
 #include "lod/lod_bound.h"
+#include "verify/prove_internal.h" // patchLodBound (prove_bridge.cpp)
 #include "verify/seam_proof.h" // sameEdgePoints
 
 #include <algorithm>
@@ -24,38 +25,6 @@
 namespace fftess::verify::detail {
 
 namespace {
-
-// lod_bridge.cpp's patchLod with the *Bound functions: the same scheme, parameters and neighbour inputs.
-lod::BoundPatchLod patchLodBound(const TerrainData& t, const TerrainPatch& p, const lod::BoundCamera& cam) {
-  const Lod& L = t.scene.lod;
-  const bool tile = t.adjacency;
-  const lod::TileAdjacency adj{L.screenSphere.clamp, L.screenSphere.reconstruction};
-  switch (L.scheme) {
-  case LodScheme::ScreenSphere:
-    return tile ? lod::nvidiaTileBound(p.lod, p.tile, cam, L.screenSphere)
-                : lod::screenSphereBound(p.lod, cam, L.screenSphere.sphere);
-  case LodScheme::PatchCenter: return lod::patchCenterBound(p.lod, cam, L.screenSphere.sphere);
-  case LodScheme::DistancePow2:
-    return tile ? lod::distancePow2TileBound(p.lod, p.tile, cam, L.distancePow2, adj)
-                : lod::distancePow2Bound(p.lod, cam, L.distancePow2);
-  case LodScheme::Bonaventura:
-    return tile ? lod::bonaventuraTileBound(p.lod, p.tile, cam, L.bonaventura, adj)
-                : lod::bonaventuraBound(p.lod, cam, L.bonaventura);
-  case LodScheme::ClipDiameter:
-    return tile ? lod::clipDiameterTileBound(p.lod, p.tile, cam, L.clipDiameter, adj)
-                : lod::clipDiameterBound(p.lod, cam, L.clipDiameter);
-  case LodScheme::Constant:
-    if (tile) return lod::constantTileBound(L.factor, p.tile, adj);
-    {
-      lod::BoundPatchLod r;
-      for (lod::Bound& x : r.factors) x = lod::Bound(L.factor);
-      return r;
-    }
-  case LodScheme::Geomorph: break; // refused by gpuFloatRefusal
-  case LodScheme::Shader: break;
-  }
-  return lod::BoundPatchLod{};
-}
 
 // What one run of the joint evaluation gave the pair's two edge factors.
 struct PairRun {

@@ -33,8 +33,8 @@ lod::BoundPatchLod patchLodBound(const TerrainData& t, const TerrainPatch& p, co
       for (lod::Bound& x : r.factors) x = lod::Bound(L.factor);
       return r;
     }
-  case LodScheme::Geomorph: break; // refused by proveScene
-  case LodScheme::Shader: break;   // refused by proveScene
+  case LodScheme::Geomorph: break; // refused by proveScene and gpuFloatRefusal
+  case LodScheme::Shader: break;   // refused by proveScene and gpuFloatRefusal
   }
   lod::BoundPatchLod r;
   for (lod::Bound& x : r.factors) x = lod::Bound::anything();
