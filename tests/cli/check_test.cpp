@@ -210,7 +210,7 @@ TEST_CASE("check, check --mesh and sweep build the terrain once", "[cli][check][
 // drawn one, so they agree; the verdict is the cracks (exit 1), never an internal error (exit 3). The JSON says
 // whether they agree, and lists what only one of them flags (nothing here).
 TEST_CASE("check --mesh beside a half-culled edge agrees with the edge check and exits 1 for the cracks",
-          "[cli][check][mesh]") {
+          "[cli][check][mesh][slow]") {
   const std::string js = clitest::tmpDir() + "/mesh_half_culled.json";
   const auto r = run({"check", clitest::source("docs/examples/rings_small.toml"), "--set", "lod.adjacency_clamp=none",
                       "--eye", "25.050155639648438,38.58116912841797,22.16835594177246", "--target",

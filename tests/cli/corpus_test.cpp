@@ -10,7 +10,7 @@
 
 using clitest::run;
 
-TEST_CASE("corpus: every .hashes file is what fftess tessellate --format hashes writes for its batch lines", "[cli]") {
+TEST_CASE("corpus: every .hashes file is what fftess tessellate --format hashes writes for its batch lines", "[cli][slow]") {
   for (const char* stem : {"quad-hw", "quad-hlsl", "quad-sweep", "tri-hw", "tri-hlsl", "isoline-hw", "isoline-hlsl"}) {
     const std::string path = clitest::source("corpus/" + std::string(stem) + ".hashes");
     INFO(path);

@@ -186,7 +186,7 @@ TEST_CASE("gpu float: scenes the model does not cover and unknown values are usa
   clitest::checkUsageError({"check", kRings, "--gpu-float", "fast"}, "--gpu-float 'fast': expected off|conformant");
 }
 
-TEST_CASE("prove: rings_small's default region is PROVED with the pow2 clamp and stated as the default", "[cli][prove]") {
+TEST_CASE("prove: rings_small's default region is PROVED with the pow2 clamp and stated as the default", "[cli][prove][slow]") {
   // The issue's first "Done when": `fftess prove docs/examples/rings_small.toml` says PROVED (exit 0); the region is
   // the scene camera's eye and target +-2^-12 of the terrain's side (256: +-0.0625), and the output says it is the
   // default one.

@@ -93,7 +93,7 @@ TEST_CASE("merging N = 1, 2, 7 shards of a sweep gives exactly the single run's 
   CHECK(run({"sweep", kRings, "--shard", "0/2"}).status == 2);
 }
 
-TEST_CASE("fftess bench prints the accuracy table and its work counters prove the skipped work", "[cli][bench]") {
+TEST_CASE("fftess bench prints the accuracy table and its work counters prove the skipped work", "[cli][bench][slow]") {
   const std::string js = clitest::tmpDir() + "/bench.json", md = clitest::tmpDir() + "/bench.md",
                     svg = clitest::tmpDir() + "/bench.svg";
   const clitest::Result r = run({"bench", "--scene", kRings, "--cameras", "2", "--mesh-cameras", "1", "--json", js,

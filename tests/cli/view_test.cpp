@@ -304,7 +304,7 @@ TEST_CASE("check --view of an unusable path exits 2 naming --view, and writes no
 }
 
 TEST_CASE("every text of check --svg, check --view, sweep --svg and bench --svg lies inside its picture",
-          "[cli][view][svg]") {
+          "[cli][view][svg][slow]") {
   const std::string d = clitest::tmpDir();
   const auto b = run({"bench", "--scene", clitest::source("docs/examples/rings_small.toml"), "--cameras", "1",
                       "--mesh-cameras", "1", "--repeats", "1", "-q", "--svg", d + "/fit-bench.svg"});

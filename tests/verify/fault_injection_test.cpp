@@ -314,7 +314,7 @@ void printTally(const char* title, const std::map<Kind, Tally>& tally) {
 
 } // namespace
 
-TEST_CASE("fault injection: every fault is found and nothing else", "[verify][faults]") {
+TEST_CASE("fault injection: every fault is found and nothing else", "[verify][faults][slow]") {
   std::map<Kind, Tally> tally;
   Harness rings = makeHarness("rings_small (screen_sphere, pow2, fbm)", "rings_small.toml", {}, false, tally);
   Harness grid = makeHarness("grid (distance_pow2, fractional_odd, ridge)", "grid.toml", {}, false, tally);
