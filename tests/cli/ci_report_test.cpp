@@ -242,8 +242,10 @@ TEST_CASE("ci: compare's SARIF and JUnit name each differing patch at its batch 
 }
 
 TEST_CASE("ci: --sarif and --junit are refused before any work when they name another output or an input", "[cli]") {
+  // Copies of the inputs: a regression must not overwrite the source tree's files.
   const std::string dir = clitest::tmpDir();
-  const std::string scene = clitest::source("docs/examples/terrain.toml");
+  const std::string scene = dir + "/refused scene.toml";
+  clitest::writeFile(scene, clitest::readFile(clitest::source("docs/examples/terrain.toml")));
   const std::string a = dir + "/refused.sarif", b = dir + "/refused.json";
   auto r = run({"sweep", scene, "--orbit", "2", "--sarif", a, "--junit", a});
   CHECK(r.status == 2);
@@ -257,9 +259,11 @@ TEST_CASE("ci: --sarif and --junit are refused before any work when they name an
   r = run({"check", scene, "--sarif", dir + "/no such dir/x.sarif"});
   CHECK(r.status == 2);
   CHECK(r.err.find("--sarif") != std::string::npos);
-  const std::string batch = clitest::source("docs/examples/compare_port.batch");
+  const std::string batch = dir + "/refused.batch";
+  clitest::writeFile(batch, clitest::readFile(clitest::source("docs/examples/compare_port.batch")));
   r = run({"compare", batch, clitest::source("docs/examples/compare_port_bug.csv"), "--junit", batch});
   CHECK(r.status == 2);
+  CHECK(clitest::readFile(scene) == clitest::readFile(clitest::source("docs/examples/terrain.toml")));
   CHECK(!clitest::fileExists(a));
   CHECK(!clitest::fileExists(b));
 }
