@@ -116,6 +116,7 @@ static std::unique_ptr<AtomicFile> gltfFile(const std::string& path) {
 // --sarif / --junit: a file checked now (a bad path names the option); null when not given.
 static std::unique_ptr<AtomicFile> ciFile(const char* option, const std::string& path) {
   if (path.empty()) return nullptr;
+  if (path == "-") throw UsageError(std::string(option) + " -: stdout carries the text or --json report; give a file");
   try {
     return std::make_unique<AtomicFile>(path);
   } catch (const UsageError& e) {

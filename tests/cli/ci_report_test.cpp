@@ -256,6 +256,9 @@ TEST_CASE("ci: --sarif and --junit are refused before any work when they name an
   r = run({"check", scene, "--junit", scene});
   CHECK(r.status == 2);
   CHECK(r.err.find("SCENE") != std::string::npos);
+  r = run({"check", scene, "--sarif", "-", "-q"}); // stdout carries the text or JSON report
+  CHECK(r.status == 2);
+  CHECK(r.out.empty());
   r = run({"check", scene, "--sarif", dir + "/no such dir/x.sarif"});
   CHECK(r.status == 2);
   CHECK(r.err.find("--sarif") != std::string::npos);
