@@ -289,6 +289,15 @@ CiReport SweepCi::finish(const vf::SweepResult& res, vf::Verdict verdict, size_t
                                       "run the sweep to the end"));
   }
   out.cases.push_back(verdictCase);
+  std::string nothing; // cameras that classified no shared edge: skipped cases in JUnit, a warning here
+  size_t nothingCount = 0;
+  for (const auto& [index, cam] : cameras_)
+    if (cam.done && cam.error.empty() && cam.stats.edgesChecked == 0 && nothingCount++ < 20)
+      nothing += (nothing.empty() ? "" : ", ") + std::to_string(index);
+  if (nothingCount > 0)
+    out.notes.push_back({"warning", std::to_string(nothingCount) + " cameras classified no shared edge (nothing checked "
+                                    "from them; every patch culled or out of view): " + nothing +
+                                    (nothingCount > 20 ? ", ..." : "")});
   out.notes.push_back({"note", "swept " + ctx_.file + ": " + std::to_string(res.camerasDone) + " of " +
                                    std::to_string(requested) + " cameras checked, " +
                                    std::to_string(res.camerasInvalid) + " invalid; " + checkedWords(res.total) +

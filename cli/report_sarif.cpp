@@ -32,12 +32,12 @@ std::string tidy(const std::string& p) {
   return out;
 }
 
-// The artifact location of a file: {"uri": relative, "uriBaseId": "SRCROOT"} for a path under the current directory,
+// The artifact location of a file: {"uri": relative, "uriBaseId": "%SRCROOT%"} for a path under the current directory,
 // else {"uri": "file:///..."}.
 ojson artifactLocation(const std::string& file, const std::string& cwd) {
   const std::string abs = tidy(file.empty() || file.front() != '/' ? cwd + "/" + file : file);
   if (!cwd.empty() && abs.compare(0, cwd.size() + 1, cwd + "/") == 0 && abs.find("/../") == std::string::npos)
-    return {{"uri", percentEncodePath(abs.substr(cwd.size() + 1))}, {"uriBaseId", "SRCROOT"}};
+    return {{"uri", percentEncodePath(abs.substr(cwd.size() + 1))}, {"uriBaseId", "%SRCROOT%"}};
   return {{"uri", "file://" + percentEncodePath(abs)}};
 }
 
@@ -130,7 +130,7 @@ std::string sarifText(const CiReport& r, const std::string& cwdIn) {
   if (!cmd.empty()) invocation["arguments"] = cmd;
   invocation["toolExecutionNotifications"] = notes;
   ojson run{{"tool", {{"driver", {{"name", "fftess"}, {"version", FFTESS_VERSION}, {"rules", rules}}}}}};
-  if (!cwd.empty()) run["originalUriBaseIds"] = {{"SRCROOT", {{"uri", "file://" + percentEncodePath(cwd) + "/"}}}};
+  if (!cwd.empty()) run["originalUriBaseIds"] = {{"%SRCROOT%", {{"uri", "file://" + percentEncodePath(cwd) + "/"}}}};
   run["automationDetails"] = {{"description", {{"text", r.suite}}}};
   run["invocations"] = ojson::array({invocation});
   run["results"] = results;

@@ -2,7 +2,7 @@
 // per cause (its fix as help.text), one result per CiResult (ruleId and ruleIndex of its cause, level, message.text,
 // the file as an artifactLocation with region.startLine, patch and edge as logicalLocations), the run's notes as
 // toolExecutionNotifications of its one invocation and its properties (verdict, what was checked). Files under the
-// current directory are relative URIs against uriBaseId "SRCROOT" (run.originalUriBaseIds: the directory), others
+// current directory are relative URIs against uriBaseId "%SRCROOT%" (run.originalUriBaseIds: the directory), others
 // absolute file URIs; both percent-encoded (RFC 3986). Pure function (getcwd for the base).
 #pragma once
 

@@ -173,6 +173,30 @@ TEST_CASE("ci: a check that classified no shared edge is an error in both files,
   CHECK(n.failures == 0);
 }
 
+TEST_CASE("ci: a sweep camera that classified no edge is skipped with the reason and a warning, a sweep that checked nothing is an error", "[cli]") {
+  const std::string dir = clitest::tmpDir();
+  const std::string away = dir + "/away.csv", mixed = dir + "/mixed.csv";
+  const std::string header = "eye_x,eye_y,eye_z,target_x,target_y,target_z\n", awayRow = "0,40,-60,0,400,-600\n";
+  clitest::writeFile(away, header + awayRow);
+  clitest::writeFile(mixed, header + awayRow + "0,40,-60,0,0,0\n");
+  const std::string scene = clitest::source("docs/examples/terrain.toml");
+  const std::string sarif = dir + "/away.sarif", junit = dir + "/away.xml";
+  REQUIRE(run({"sweep", scene, "--cameras", mixed, "-q", "--sarif", sarif, "--junit", junit}).status == 0);
+  const clitest::JunitCounts m = junitOf(junit);
+  CHECK(m.skipped == 1);
+  CHECK(clitest::readFile(junit).find("<skipped message=\"nothing checked: ") != std::string::npos);
+  const json mlog = sarifOf(sarif);
+  const std::string warning = mlog["runs"][0]["invocations"][0]["toolExecutionNotifications"][0]["message"]["text"];
+  CHECK(warning.find("1 cameras classified no shared edge") != std::string::npos);
+  REQUIRE(run({"sweep", scene, "--cameras", away, "-q", "--sarif", sarif, "--junit", junit}).status == 1);
+  const clitest::JunitCounts a = junitOf(junit);
+  CHECK(a.errors == 1);
+  const json alog = sarifOf(sarif);
+  REQUIRE(alog["runs"][0]["results"].size() == 1);
+  CHECK(alog["runs"][0]["results"][0]["level"] == "error");
+  CHECK(alog["runs"][0]["results"][0]["properties"]["finding_kind"] == "nothing_checked");
+}
+
 TEST_CASE("ci: check's findings are one failure each, grouped by cause, at the key's line, and findings that do not count are skipped with the reason", "[cli]") {
   const std::string dir = clitest::tmpDir();
   const std::string scene = clitest::source("docs/examples/broken_lod.toml");
