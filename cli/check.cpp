@@ -2,6 +2,7 @@
 // reports atomically, and turn the verdict into an exit status.
 #include "camera_file.h"
 #include "causes.h"
+#include "ci_scene.h"
 #include "commands.h"
 #include "common.h"
 #include "gpu_lod.h"
@@ -342,6 +343,8 @@ int runCheck(const CheckArgs& a) {
   // A disagreement of the two checks is a finding (exit 1), reported with both sides, never a clean verdict.
   const int status = mesh.diff.agree() ? verdictStatus(verdict, a.failOnTJunctions) : kExitFindings;
   if (talk) text += checkVerdictLine(verdict, r.stats, a.offscreen, mesh.diff.agree());
+  if (reports.ci()) // --sarif / --junit (docs/ci.md)
+    setCiReports(reports, checkCi(SceneCiContext(a, scene), cam, r, verdict, mesh.diff.agree(), status));
   // Reports first (atomically), then the text: a failure writing a report leaves no partial file.
   setCheckGltf(a, reports, terrain, cam, opt, r, verdict);
   writeCheckReports(a, reports, terrain, cam, r, a.mesh ? &mesh : nullptr, camerasFile);

@@ -70,6 +70,7 @@ struct SceneArgs {
   std::string gltf;         // --gltf FILE: the checked camera in 3D (check: its camera; sweep: the worst camera's)
   std::string view;         // check --view FILE.svg: what the camera sees (cli/report_view.h); "" for sweep
   std::string gpuFloat = "off"; // --gpu-float off|conformant (vf::CheckOptions::gpuFloat)
+  std::string sarif, junit; // --sarif FILE / --junit FILE: the findings for CI (cli/ci_scene.h, docs/ci.md)
 };
 
 struct CheckArgs : SceneArgs {
@@ -143,6 +144,7 @@ struct CompareArgs {
   int show = 20;
   int details = 4;
   std::string svg; // --svg FILE: the first differing patches drawn, reference over capture
+  std::string sarif, junit; // --sarif FILE / --junit FILE: every differing patch for CI (cli/ci_compare.h)
 };
 CLI::App* addCompare(CLI::App& app, CompareArgs& a);
 int runCompare(const CompareArgs& a);
@@ -161,6 +163,7 @@ struct DriverCheckArgs {
   std::string writeBatch;  // --write-batch FILE: the patches checked, as a batch file
   std::string svg;         // --svg FILE, as compare's
   uint64_t permuteCapture = 0; // --permute-capture SEED (test): the driver's records permuted before they are grouped
+  std::string sarif, junit;    // --sarif FILE / --junit FILE, as compare's
 };
 // fftess driver-check (cli/driver_check.cpp): the local GL driver's tessellator through the comparison of compare.
 CLI::App* addDriverCheck(CLI::App& app, DriverCheckArgs& a);

@@ -1,5 +1,6 @@
 // fftess compare PATCHES CAPTURE: another tessellator's output against the emulator, patch by patch, streamed
 // (compare/compare.h does the comparing; this file reads the files, prints and picks the exit status).
+#include "ci_compare.h"
 #include "common.h"
 #include "compare_report.h"
 #include "compare_svg.h"
@@ -273,6 +274,10 @@ CLI::App* addCompare(CLI::App& app, CompareArgs& a) {
   sub->add_option("--show", a.show, "Differing patches listed in full (default 20; all are counted)");
   sub->add_option("--details", a.details, "Differing points explained per patch (default 4)");
   sub->add_option("--svg", a.svg, "SVG of the first differing patches: reference and capture over each other");
+  sub->add_option("--sarif", a.sarif, "Write every differing patch as SARIF 2.1.0 to FILE, at its batch line (docs/ci.md)")
+      ->type_name("FILE");
+  sub->add_option("--junit", a.junit, "Write JUnit XML to FILE: a failing test case per differing patch (docs/ci.md)")
+      ->type_name("FILE");
   sub->footer("Example:\n  fftess compare docs/examples/compare_port.batch docs/examples/compare_port_bug.csv\n"
               "Exit status: 0 same, 1 differs, 2 bad usage or input (FILE:LINE), 3 internal error.");
   return sub;
@@ -280,7 +285,8 @@ CLI::App* addCompare(CLI::App& app, CompareArgs& a) {
 
 int runCompare(const CompareArgs& a) {
   if (a.patches == "-" && a.capture == "-") throw UsageError("PATCHES and CAPTURE cannot both be stdin");
-  refuseSameFiles({{"--svg", a.svg}}, {{"PATCHES", a.patches}, {"CAPTURE", a.capture}});
+  refuseSameFiles({{"--svg", a.svg}, {"--sarif", a.sarif}, {"--junit", a.junit}},
+                  {{"PATCHES", a.patches}, {"CAPTURE", a.capture}});
   std::unique_ptr<std::ifstream> pf, cf;
   std::istream& pin = openInput(a.patches, pf, "PATCHES");
   std::istream& cin = openInput(a.capture, cf, "CAPTURE");
@@ -294,6 +300,7 @@ int runCompare(const CompareArgs& a) {
   opt.emulator.flushDenormals = a.flushDenormals;
   opt.maxPointDetails = a.details;
   CompareSvg svg(a.svg, opt);
+  CompareCi ci(a.sarif, a.junit, "compare", a.patches == "-" ? "" : a.patches); // --sarif / --junit
   Tessellator tess;
   CompareReporter reporter(a.json, a.show, a.strictOrder, a.patches);
   CapturedPatch got;
@@ -312,6 +319,7 @@ int runCompare(const CompareArgs& a) {
       }
       reporter.add(index, line, p, c);
       svg.add(index, line, p, present ? &got : nullptr, c);
+      ci.add(index, line, p, c);
       if (present) haveGot = capture.next(got);
     }
     if (haveGot)
@@ -322,6 +330,7 @@ int runCompare(const CompareArgs& a) {
     throw UsageError(e.what());
   }
   svg.commit("fftess compare " + a.patches + " " + a.capture, reporter.summary());
+  ci.commit(reporter.summary(), reporter.summary().differing ? kExitFindings : kExitClean, a.patches + " " + a.capture);
   reporter.finish(capture.format() == CaptureFormat::Hex ? "hex" : "csv", "");
   return reporter.summary().differing ? kExitFindings : kExitClean;
 }

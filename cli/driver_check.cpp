@@ -6,6 +6,7 @@
 #include "compare_report.h"
 #include "random_batch.h"
 #include "port_bug.h"
+#include "ci_compare.h"
 #include "compare_svg.h"
 
 #include <CLI/CLI.hpp>
@@ -52,6 +53,12 @@ CLI::App* addDriverCheck(CLI::App& app, DriverCheckArgs& a) {
                   "are grouped, as a driver with its own order would emit them")
       ->check(CLI::Range(uint64_t(1), UINT64_MAX));
   sub->add_option("--svg", a.svg, "SVG of the first differing patches: reference and capture over each other");
+  sub->add_option("--sarif", a.sarif,
+                  "Write every differing patch as SARIF 2.1.0 to FILE, at its line in PATCHES (or, with --random, in "
+                  "the --write-batch file; docs/ci.md)")
+      ->type_name("FILE");
+  sub->add_option("--junit", a.junit, "Write JUnit XML to FILE: a failing test case per differing patch (docs/ci.md)")
+      ->type_name("FILE");
   sub->footer(
       "Example:\n  fftess driver-check --random 2000 --seed 7\n  fftess driver-check docs/examples/compare_port.batch\n"
       "  fftess driver-check --api vulkan --hardware --random 2000\n"
@@ -145,7 +152,8 @@ bool openDriver(const DriverCheckArgs& a, Driver& d) {
 
 int runDriverCheck(const DriverCheckArgs& a) {
   if (a.writeBatch == "-") throw UsageError("--write-batch '-': stdout carries the report; give a file");
-  refuseSameFiles({{"--write-batch", a.writeBatch}, {"--svg", a.svg}}, {{"PATCHES", a.patches}});
+  refuseSameFiles({{"--write-batch", a.writeBatch}, {"--svg", a.svg}, {"--sarif", a.sarif}, {"--junit", a.junit}},
+                  {{"PATCHES", a.patches}});
   const SimulatedPortBug simulated(a.portBug);
   std::vector<Item> items;
   std::string source;
@@ -187,6 +195,8 @@ int runDriverCheck(const DriverCheckArgs& a) {
   opt.strictOrder = a.strictOrder;
   opt.emulator.flushDenormals = a.flushDenormals;
   CompareSvg svg(a.svg, opt);
+  // --sarif / --junit: results at the patches' lines in PATCHES, or (--random) in the --write-batch file
+  CompareCi ci(a.sarif, a.junit, "driver-check", a.patches.empty() ? a.writeBatch : a.patches == "-" ? "" : a.patches);
   if (!a.writeBatch.empty()) writeBatch(a, items);
   std::string error;
   Driver driver;
@@ -225,9 +235,11 @@ int runDriverCheck(const DriverCheckArgs& a) {
       const PatchComparison cmp = comparePatch(items[i].patch, &c, opt, tess);
       reporter.add(int64_t(i), items[i].line, items[i].patch, cmp);
       svg.add(int64_t(i), items[i].line, items[i].patch, &c, cmp);
+      ci.add(int64_t(i), items[i].line, items[i].patch, cmp);
     }
   }
   svg.commit("fftess driver-check on " + driver.renderer + ": " + source, reporter.summary());
+  ci.commit(reporter.summary(), reporter.summary().differing ? kExitFindings : kExitClean, driver.renderer + ": " + source);
   reporter.finish(a.api, "driver: " + driver.renderer + " (" + driver.version + "), " + std::to_string(items.size()) +
                              " patches from " + source + "\n" + simulated.header());
   return reporter.summary().differing ? kExitFindings : kExitClean;

@@ -85,7 +85,8 @@ vf::CheckOptions checkOptions(const SceneArgs& a, const vf::Terrain& terrain) {
 
 // ---- shared plumbing ---------------------------------------------------------------------------------------------
 std::vector<FileArg> reportArgs(const SceneArgs& a) {
-  return {{"--json", a.json}, {"--svg", a.svg}, {"--gltf", a.gltf}, {"--view", a.view}};
+  return {{"--json", a.json}, {"--svg", a.svg}, {"--gltf", a.gltf}, {"--view", a.view}, {"--sarif", a.sarif},
+          {"--junit", a.junit}};
 }
 
 std::vector<FileArg> sceneInputs(const SceneArgs& a, const vf::Scene* scene) {
@@ -112,6 +113,17 @@ static std::unique_ptr<AtomicFile> gltfFile(const std::string& path) {
   }
 }
 
+// --sarif / --junit: a file checked now (a bad path names the option); null when not given.
+static std::unique_ptr<AtomicFile> ciFile(const char* option, const std::string& path) {
+  if (path.empty()) return nullptr;
+  if (path == "-") throw UsageError(std::string(option) + " -: stdout carries the text or --json report; give a file");
+  try {
+    return std::make_unique<AtomicFile>(path);
+  } catch (const UsageError& e) {
+    throw UsageError(std::string(option) + ": " + e.what());
+  }
+}
+
 ReportFiles::ReportFiles(const SceneArgs& a) {
   refuseSameFiles(reportArgs(a), sceneInputs(a, nullptr));
   if (!a.json.empty()) json_ = std::make_unique<AtomicFile>(a.json);
@@ -122,15 +134,19 @@ ReportFiles::ReportFiles(const SceneArgs& a) {
   } catch (const UsageError& e) {
     throw UsageError(std::string("--view: ") + e.what());
   }
+  sarif_ = ciFile("--sarif", a.sarif);
+  junit_ = ciFile("--junit", a.junit);
 }
 
 void ReportFiles::commit() {
-  AtomicFile* files[4];
+  AtomicFile* files[6];
   size_t n = 0;
   if (json_) files[n++] = json_.get();
   if (svg_) files[n++] = svg_.get();
   if (gltf_) files[n++] = gltf_.get();
   if (view_) files[n++] = view_.get();
+  if (sarif_) files[n++] = sarif_.get();
+  if (junit_) files[n++] = junit_.get();
   commitAll(files, n);
 }
 
@@ -179,6 +195,13 @@ void addSceneOptions(CLI::App* sub, SceneArgs& a) {
                   "log2, pow) and report edges whose match depends on it (\"may crack on some GPUs\"; exit 1); "
                   "built-in lod.scheme on the CPU path only (docs/verify.md, \"GPU float freedom\")")
       ->type_name("off|conformant");
+  sub->add_option("--sarif", a.sarif,
+                  "Write the findings as SARIF 2.1.0 to FILE (code scanning: each at the scene key its fix names, "
+                  "patch and edge; docs/ci.md)")
+      ->type_name("FILE");
+  sub->add_option("--junit", a.junit,
+                  "Write JUnit XML to FILE (check: a test case per cause; sweep: per camera; docs/ci.md)")
+      ->type_name("FILE");
   sub->add_flag("--gpu-hardware", a.gpuHardware,
                 "lod.shader / lod.evaluate = \"gpu\": use a GPU's EGL device (default: Mesa's llvmpipe first)");
 }

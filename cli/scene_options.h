@@ -52,12 +52,16 @@ public:
   void setView(std::string text) { if (view_) view_->buffer() = std::move(text); } // check --view
   AtomicFile* json() const { return json_.get(); } // null without --json (sweep streams into it)
   AtomicFile* svg() const { return svg_.get(); }   // null without --svg
+  void setSarif(std::string text) { if (sarif_) sarif_->buffer() = std::move(text); } // --sarif (ci_scene.h)
+  void setJunit(std::string text) { if (junit_) junit_->buffer() = std::move(text); } // --junit
+  bool ci() const { return sarif_ || junit_; } // --sarif or --junit was given
   void commit();
 
 private:
   std::unique_ptr<AtomicFile> json_, svg_;
   std::unique_ptr<AtomicFile> gltf_; // --gltf
   std::unique_ptr<AtomicFile> view_; // check --view
+  std::unique_ptr<AtomicFile> sarif_, junit_; // --sarif, --junit
 };
 
 } // namespace fftess::cli

@@ -2,6 +2,7 @@
 // progress and Ctrl-C, tally the findings by cause, print the summary, write the JSON / SVG reports atomically.
 #include "camera_file.h"
 #include "causes.h"
+#include "ci_scene.h"
 #include "commands.h"
 #include "common.h"
 #include "gpu_lod.h"
@@ -250,6 +251,15 @@ public:
   // --gltf: the worst camera checked again, in 3D (false: no camera was checked, nothing to show).
   bool worstGltf(ReportFiles& reports, const vf::SweepResult& res) const;
   std::string worstWhy() const; // why worst_ is the camera --gltf shows
+  void setCi(SweepCi* ci) { ci_ = ci; } // --sarif / --junit: fed every camera's report and result
+  size_t requested() const { return requested_; }
+  std::string eyeWords(size_t g) const { // camera g's eye and target, for --junit's test case names
+    const vf::Camera c = cams_.at(g);
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "eye (%g, %g, %g) target (%g, %g, %g)", double(c.eye.x), double(c.eye.y),
+                  double(c.eye.z), double(c.target.x), double(c.target.y), double(c.target.z));
+    return buf;
+  }
 
 private:
   void emitJson(const std::string& text);
@@ -292,6 +302,7 @@ private:
   void noteWorst(size_t g, const vf::CameraResult& c);
   FactorDiffTally gpuDiffs_; // lod.evaluate = "gpu" / lod.shader: GPU vs C++ factors (cli/gpu_lod.h)
   json camerasFile_;         // --cameras: the file, its hash (shards must agree), its camera count; null otherwise
+  SweepCi* ci_ = nullptr;    // --sarif / --junit
 };
 
 // Into the temporary file (or stdout) now; a FIFO or device is opened only when the report is complete (it would
@@ -352,6 +363,7 @@ void SweepRun::onCamera(const vf::CameraResult& c) {
   const size_t g = plan_.global(c.cameraIndex);
   endChecked_ = std::max(endChecked_, g + 1);
   if (!c.error.empty() && g < firstInvalid_) firstInvalid_ = g, firstInvalidError_ = c.error;
+  if (ci_) ci_->addCamera(g, c);
   if (c.done && !a_.gltf.empty()) noteWorst(g, c);
   if (c.done) {
     if (c.stats.holes > 0) ++holeCameras_;
@@ -381,6 +393,7 @@ vf::SweepResult SweepRun::run(const std::atomic<bool>* cancel, bool talk, const 
   so.onReport = [this](size_t local, const vf::Report& r) {
     tally_.add(plan_.global(local), r);
     gpuDiffs_.add(plan_.global(local), r);
+    if (ci_) ci_->addReport(plan_.global(local), r);
   };
   so.onCamera = [this](const vf::CameraResult& c) { onCamera(c); };
   if (talk)
@@ -529,6 +542,8 @@ int runSweep(const SweepArgs& a) {
   if (!a.cameras.empty()) file = std::make_unique<CameraFile>(readCameraFile(a.cameras, terrain.scene().camera));
   SweepRun sweep(a, plan, terrain, opt, reports.json(), reports.svg(), file.get());
   file.reset(); // its cameras were moved into the sweep's CameraSet
+  std::unique_ptr<SweepCi> ci; // --sarif / --junit
+  if (reports.ci()) sweep.setCi((ci = std::make_unique<SweepCi>(SceneCiContext(a, terrain.scene()))).get());
   const bool talk = !a.quiet && a.json != "-";
   const std::string& sceneName = terrain.scene().name;
   const std::string label = a.label.empty() ? (sceneName.empty() ? a.scene : sceneName) : a.label;
@@ -537,6 +552,7 @@ int runSweep(const SweepArgs& a) {
   const vf::Verdict verdict = vf::verdictOf(res, a.offscreen);
   const int status = sweepStatus(res, verdict, a.failOnTJunctions);
   const std::string text = talk ? sweep.summaryText(res, label, verdict) : "";
+  if (ci) setCiReports(reports, ci->finish(res, verdict, sweep.requested(), status, [&](size_t g) { return sweep.eyeWords(g); }));
   sweep.finishReports(res);
   if (!sweep.worstGltf(reports, res)) { // no camera checked: nothing to show in 3D
     reports.dropGltf();

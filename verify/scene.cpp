@@ -102,6 +102,16 @@ bool applyOverride(toml::table& root, const std::string& ov, std::map<std::strin
   return true;
 }
 
+// Scene::keyLines: every key of a table (recursively, not into arrays) with the line toml++ recorded for it.
+void recordKeyLines(const toml::table& t, const std::string& prefix, std::map<std::string, int>& lines) {
+  for (const auto& [k, node] : t) {
+    const std::string key = prefix + std::string(k.str());
+    if (k.source().begin) lines[key] = static_cast<int>(k.source().begin.line);
+    else if (node.source().begin) lines[key] = static_cast<int>(node.source().begin.line);
+    if (const toml::table* sub = node.as_table()) recordKeyLines(*sub, key + ".", lines);
+  }
+}
+
 SceneResult parseImpl(const std::string& text, const std::string& source, const std::vector<std::string>& overrides,
                       const std::string& baseDir) {
   SceneResult res;
@@ -114,6 +124,8 @@ SceneResult parseImpl(const std::string& text, const std::string& source, const 
     res.error = os.str();
     return res;
   }
+  std::map<std::string, int> keyLines;
+  recordKeyLines(root, "", keyLines); // before the overrides: the file's own lines
   std::map<std::string, std::string> overridden;
   for (const std::string& ov : overrides)
     if (!applyOverride(root, ov, overridden, res.error)) return res;
@@ -128,6 +140,7 @@ SceneResult parseImpl(const std::string& text, const std::string& source, const 
     res.error = source + ": " + e.what();
     return res;
   }
+  res.scene.keyLines = std::move(keyLines);
   if (!detail::hashSceneContent(text, overrides, res.scene, res.error)) return res;
   res.ok = true;
   return res;

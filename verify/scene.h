@@ -14,6 +14,7 @@
 
 #include <array>
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -360,6 +361,11 @@ struct Scene {
   // override, the heightmap's texels, the lod.shader file's bytes and (layout.kind = "patches") layout.file's bytes.
   // Shards of one sweep must agree (fftess merge).
   uint64_t contentHash = 0;
+  // Where the file sets each key: dotted key ("lod.adjacency_clamp", "camera.eye"; a table's own name for its header,
+  // "lod") -> its 1-based line in the file. Keys of the file only: a key --set adds has no line, one --set replaces
+  // keeps the file's. Arrays of tables ([[camera_path]]) are not listed. For reports that point at the key
+  // (fftess check --sarif / --junit).
+  std::map<std::string, int> keyLines;
 };
 
 // Result of loading: either a scene or an error message "file:line:col: key: what is wrong".
