@@ -231,7 +231,8 @@ void CompareReporter::finish(const std::string& format, const std::string& heade
     for (PortBug b : all) ex.push_back(toString(b));
     j["explained_by"] = ex;
     j["listed"] = listed_;
-    writeStdout(j.dump(2) + "\n");
+    if (sink_) *sink_ = j.dump(2) + "\n";
+    else writeStdout(j.dump(2) + "\n");
   } else {
     text_ += "summary: " + std::to_string(sum_.patches) + " patches, " + std::to_string(sum_.same) + " same, " +
              std::to_string(sum_.differing) + " differ";
@@ -296,6 +297,7 @@ int runCompare(const CompareArgs& a) {
   CompareSvg svg(a.svg, opt);
   Tessellator tess;
   CompareReporter reporter(a.json, a.show, a.strictOrder, a.patches);
+  reporter.setJsonSink(a.jsonOut);
   CapturedPatch got;
   bool haveGot = false;
   try {
