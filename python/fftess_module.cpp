@@ -14,6 +14,7 @@
 #include <pybind11/stl.h>
 
 #include <cstring>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
@@ -96,6 +97,10 @@ py::tuple tessellate(const std::string& domain, const std::string& partitioning,
   return py::make_tuple(points, indices, pointOffsets, indexOffsets);
 }
 
+// check, sweep and compare run one at a time: they share the command line's process-wide state (the temporary report
+// files a signal removes, sweep's Ctrl-C flag). Taken with the GIL released, so other Python threads run meanwhile.
+std::mutex gCommandMutex;
+
 // The report text as the dict Python's json module reads from the --json file.
 py::object dictOf(const std::string& text) { return py::module_::import("json").attr("loads")(text); }
 
@@ -144,6 +149,7 @@ py::object check(const std::string& scene, const py::object& overrides, const st
   std::string text;
   {
     py::gil_scoped_release release;
+    std::lock_guard<std::mutex> lock(gCommandMutex);
     text = cli::checkReportText(a);
   }
   return dictOf(text);
@@ -167,11 +173,14 @@ py::object sweep(const std::string& scene, const py::object& overrides, std::opt
   a.noVisibleFirst = !visibleFirst;
   a.noResultCache = !resultCache;
   std::string text;
+  bool interrupted = false;
   {
     py::gil_scoped_release release;
+    std::lock_guard<std::mutex> lock(gCommandMutex);
     text = cli::sweepReportText(a);
+    interrupted = cli::sweepInterrupted();
   }
-  if (cli::sweepInterrupted()) { // Ctrl-C stopped the sweep: Python's answer to it
+  if (interrupted) { // Ctrl-C stopped the sweep: Python's answer to it
     PyErr_SetNone(PyExc_KeyboardInterrupt);
     throw py::error_already_set();
   }
@@ -193,6 +202,7 @@ py::object compare(const std::string& patches, const std::string& capture, const
   std::string text;
   {
     py::gil_scoped_release release;
+    std::lock_guard<std::mutex> lock(gCommandMutex);
     text = cli::compareReportText(a);
   }
   return dictOf(text);

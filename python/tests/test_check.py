@@ -35,7 +35,7 @@ def test_overrides_are_the_command_lines_set():
     as_list = fftess.check(scene, ["camera.eye=[0.0, 20.0, -45.0]", "lod.target_pixels=6.0"])
     want = cli_json_report("check", scene, "--set", "camera.eye=[0.0, 20.0, -45.0]", "--set", "lod.target_pixels=6.0")
     assert without_process_counts(as_dict) == without_process_counts(as_list) == without_process_counts(want)
-    assert as_dict["overrides"] == ["camera.eye=[0.0, 20.0, -45.0]", "lod.target_pixels=6.0"]
+    assert as_dict["scene"]["overrides"] == ["camera.eye=[0.0, 20.0, -45.0]", "lod.target_pixels=6.0"]
 
 
 def test_bad_scene_path_raises_value_error_naming_it(tmp_path):
