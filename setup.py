@@ -57,6 +57,8 @@ class CMakeBuild(build_ext):
             raise RuntimeError(f"{built} not built (found {found}): the build tree's Python is not {sys.executable}")
         dest = Path(self.get_ext_fullpath(ext.name))
         dest.parent.mkdir(parents=True, exist_ok=True)
+        for stale in dest.parent.glob("_fftess*"):  # an earlier build's (build-python/ stays between installs)
+            stale.unlink()
         shutil.copyfile(built, dest)
 
 
