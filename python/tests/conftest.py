@@ -7,8 +7,6 @@ import sys
 import tempfile
 from pathlib import Path
 
-import pytest
-
 SOURCE = Path(os.environ.get("FFTESS_SOURCE_DIR", Path(__file__).resolve().parents[2]))
 EXAMPLES = SOURCE / "docs" / "examples"
 GOLDEN = Path(os.environ.get("FFTESS_GOLDEN_DIR", SOURCE.parent / "shared" / "golden"))
@@ -70,8 +68,3 @@ def validate_against_schema(report):
     resolver = RefResolver(base_uri=schema_file.resolve().as_uri(), referrer=schema)
     Draft202012Validator(schema, resolver=resolver).validate(report)
     return True
-
-
-@pytest.fixture
-def tmp(tmp_path):
-    return tmp_path
