@@ -28,6 +28,7 @@ packages=(
   glslang-tools spirv-cross glslang-dev libspirv-cross-c-shared-dev
   libegl-dev libgl-dev libopengl-dev libegl-mesa0 libgl1-mesa-dri
   libvulkan-dev mesa-vulkan-drivers
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-pip python3-setuptools python3-wheel
 )
 
 install_packages() {
@@ -47,7 +48,9 @@ install_packages() {
 }
 
 build() {
-  cmake -S . -B "$BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE="$BUILD_TYPE"
+  # The Python module (python/) for Debian's python3, whose packages the list above installs (not a python3 that comes
+  # first on PATH, e.g. pyenv's).
+  cmake -S . -B "$BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE="$BUILD_TYPE" -DPython3_EXECUTABLE=/usr/bin/python3
   cmake --build "$BUILD_DIR" -j "$JOBS"
 }
 

@@ -145,6 +145,7 @@ struct CompareArgs {
   int details = 4;
   std::string svg; // --svg FILE: the first differing patches drawn, reference over capture
   std::string sarif, junit; // --sarif FILE / --junit FILE: every differing patch for CI (cli/ci_compare.h)
+  std::string* jsonOut = nullptr; // with json: the report goes here instead of stdout (cli/report_api.h)
 };
 CLI::App* addCompare(CLI::App& app, CompareArgs& a);
 int runCompare(const CompareArgs& a);

@@ -232,7 +232,8 @@ void CompareReporter::finish(const std::string& format, const std::string& heade
     for (PortBug b : all) ex.push_back(toString(b));
     j["explained_by"] = ex;
     j["listed"] = listed_;
-    writeStdout(j.dump(2) + "\n");
+    if (sink_) *sink_ = j.dump(2) + "\n";
+    else writeStdout(j.dump(2) + "\n");
   } else {
     text_ += "summary: " + std::to_string(sum_.patches) + " patches, " + std::to_string(sum_.same) + " same, " +
              std::to_string(sum_.differing) + " differ";
@@ -303,6 +304,7 @@ int runCompare(const CompareArgs& a) {
   CompareCi ci(a.sarif, a.junit, "compare", a.patches == "-" ? "" : a.patches); // --sarif / --junit
   Tessellator tess;
   CompareReporter reporter(a.json, a.show, a.strictOrder, a.patches);
+  reporter.setJsonSink(a.jsonOut);
   CapturedPatch got;
   bool haveGot = false;
   try {

@@ -30,6 +30,8 @@ public:
   void add(int64_t index, int line, const Patch& patch, const PatchComparison& c);
   void finish(const std::string& format, const std::string& header);
   const CompareSummary& summary() const { return sum_; }
+  // The JSON report into *out instead of stdout (null: stdout).
+  void setJsonSink(std::string* out) { sink_ = out; }
   // A top-level key of the JSON report (after "source"), e.g. driver-check's "port_bug".
   void addJsonField(const std::string& key, nlohmann::ordered_json value) { extra_[key] = std::move(value); }
 
@@ -41,6 +43,7 @@ private:
   nlohmann::ordered_json listed_;
   nlohmann::ordered_json extra_ = nlohmann::ordered_json::object();
   CompareSummary sum_;
+  std::string* sink_ = nullptr;
 };
 
 } // namespace fftess::cli
