@@ -4,8 +4,9 @@
 #  2. docs/examples/consumer (find_package(fftess COMPONENTS tessellator compare lod verify)) configures, builds and
 #     runs: each component used for real, each program's claim checked, tessellate_patch's output and terrain_check's
 #     verdict and counts against the installed binary's (below);
-#  3. a project that asks for verify alone gets lod, tessellator and base with it, not compare; an optional unknown
-#     component is reported not found; every installed header compiles from the install tree, as <fftess/...>;
+#  3. a project that asks for verify alone gets lod, tessellator and base with it, not compare, and every installed
+#     header compiles there, as <fftess/...>; compare alone gets tessellator and base; an optional unknown component
+#     is reported not found;
 #  4. find_package(fftess COMPONENTS nosuch) fails, naming the component and the real ones.
 # Same compiler, generator and sanitizers as this build (a sanitized static library needs them at link time).
 # Arguments: -DBUILD -DSOURCE -DGENERATOR -DCXX -DSANITIZE -DVERSION.
@@ -81,30 +82,43 @@ step(${prefix}/bin/fftess check ${SOURCE}/docs/examples/terrain.toml)
 expect("${last_out}" "\n  patches +${patches} [^\n]*\n  edges checked +${edges} .*\n${verdict}\n$"
        "the installed `fftess check` against terrain_check (fftess::verify)")
 
-# 3. verify alone; every installed header compiled from the install tree.
+# 3. One component alone (alone(COMPONENT LOADED NOT_LOADED SOURCE_TEXT)): its find_package defines the targets it
+# needs and no others, finds their dependencies itself (Threads, glm, CGAL, toml++), reports an optional unknown
+# component not found, and SOURCE_TEXT compiles against fftess::COMPONENT from the install tree.
+function(alone component loaded not_loaded text)
+  set(dir ${work}/alone-${component})
+  file(WRITE ${dir}/source.cpp "${text}")
+  file(WRITE ${dir}/CMakeLists.txt "cmake_minimum_required(VERSION 3.20)
+project(alone CXX)
+find_package(fftess CONFIG REQUIRED COMPONENTS ${component} OPTIONAL_COMPONENTS nosuch)
+foreach(t ${loaded})
+  if(NOT TARGET fftess::\${t})
+    message(FATAL_ERROR \"COMPONENTS ${component}: no fftess::\${t}\")
+  endif()
+endforeach()
+foreach(t ${not_loaded})
+  if(TARGET fftess::\${t})
+    message(FATAL_ERROR \"COMPONENTS ${component}: fftess::\${t} loaded too\")
+  endif()
+endforeach()
+if(fftess_nosuch_FOUND OR NOT fftess_${component}_FOUND OR NOT fftess_FOUND)
+  message(FATAL_ERROR \"COMPONENTS ${component}: the FOUND variables are wrong\")
+endif()
+add_library(source OBJECT source.cpp)
+target_link_libraries(source PRIVATE fftess::${component})
+")
+  step(${CMAKE_COMMAND} -S ${dir} -B ${dir}/build ${configure})
+  step(${CMAKE_COMMAND} --build ${dir}/build)
+endfunction()
+# verify alone, with every installed header as <fftess/...>; compare alone (the port's suite of docs/compare.md).
 set(includes "")
 foreach(h IN LISTS headers)
   string(APPEND includes "#include <${h}>\n")
 endforeach()
-file(WRITE ${work}/alone/all_headers.cpp "${includes}")
-file(WRITE ${work}/alone/CMakeLists.txt [=[
-cmake_minimum_required(VERSION 3.20)
-project(verify_alone CXX)
-find_package(fftess CONFIG REQUIRED COMPONENTS verify OPTIONAL_COMPONENTS nosuch)
-foreach(t fftess::verify fftess::lod fftess::tessellator fftess::base)
-  if(NOT TARGET ${t})
-    message(FATAL_ERROR "COMPONENTS verify: no ${t}")
-  endif()
-endforeach()
-if(TARGET fftess::compare OR fftess_nosuch_FOUND OR NOT fftess_verify_FOUND OR NOT fftess_FOUND)
-  message(FATAL_ERROR "COMPONENTS verify: compare loaded, or the FOUND variables wrong")
-endif()
-add_library(all_headers OBJECT all_headers.cpp)
-target_link_libraries(all_headers PRIVATE fftess::verify)
-]=])
-step(${CMAKE_COMMAND} -S ${work}/alone -B ${work}/alone/build ${configure})
-step(${CMAKE_COMMAND} --build ${work}/alone/build)
+alone(verify "verify lod tessellator base" "compare" "${includes}")
 message(STATUS "verify alone: lod, tessellator and base loaded, compare not; ${header_count} installed headers compile")
+alone(compare "compare tessellator base" "lod verify" "#include <fftess/compare/compare.h>\n")
+message(STATUS "compare alone: tessellator and base loaded, lod and verify not")
 
 # 4. An unknown component: the find_package fails and says why.
 file(WRITE ${work}/nosuch/CMakeLists.txt

@@ -5,11 +5,17 @@
 // the same factor for it.
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 
 #include <glm/glm.hpp>
 
-#include <fftess/base/bits.h>
 #include <fftess/lod/lod.h>
+
+static uint32_t bitsOf(float f) { // as fftess::bitsOf (fftess/base/bits.h): through memcpy, never a pointer cast
+  uint32_t u;
+  std::memcpy(&u, &f, sizeof u);
+  return u;
+}
 
 int main() {
   using namespace fftess::lod;
@@ -32,13 +38,13 @@ int main() {
   const uint32_t expected[6] = {0x40dec075, 0x40dc941f, 0x40dec077, 0x40e0f7dd, 0x40dec5fe, 0x40dec076};
   int failures = 0;
   for (int i = 0; i < 6; ++i) {
-    const uint32_t bits = fftess::bitsOf(a.factors[i]);
+    const uint32_t bits = bitsOf(a.factors[i]);
     std::printf("factor %d: %.9g (0x%08x)%s\n", i, double(a.factors[i]), unsigned(bits),
                 bits == expected[i] ? "" : " expected other bits");
     failures += bits == expected[i] ? 0 : 1;
   }
   // The shared edge: the left patch's Ueq1 (+x) is the right patch's Ueq0 (-x).
-  const bool shared = fftess::bitsOf(a.factors[2]) == fftess::bitsOf(b.factors[0]);
+  const bool shared = bitsOf(a.factors[2]) == bitsOf(b.factors[0]);
   std::printf("shared edge: %s\n", shared ? "same bits" : "different bits");
   return failures == 0 && shared ? 0 : 1;
 }
