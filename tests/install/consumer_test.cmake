@@ -7,7 +7,8 @@
 #  3. a project that asks for verify alone gets lod, tessellator and base with it, not compare, and every installed
 #     header compiles there, as <fftess/...>; compare alone gets tessellator and base; an optional unknown component
 #     is reported not found;
-#  4. find_package(fftess COMPONENTS nosuch) fails, naming the component and the real ones.
+#  4. find_package(fftess COMPONENTS nosuch) fails, naming the component and the real ones; from a tree with some
+#     components installed, asking for another fails naming the one not installed.
 # Same compiler, generator and sanitizers as this build (a sanitized static library needs them at link time).
 # Arguments: -DBUILD -DSOURCE -DGENERATOR -DCXX -DSANITIZE -DVERSION.
 set(prefix ${BUILD}/install-test)
@@ -120,14 +121,27 @@ message(STATUS "verify alone: lod, tessellator and base loaded, compare not; ${h
 alone(compare "compare tessellator base" "lod verify" "#include <fftess/compare/compare.h>\n")
 message(STATUS "compare alone: tessellator and base loaded, lod and verify not")
 
-# 4. An unknown component: the find_package fails and says why.
-file(WRITE ${work}/nosuch/CMakeLists.txt
-     "cmake_minimum_required(VERSION 3.20)\nproject(nosuch NONE)\nfind_package(fftess CONFIG REQUIRED COMPONENTS nosuch)\n")
-execute_process(COMMAND ${CMAKE_COMMAND} -S ${work}/nosuch -B ${work}/nosuch/build -DCMAKE_PREFIX_PATH=${prefix}
-                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-string(REGEX REPLACE "[ \t\n]+" " " err "${err}")
-if(rc EQUAL 0 OR NOT err MATCHES "fftess has no component 'nosuch'; its components are: tessellator compare lod verify")
-  message(FATAL_ERROR "find_package(fftess COMPONENTS nosuch): expected a failure naming the component, got "
-                      "${rc}:\n${out}\n${err}")
-endif()
-message(STATUS "COMPONENTS nosuch: refused")
+# 4. A component that cannot be loaded: find_package(fftess CONFIG REQUIRED COMPONENTS ...) from PREFIX fails and
+# says why (refused(PREFIX COMPONENT MESSAGE)). The check comes before any dependency is looked for: no language.
+function(refused from component text)
+  set(dir ${work}/refused-${component})
+  file(WRITE ${dir}/CMakeLists.txt "cmake_minimum_required(VERSION 3.20)\nproject(refused NONE)\n"
+                                   "find_package(fftess CONFIG REQUIRED COMPONENTS ${component})\n")
+  execute_process(COMMAND ${CMAKE_COMMAND} -S ${dir} -B ${dir}/build -DCMAKE_PREFIX_PATH=${from}
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  string(REGEX REPLACE "[ \t\n]+" " " err "${err}")
+  string(FIND "${err}" "${text}" at)
+  if(rc EQUAL 0 OR at EQUAL -1)
+    message(FATAL_ERROR "find_package(fftess COMPONENTS ${component}): expected a failure saying \"${text}\", got "
+                        "${rc}:\n${out}\n${err}")
+  endif()
+  message(STATUS "COMPONENTS ${component}: refused: ${text}")
+endfunction()
+refused(${prefix} nosuch "fftess has no component 'nosuch'; its components are: tessellator compare lod verify")
+# The tessellator and verify components installed alone (cmake --install --component): verify needs lod.
+set(partial ${work}/partial-install)
+foreach(c tessellator verify)
+  step(${CMAKE_COMMAND} --install ${BUILD} --prefix ${partial} --component ${c})
+endforeach()
+refused(${partial} compare "fftess: component 'compare' is not installed in ${partial}/")
+refused(${partial} verify "fftess: component 'verify' needs 'lod', which is not installed in ${partial}/")
