@@ -8,6 +8,9 @@
 # The GPU modules (gl/, gpu_lod/, vk/) are not installed: only the cli links them.
 include(CMakePackageConfigHelpers)
 install(TARGETS fftess RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT cli)
+if(TARGET fftess_bench) # beside the binary, where `fftess bench --micro` runs it; OPTIONAL: a build without it installs
+  install(TARGETS fftess_bench RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT cli OPTIONAL)
+endif()
 set(FFTESS_CONFIG_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/fftess)
 configure_file(${CMAKE_CURRENT_LIST_DIR}/fftessConfig.cmake.in ${CMAKE_BINARY_DIR}/fftessConfig.cmake @ONLY)
 write_basic_package_version_file(${CMAKE_BINARY_DIR}/fftessConfigVersion.cmake VERSION ${PROJECT_VERSION}

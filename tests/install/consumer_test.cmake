@@ -1,6 +1,7 @@
 # ctest "install:consumer": cmake --install of the build tree into BUILD/install-test, then, from BUILD/consumer-test,
 # against that tree only (docs/architecture.md, "Install"):
-#  1. the installed bin/fftess runs (--version names this build's version); no internal header is installed;
+#  1. the installed bin/fftess runs (--version names this build's version; bench --micro finds the installed
+#     fftess_bench when the build has one); no internal header is installed;
 #  2. docs/examples/consumer (find_package(fftess COMPONENTS tessellator compare lod verify)) configures, builds and
 #     runs: each component used for real, each program's claim checked, tessellate_patch's output and terrain_check's
 #     verdict and counts against the installed binary's (below);
@@ -10,7 +11,7 @@
 #  4. find_package(fftess COMPONENTS nosuch) fails, naming the component and the real ones; from a tree with some
 #     components installed, asking for another fails naming the one not installed.
 # Same compiler, generator and sanitizers as this build (a sanitized static library needs them at link time).
-# Arguments: -DBUILD -DSOURCE -DGENERATOR -DCXX -DSANITIZE -DVERSION.
+# Arguments: -DBUILD -DSOURCE -DGENERATOR -DCXX -DSANITIZE -DVERSION -DBENCH (1: the build has fftess_bench).
 set(prefix ${BUILD}/install-test)
 set(work ${BUILD}/consumer-test)
 file(REMOVE_RECURSE ${prefix} ${work})
@@ -37,6 +38,10 @@ endfunction()
 step(${CMAKE_COMMAND} --install ${BUILD} --prefix ${prefix})
 step(${prefix}/bin/fftess --version)
 expect("${last_out}" "^fftess ${VERSION}\n$" "installed bin/fftess --version")
+if(BENCH) # the build has fftess_bench (FFTESS_BENCHMARKS): installed beside the binary, `fftess bench --micro` runs it
+  step(${prefix}/bin/fftess bench --micro --benchmark_list_tests=true)
+  expect("${last_out}" "^BM_" "installed bin/fftess bench --micro")
+endif()
 file(GLOB_RECURSE headers RELATIVE ${prefix}/include ${prefix}/include/*.h)
 list(LENGTH headers header_count)
 foreach(h IN LISTS headers)
