@@ -46,7 +46,8 @@ file(GLOB_RECURSE headers RELATIVE ${prefix}/include ${prefix}/include/*.h)
 list(LENGTH headers header_count)
 foreach(h IN LISTS headers)
   if(h MATCHES "internal|testing\\.h$" OR NOT h MATCHES "^fftess/[a-z_]+/[a-z_0-9]+\\.h$")
-    message(FATAL_ERROR "installed ${h}: an internal header (docs/architecture.md) or not under include/fftess/<module>/")
+    message(FATAL_ERROR "installed ${h}: an internal header (docs/architecture.md) or not under "
+                        "include/fftess/<module>/")
   endif()
 endforeach()
 
@@ -70,17 +71,20 @@ if(NOT library_hex STREQUAL last_out)
                       "${library_hex}\n---\n${last_out}")
 endif()
 step(${work}/build/port_tests)
-expect("${last_out}" "^patch 0: same [^\n]*\npatch 1: [a-z_]+ \\([0-9]+ primitives\\), reproduced by outer_factors_rotated\npatch 2: same "
+expect("${last_out}" "^patch 0: same [^\n]*\npatch 1: [a-z_]+ \\([0-9]+ primitives\\), reproduced by \
+outer_factors_rotated\npatch 2: same "
        "port_tests (fftess::compare)")
 message(STATUS "port_tests:\n${last_out}")
 step(${work}/build/lod_factor)
 expect("${last_out}" "shared edge: same bits\n$" "lod_factor (fftess::lod)")
 step(${work}/build/terrain_check ${SOURCE}/docs/examples/terrain.toml)
-expect("${last_out}" "terrain.toml: watertight \\([0-9]+ patches, [1-9][0-9]* shared edges checked, 0 cracks, 0 holes\\)"
+expect("${last_out}" "terrain.toml: watertight \\([0-9]+ patches, [1-9][0-9]* shared edges checked, 0 cracks, \
+0 holes\\)"
        "terrain_check (fftess::verify)")
 message(STATUS "terrain_check: ${last_out}")
 # The same check by the installed binary: the same verdict and counts.
-string(REGEX REPLACE "^.*: ([a-z_]+) \\(([0-9]+) patches, ([0-9]+) shared.*$" "verdict: \\1;\\2;\\3" library "${last_out}")
+string(REGEX REPLACE "^.*: ([a-z_]+) \\(([0-9]+) patches, ([0-9]+) shared.*$" "verdict: \\1;\\2;\\3" library
+       "${last_out}")
 list(GET library 0 verdict)
 list(GET library 1 patches)
 list(GET library 2 edges)

@@ -21,9 +21,9 @@ int main() {
       std::fprintf(stderr, "batch line %d: %s\n", i + 1, err.message.c_str());
       return 2;
     }
-    fftess::CapturedPatch port = i == 1 ? fftess::portBugCapture(fftess::PortBug::OuterFactorsRotated, 0, patches[i], i, {})
-                                        : fftess::referenceCapture(patches[i], i, {});
-    fftess::appendCsv(csv, port);
+    const fftess::PortBug bug = fftess::PortBug::OuterFactorsRotated;
+    fftess::appendCsv(csv, i == 1 ? fftess::portBugCapture(bug, 0, patches[i], i, {})
+                                  : fftess::referenceCapture(patches[i], i, {}));
   }
   std::istringstream in(csv);
   fftess::CaptureReader reader(in, "port.csv");
@@ -31,6 +31,7 @@ int main() {
   fftess::CapturedPatch got;
   int failures = 0, compared = 0;
   for (; compared < 3 && reader.next(got); ++compared) {
+    if (got.patch < 0 || got.patch >= 3) return 1; // the capture has a patch the batch has not
     const fftess::PatchComparison c = fftess::comparePatch(patches[got.patch], &got, {}, reference);
     std::printf("patch %d: %s (%d primitives)", int(got.patch), fftess::toString(c.kind), c.capturePrimitives);
     for (fftess::PortBug bug : c.bugs) std::printf(", reproduced by %s", fftess::toString(bug));
