@@ -28,6 +28,7 @@ packages=(
   glslang-tools spirv-cross glslang-dev libspirv-cross-c-shared-dev
   libegl-dev libgl-dev libopengl-dev libegl-mesa0 libgl1-mesa-dri
   libvulkan-dev mesa-vulkan-drivers
+  python3 python3-jsonschema
 )
 
 install_packages() {

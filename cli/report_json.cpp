@@ -232,9 +232,11 @@ json checkJson(const SceneArgs& a, const vf::Terrain& terrain, const vf::Camera&
   return j;
 }
 
-json sweepHeaderJson(const SceneArgs& a, const vf::Scene& scene, const std::string& camerasSource) {
+json sweepHeaderJson(const SceneArgs& a, const vf::Scene& scene, const std::string& camerasSource,
+                     const std::string& camerasSourceText) {
   json j = reportHeader("sweep", a, scene);
   j["cameras_source"] = camerasSource;
+  j["cameras_source_text"] = camerasSourceText;
   return j;
 }
 
@@ -287,7 +289,8 @@ json sweepSummaryJson(size_t requested, const vf::SweepResult& res, const std::v
 json resultCacheJson(const vf::SweepResult& res) {
   const vf::WorkStats& w = res.work;
   return {{"on", res.resultCache},
-          {"off_reason", res.resultCache ? json(nullptr) : json(res.resultCacheOff)},
+          {"off_reason", res.resultCache ? json(nullptr) : json(res.resultCacheOffKey)},
+          {"off_reason_text", res.resultCache ? json(nullptr) : json(res.resultCacheOff)},
           {"hits", w.cacheHits},
           {"seam_hits", w.seamHits},
           {"misses", w.cacheMisses},
@@ -311,7 +314,7 @@ static std::string resultCacheWords(const json& rc, const vf::Stats& s) {
   const json& on = rc.at("on");
   const bool some = on.is_string();
   if (!some && !on.get<bool>()) {
-    const json& why = rc.at("off_reason");
+    const json& why = rc.at("off_reason_text");
     const std::string text = why.is_string() ? why.get<std::string>() : std::string();
     return "result cache off" + (text.empty() ? std::string() : ": " + text);
   }

@@ -173,6 +173,15 @@ static std::string cameraWords(const SweepArgs& a, const vf::Terrain& terrain, u
   return "flyover of " + std::to_string(kDefaultFlyover) + ", the scene has no camera path";
 }
 
+// The same as a key (report_json.h, "cameras_source").
+static const char* cameraSourceKey(const SweepArgs& a, const vf::Terrain& terrain, const CameraFile* file) {
+  if (file) return "file";
+  if (a.orbit > 0) return "orbit";
+  if (a.flyover > 0) return "flyover";
+  if (a.random > 0) return "random";
+  return terrain.scene().cameraPath.empty() ? "flyover" : "scene_path";
+}
+
 // The sweep picture draws the cameras of the run (the path joined in order, the map's extent) up to `end` (all of
 // them; an interrupted run's up to the last one checked), so --svg, and only --svg, holds them in memory.
 static std::vector<vf::Camera> svgCameras(const vf::CameraSet& cams, size_t end) {
@@ -238,7 +247,8 @@ public:
   SweepRun(const SweepArgs& a, const SweepPlan& plan, const vf::Terrain& terrain, const vf::CheckOptions& opt,
            AtomicFile* jsonFile, AtomicFile* svgFile, CameraFile* file)
       : a_(a), plan_(plan), terrain_(terrain), opt_(opt), cams_(cameraSet(a, terrain, plan.seed, file)),
-        how_(cameraWords(a, terrain, plan.seed, file)), requested_(plan.shareOf(cams_.size())), jsonFile_(jsonFile),
+        how_(cameraWords(a, terrain, plan.seed, file)), howKey_(cameraSourceKey(a, terrain, file)),
+        requested_(plan.shareOf(cams_.size())), jsonFile_(jsonFile),
         svgFile_(svgFile) {
     if (file) camerasFile_ = {{"path", file->path}, {"hash", file->hashText()}, {"cameras", file->lines.size()}};
     tally_.countOffScreen = a.offscreen;
@@ -265,6 +275,7 @@ private:
   // depend on the camera count, and there is no setup to wait for.
   const vf::CameraSet cams_;
   const std::string how_;
+  const std::string howKey_; // how_ as a key (cameras_source)
   const size_t requested_; // this run's share of the cameras
   AtomicFile* jsonFile_;   // null without --json
   AtomicFile* svgFile_;    // null without --svg
@@ -303,7 +314,7 @@ void SweepRun::emitJson(const std::string& text) {
 
 void SweepRun::beginJson() {
   if (!jsonFile_) return;
-  json header = sweepHeaderJson(a_, terrain_.scene(), how_);
+  json header = sweepHeaderJson(a_, terrain_.scene(), howKey_, how_);
   if (!camerasFile_.is_null()) header["cameras_file"] = camerasFile_;
   if (plan_.sharded) header["shard"] = {{"index", plan_.shardK + 1}, {"count", plan_.shardN}};
   header["denormals_flushed"] = vf::denormalRule(terrain_.scene(), opt_).flush; // the rule every camera ran with
@@ -390,7 +401,8 @@ vf::SweepResult SweepRun::run(const std::atomic<bool>* cancel, bool talk, const 
   if (!cancel->load())
     res = vf::sweep(terrain_, requested_, [&](size_t local) { return cams_.at(plan_.global(local)); }, opt_, so);
   res.cancelled = res.cancelled || (cancel->load() && res.camerasDone + res.camerasInvalid < requested_);
-  if (a_.noResultCache && !res.resultCache) res.resultCacheOff = "--no-result-cache"; // the reason the user gave
+  if (a_.noResultCache && !res.resultCache) // the reason the user gave
+    res.resultCacheOff = "--no-result-cache", res.resultCacheOffKey = "option";
   progress.finish();
   elapsed_ = progress.elapsed();
   return res;
