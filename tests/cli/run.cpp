@@ -74,15 +74,16 @@ void collectReport(const std::string& text, const std::vector<std::string>& args
 #endif
 }
 
-// One line per run in PID.runs: "json" (asked for a JSON report, exit 0 or 1) or "other", so the schema test knows a
-// run that collected nothing from a collection that is broken.
-void logRun(bool json) {
+// One line per run in PID.runs: "json" (asked for a JSON report, exited 0 or 1, the report collected), "unread" (asked
+// for one, exited 0 or 1, but it went to a FIFO, a device or a stdout of the test's own: not collected) or "other", so
+// the schema test knows a run that collected nothing from a collection that is broken.
+void logRun(const char* what) {
 #ifdef FFTESS_TEST_REPORTS
   const std::string dir = FFTESS_TEST_REPORTS;
   ::mkdir(dir.c_str(), 0755);
-  std::ofstream(dir + "/" + std::to_string(::getpid()) + ".runs", std::ios::app) << (json ? "json\n" : "other\n");
+  std::ofstream(dir + "/" + std::to_string(::getpid()) + ".runs", std::ios::app) << what << "\n";
 #else
-  (void)json;
+  (void)what;
 #endif
 }
 
@@ -217,16 +218,17 @@ TimedResult runWith(const std::vector<std::string>& args, const RunOptions& o) {
   if (o.stdoutPath.empty()) r.out = readFile(out);
   r.err = readFile(err);
   const bool wantsJson = (r.status == 0 || r.status == 1) && (targets.toStdout || !targets.files.empty());
-  logRun(wantsJson);
+  int collected = 0;
   if (wantsJson) {
-    if (targets.toStdout && o.stdoutPath.empty() && !r.out.empty()) collectReport(r.out, args);
+    if (targets.toStdout && o.stdoutPath.empty() && !r.out.empty()) collectReport(r.out, args), ++collected;
     for (size_t i = 0; i < targets.files.size(); ++i) {
       struct stat st {};
       if (::stat(targets.files[i].c_str(), &st) != 0 || !S_ISREG(st.st_mode)) continue;
       if (before[i].first && sameFile(before[i].second, st)) continue; // not written by this run
-      collectReport(readFile(targets.files[i]), args);
+      collectReport(readFile(targets.files[i]), args), ++collected;
     }
   }
+  logRun(!wantsJson ? "other" : collected ? "json" : "unread");
   ::unlink(in.c_str());
   ::unlink(out.c_str());
   ::unlink(err.c_str());

@@ -15,9 +15,12 @@ import sys
 
 here = os.path.dirname(os.path.abspath(__file__))
 validator = os.path.join(here, "..", "tools", "validate_json.py")
+sys.path.insert(0, os.path.join(here, "..", "tools"))
+import validate_json  # noqa: E402
 
 
 def validate(schema_dir, *files):
+    """validate_json.py SCHEMA_DIR FILE... as a program: its exit status and output."""
     r = subprocess.run([sys.executable, validator, schema_dir] + list(files), capture_output=True, text=True)
     return r.returncode, r.stdout + r.stderr
 
@@ -71,32 +74,34 @@ def main(argv):
         ("missing camera stats", "sweep", drop(["cameras", 0, "stats"]), "/cameras/0"),
         ("unknown kind", "check", put(["kind"], "chek"), "/kind"),
     ]
+    schemas, store = validate_json.load_schemas(schema_dir)
     for name, kind, mutate, pointer in cases:
         j = copy.deepcopy(base[kind])
         mutate(j)
-        path = os.path.join(work, name.replace(" ", "_") + ".json")
-        with open(path, "w") as f:
-            json.dump(j, f, indent=2)
-        rc, out = validate(schema_dir, path)
-        expect = "%s: %s" % (path, pointer)
-        if rc != 1 or expect not in out:
-            failures.append("%s: exit %d (expected 1) and the output does not name %r:\n%s" % (name, rc, expect, out))
+        errors = validate_json.validate(schemas, store, "", j)
+        if not any((p or "/") + ":" == pointer or (p or "/") == pointer for p, _ in errors):
+            failures.append("%s: not rejected at %s: %s" % (name, pointer, errors))
         else:
-            print("rejected as expected: %s: %s" % (name, out.strip().splitlines()[0]))
+            print("rejected as expected: %s: %s" % (name, "; ".join("%s: %s" % (p or "/", m) for p, m in errors)))
+    # As a program: an invalid report exits 1 naming the file and the pointer.
+    bad = os.path.join(work, "wrong_verdict.json")
+    j = copy.deepcopy(base["check"])
+    j["verdict"] = "mostly_fine"
+    with open(bad, "w") as f:
+        json.dump(j, f, indent=2)
+    rc, out = validate(schema_dir, bad)
+    if rc != 1 or bad + ": /verdict: " not in out:
+        failures.append("%s: exit %d (expected 1), output does not name %s: /verdict:\n%s" % (bad, rc, bad, out))
     not_object = os.path.join(work, "array.json")
     not_json = os.path.join(work, "truncated.json")
     with open(not_object, "w") as f:
         f.write("[1, 2]\n")
     with open(not_json, "w") as f:
         f.write(open(check).read()[:100])
-    for path in (not_object, not_json):
-        rc, out = validate(schema_dir, path)
-        if rc != 1 or path not in out:
-            failures.append("%s: exit %d (expected 1):\n%s" % (path, rc, out))
-    # One invalid file among valid ones: still exit 1.
-    rc, out = validate(schema_dir, check, not_object, sweep)
-    if rc != 1:
-        failures.append("a valid, an invalid and a valid file: exit %d (expected 1)" % rc)
+    # One invalid file among valid ones: still exit 1, naming only that file.
+    rc, out = validate(schema_dir, check, not_json, not_object, sweep)
+    if rc != 1 or check in out or sweep in out or not_json not in out or not_object not in out:
+        failures.append("valid and invalid files: exit %d (expected 1), naming only the invalid ones:\n%s" % (rc, out))
     for args in ([], [schema_dir], [os.path.join(work, "no-such-dir"), check]):
         r = subprocess.run([sys.executable, validator] + args, capture_output=True, text=True)
         if r.returncode != 2:

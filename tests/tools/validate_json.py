@@ -52,19 +52,44 @@ def pointer(path):
     return "/" + "/".join(str(p).replace("~", "~0").replace("/", "~1") for p in path)
 
 
+def validator_for(schemas, store, kind):
+    """A Draft 2020-12 validator of the kind's schema whose relative $refs resolve to the other schema files: through
+    the referencing library where jsonschema has it (4.18 and later), else through RefResolver (Debian 12's 4.10)."""
+    uri, schema = schemas[kind]
+    try:
+        import referencing
+        import referencing.jsonschema
+    except ImportError:
+        resolver = jsonschema.RefResolver(base_uri=uri, referrer=schema, store=store)
+        return jsonschema.Draft202012Validator(schema, resolver=resolver)
+    draft = referencing.jsonschema.DRAFT202012
+    registry = referencing.Registry().with_resources(
+        [(u, draft.create_resource(s)) for u, s in store.items()] +
+        [(s["$id"], draft.create_resource(s)) for _, s in schemas.values() if "$id" in s])
+    return jsonschema.Draft202012Validator(schema, registry=registry)
+
+
 def validate(schemas, store, where, report):
     """The errors of one report: [(json pointer, message)]."""
     if not isinstance(report, dict):
         return [("", "not a JSON object (a report is an object with version, kind, fftess_version)")]
     kind = report.get("kind")
-    if not isinstance(kind, str) or kind not in schemas:
+    if not isinstance(kind, str) or kind not in schemas or kind == "common":
         return [("/kind", "no schema for kind %s (known: %s)" % (json.dumps(kind), ", ".join(sorted(
             k for k in schemas if k != "common"))))]
-    uri, schema = schemas[kind]
-    resolver = jsonschema.RefResolver(base_uri=uri, referrer=schema, store=store)
-    validator = jsonschema.Draft202012Validator(schema, resolver=resolver)
+    validator = validator_for(schemas, store, kind)
     errors = sorted(validator.iter_errors(report), key=lambda e: list(map(str, e.absolute_path)))
-    return [(pointer(e.absolute_path), e.message) for e in errors]
+    return [(pointer(e.absolute_path), message(e)) for e in errors]
+
+
+def message(error):
+    """The error's message, short; for oneOf / anyOf the closest alternative's error too."""
+    text = error.message if len(error.message) <= 200 else error.message[:200] + "..."
+    if error.context:
+        best = jsonschema.exceptions.best_match(error.context)
+        text = "matches no alternative of %s; the closest: %s: %s" % (
+            error.validator, pointer(best.absolute_path), message(best))
+    return text
 
 
 def main(argv):
