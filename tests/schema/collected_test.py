@@ -9,6 +9,8 @@ run with ctest -R); an empty collection with no run logged at all (the harness c
     collected_test.py SCHEMA_DIR REPORTS_DIR
 """
 import glob
+import hashlib
+import multiprocessing
 import os
 import sys
 
@@ -33,29 +35,50 @@ def main(argv):
         print("FAIL: no JSON report collected (%s): tests/cli/run.cpp collects none" %
               ("no fftess run logged either" if not runs else "%d runs logged one" % wanted))
         return 1
-    schemas, store = validate_json.load_schemas(schema_dir)
-    bad = 0
-    kinds = {}
+    # Identical reports (a test that runs the same command twice) are validated once; the rest on every core.
+    by_content = {}
     for path in files:
-        try:
-            reports_in = validate_json.reports_of(path)
-        except ValueError as e:
-            reports_in, errors = [], [("", "not JSON: %s" % e)]
-        else:
-            errors = []
-        for where, report in reports_in:
-            errors += validate_json.validate(schemas, store, where, report)
-            if isinstance(report, dict):
-                kinds[report.get("kind")] = kinds.get(report.get("kind"), 0) + 1
-        if errors:
-            bad += 1
+        with open(path, "rb") as f:
+            by_content.setdefault(hashlib.sha1(f.read()).hexdigest(), []).append(path)
+    unique = [paths[0] for paths in by_content.values()]
+    with multiprocessing.Pool(min(len(unique), os.cpu_count() or 1), initializer=load, initargs=(schema_dir,)) as pool:
+        results = pool.map(check, unique)
+    bad, kinds = 0, {}
+    for (errors, kind), paths in zip(results, by_content.values()):
+        kinds[kind] = kinds.get(kind, 0) + len(paths)
+        if not errors:
+            continue
+        bad += len(paths)
+        for path in paths:
             cmd = path[: -len(".json")] + ".cmd"
             print("INVALID %s (%s)" % (path, open(cmd).read().strip() if os.path.exists(cmd) else "?"))
-            for ptr, message in errors[:10]:
-                print("  %s: %s" % (ptr or "/", message))
+        for ptr, message in errors[:10]:
+            print("  %s: %s" % (ptr or "/", message))
     print("kinds: " + ", ".join("%s %d" % (k, n) for k, n in sorted(kinds.items(), key=lambda x: str(x[0]))))
-    print("%d of %d reports invalid" % (bad, len(files)))
+    print("%d of %d reports invalid (%d different reports validated)" % (bad, len(files), len(unique)))
     return 1 if bad else 0
+
+
+_schemas = None
+
+
+def load(schema_dir):
+    global _schemas
+    _schemas = validate_json.load_schemas(schema_dir)
+
+
+def check(path):
+    """(errors, kind) of one file."""
+    schemas, store = _schemas
+    try:
+        reports = validate_json.reports_of(path)
+    except ValueError as e:
+        return [("", "not JSON: %s" % e)], None
+    errors, kind = [], None
+    for where, report in reports:
+        errors += validate_json.validate(schemas, store, where, report)
+        kind = report.get("kind") if isinstance(report, dict) else None
+    return errors, kind
 
 
 if __name__ == "__main__":

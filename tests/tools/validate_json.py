@@ -52,9 +52,20 @@ def pointer(path):
     return "/" + "/".join(str(p).replace("~", "~0").replace("/", "~1") for p in path)
 
 
+_validators = {}
+
+
 def validator_for(schemas, store, kind):
     """A Draft 2020-12 validator of the kind's schema whose relative $refs resolve to the other schema files: through
-    the referencing library where jsonschema has it (4.18 and later), else through RefResolver (Debian 12's 4.10)."""
+    the referencing library where jsonschema has it (4.18 and later), else through RefResolver (Debian 12's 4.10).
+    One per kind and schema set."""
+    key = (id(schemas), kind)
+    if key not in _validators:
+        _validators[key] = make_validator(schemas, store, kind)
+    return _validators[key]
+
+
+def make_validator(schemas, store, kind):
     uri, schema = schemas[kind]
     try:
         import referencing
