@@ -189,6 +189,7 @@ std::vector<CauseRow> mergedCauses(const std::vector<json>& shards) {
         r.firstCamera = first;
         r.example = c.at("example");
         r.fix = c.value("fix", std::string()); // reports written before "fix" existed have none
+        r.id = c.at("cause_id");
         it->second.position = position;
       }
       ++position;

@@ -71,6 +71,7 @@ json findingJson(const vf::Finding& f) {
   j["classification"] = vf::toString(f.classification);
   const Cause cause = findingCause(f);
   j["cause"] = cause.key;
+  j["cause_id"] = cause.id;
   j["fix"] = cause.fix;
   j["explanation"] = cause.detail;
   j["partitioning"] = toString(f.partitioning);
@@ -115,7 +116,7 @@ json gpuFloatJson(const vf::GpuFloatFinding& g) {
                 {"operation", op.empty() ? json(nullptr) : json(op)}};
   };
   const Cause c = gpuFloatCause(g);
-  return {{"cause", c.key}, {"why", g.why}, {"fix", g.fix}, {"explanation", c.detail},
+  return {{"cause", c.key}, {"cause_id", c.id}, {"why", g.why}, {"fix", g.fix}, {"explanation", c.detail},
           {"a", side(g.a, g.edgeA, g.factorA, g.loA, g.hiA, g.operationA)},
           {"b", side(g.b, g.edgeB, g.factorB, g.loB, g.hiB, g.operationB)}};
 }
@@ -125,6 +126,7 @@ json holeJson(const vf::Hole& h) {
   j["kind"] = vf::toString(h.kind);
   const Cause cause = holeCause(h);
   j["cause"] = cause.key;
+  j["cause_id"] = cause.id;
   j["fix"] = cause.fix;
   j["explanation"] = cause.detail;
   j["patch"] = {{"index", h.patch.index}, {"ring", h.patch.ring}, {"tile", h.patch.tile}, {"patch", h.patch.patch},
@@ -273,7 +275,7 @@ json sweepSummaryJson(size_t requested, const vf::SweepResult& res, const std::v
   j["verdict"] = vf::toString(vf::verdictOf(res, countOffScreen));
   json cs = json::array();
   for (const CauseRow& c : causes)
-    cs.push_back({{"cause", c.cause}, {"fix", c.fix}, {"findings", c.findings}, {"cameras", c.cameras}, {"first_camera", c.firstCamera},
+    cs.push_back({{"cause", c.cause}, {"cause_id", c.id}, {"fix", c.fix}, {"findings", c.findings}, {"cameras", c.cameras}, {"first_camera", c.firstCamera},
                   {"example", c.example}});
   j["causes"] = cs;
   j["visible_first"] = res.visibleFirst;

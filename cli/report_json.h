@@ -31,7 +31,8 @@ using json = nlohmann::ordered_json;
 // 10: the envelope of every report kind (docs/schema): "cameras_source" is a key (scene_path | flyover | orbit |
 //    random | file) and its words moved to "cameras_source_text"; result_cache.off_reason is a key (option |
 //    camera_dependent_effect | keep_matches, "mixed" when merged shards differ) and its words moved to
-//    "off_reason_text". prove's report (kind "prove") shares this version.
+//    "off_reason_text"; "cause_id" (the cause as a key of a fixed set, cli/causes.h) next to every "cause" (findings,
+//    holes, undecided patches, GPU float findings, sweep's causes). prove's report (kind "prove") shares this version.
 constexpr int kReportVersion = 10;
 
 json vec3Json(const glm::vec3& v);
@@ -62,6 +63,7 @@ struct CauseRow {
   size_t firstCamera = 0;
   std::string example;
   std::string fix; // the first finding's Cause::fix
+  std::string id;  // Cause::id (JSON "cause_id")
 };
 
 // The whole report of `fftess check` (mesh: null unless --mesh ran).

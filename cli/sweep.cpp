@@ -32,6 +32,7 @@ namespace {
 struct CauseInfo {
   std::string detail;     // explanation of the first finding with this cause
   std::string fix;        // its fix (Cause::fix)
+  std::string id;         // Cause::id
   int64_t findings = 0;   // findings with this cause, over all cameras
   size_t cameras = 0;     // cameras with at least one finding with this cause
   size_t first = 0;       // first camera (index) where it appeared
@@ -80,6 +81,7 @@ struct CauseTally {
         c.firstFinding = k;
         c.detail = cause.detail;
         c.fix = cause.fix;
+        c.id = cause.id;
       }
     }
   }
@@ -481,7 +483,7 @@ void SweepRun::finishReports(const vf::SweepResult& res) {
     std::vector<CauseRow> rows;
     for (const std::string& k : order) {
       const CauseInfo& c = tally_.causes.at(k);
-      rows.push_back({k, c.findings, c.cameras, c.first, c.detail, c.fix});
+      rows.push_back({k, c.findings, c.cameras, c.first, c.detail, c.fix, c.id});
     }
     vf::WorkStats terrainWork = terrain_.stats();
     terrainWork.terrainBuilds = vf::terrainBuildCount(); // every build in this process
