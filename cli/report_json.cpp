@@ -275,7 +275,8 @@ json sweepSummaryJson(size_t requested, const vf::SweepResult& res, const std::v
   j["verdict"] = vf::toString(vf::verdictOf(res, countOffScreen));
   json cs = json::array();
   for (const CauseRow& c : causes)
-    cs.push_back({{"cause", c.cause}, {"cause_id", c.id}, {"fix", c.fix}, {"findings", c.findings}, {"cameras", c.cameras}, {"first_camera", c.firstCamera},
+    cs.push_back({{"cause", c.cause}, {"cause_id", c.id}, {"fix", c.fix}, {"findings", c.findings},
+                  {"cameras", c.cameras}, {"first_camera", c.firstCamera},
                   {"example", c.example}});
   j["causes"] = cs;
   j["visible_first"] = res.visibleFirst;
