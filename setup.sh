@@ -29,6 +29,7 @@ packages=(
   libegl-dev libgl-dev libopengl-dev libegl-mesa0 libgl1-mesa-dri
   libvulkan-dev mesa-vulkan-drivers
   pybind11-dev python3-dev python3-numpy python3-pytest python3-pip python3-setuptools python3-wheel
+  python3 python3-jsonschema
 )
 
 install_packages() {

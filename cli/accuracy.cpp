@@ -92,6 +92,7 @@ struct Row {
   int64_t gained = 0, lost = 0;
   bool compared = false;
   std::string verdict;
+  std::string verdictKey; // verdict as a key (the JSON's "verdict"; verdict is its "verdict_text")
   int64_t lodFactorsDiffer = 0, lodJumpFactorsDiffer = 0, lodCullsDiffer = 0;
   vf::SweepResult swept; // the sweep shortcuts group: the first run's result (its aggregates)
 };
@@ -121,13 +122,14 @@ void runSweepRow(Row& row, const vf::Terrain& terrain, const std::vector<vf::Cam
     best = k == 0 ? s : std::min(best, s);
     if (k == 0) row.swept = std::move(res), so.onReport = nullptr; // findings and counters: the first run's
   }
-  if (!so.resultCache && row.swept.resultCacheOff.empty()) row.swept.resultCacheOff = "--no-result-cache";
+  if (!so.resultCache && row.swept.resultCacheOff.empty())
+    row.swept.resultCacheOff = "--no-result-cache", row.swept.resultCacheOffKey = "option";
   row.seconds = best;
   row.cameras = cams.size();
   row.stats = row.swept.total;
   row.work = row.swept.work;
   row.edges = row.swept.total.edgesChecked;
-  row.verdict = vf::toString(vf::verdictOf(row.swept, /*countOffScreen=*/false));
+  row.verdict = row.verdictKey = vf::toString(vf::verdictOf(row.swept, /*countOffScreen=*/false));
 }
 
 void runRow(Row& row, const BenchReportArgs& a, const std::vector<vf::Camera>& cams, size_t meshCameras) {
@@ -185,6 +187,7 @@ void runRow(Row& row, const BenchReportArgs& a, const std::vector<vf::Camera>& c
       }
     }
     row.cameras = n;
+    row.verdictKey = row.spec.lodPrecision == 1 ? "reference" : "factors_compared";
     row.verdict = row.spec.lodPrecision == 1 ? "-" :
         std::to_string(row.lodFactorsDiffer) + " factors differ (" + std::to_string(row.lodJumpFactorsDiffer) +
         " at size jumps), " + std::to_string(row.lodCullsDiffer) + " culls differ; not re-checked";
@@ -227,6 +230,7 @@ void runRow(Row& row, const BenchReportArgs& a, const std::vector<vf::Camera>& c
   // Every finding counts, on screen or not: the rows compare checkers finding for finding (the mesh row has no view).
   row.verdict = row.spec.mesh ? (row.findings.empty() ? "no inner border" : "inner borders")
                               : vf::toString(vf::verdictOf(sum, /*countOffScreen=*/true));
+  row.verdictKey = row.spec.mesh ? (row.findings.empty() ? "no_inner_border" : "inner_borders") : row.verdict;
 }
 
 // The mesh row's findings are patch edges: compare with the reference's findings as patch edges (both sides).
@@ -303,12 +307,12 @@ BenchTable runBenchTable(const BenchReportArgs& a) {
     }
     b.findings = static_cast<int64_t>(r.findings.size());
     b.gained = r.gained, b.lost = r.lost, b.compared = r.compared;
-    b.verdict = r.verdict;
+    b.verdict = r.verdict, b.verdictKey = r.verdictKey;
     b.stats = r.stats;
     b.work = r.work;
     b.sweep = r.spec.sweep;
     b.visibleFirst = r.swept.visibleFirst, b.resultCache = r.swept.resultCache;
-    b.resultCacheOff = r.swept.resultCacheOff;
+    b.resultCacheOff = r.swept.resultCacheOff, b.resultCacheOffKey = r.swept.resultCacheOffKey;
     b.resultCacheItems = r.swept.resultCacheItems, b.resultCacheBytes = r.swept.resultCacheBytes;
     t.rows.push_back(b);
   }
@@ -400,8 +404,9 @@ std::string benchText(const BenchTable& t) {
 
 std::string benchJson(const BenchTable& t) {
   json j;
+  j["version"] = kBenchReportVersion;
   j["kind"] = "bench";
-  j["version"] = 1;
+  j["fftess_version"] = FFTESS_VERSION;
   j["scene"] = t.scene;
   j["patches"] = t.patches;
   j["cameras"] = t.cameras.size();
@@ -422,14 +427,16 @@ std::string benchJson(const BenchTable& t) {
     x["findings"] = r.findings;
     x["gained"] = r.gained;
     x["lost"] = r.lost;
-    x["verdict"] = r.verdict;
+    x["verdict"] = r.verdictKey;
+    x["verdict_text"] = r.verdict;
     x["stats"] = statsJson(r.stats);
     x["work"] = workJson(r.work);
     if (r.sweep) {
       const double pairs = static_cast<double>(std::max<int64_t>(1, r.stats.edgesChecked));
       x["sweep"] = {{"visible_first", r.visibleFirst},
                     {"result_cache", r.resultCache},
-                    {"result_cache_off", r.resultCache ? json(nullptr) : json(r.resultCacheOff)},
+                    {"result_cache_off", r.resultCache ? json(nullptr) : json(r.resultCacheOffKey)},
+                    {"result_cache_off_text", r.resultCache ? json(nullptr) : json(r.resultCacheOff)},
                     {"cache_hit_rate", static_cast<double>(r.work.cacheHits) / pairs},
                     {"seam_hit_rate", static_cast<double>(r.work.seamHits) / pairs},
                     {"result_cache_items", r.resultCacheItems},

@@ -20,8 +20,15 @@ struct BenchReportArgs {
   int repeats = 3;                    // --repeats: each edge-check camera timed as the fastest of this many runs
 };
 
+// "version" of bench's JSON report (docs/schema/bench.schema.json); bumped on any change of its schema.
+// 2: the envelope ("version", "kind", "fftess_version" first); "verdict" is a key (a verify verdict, "reference",
+//    "factors_compared", "no_inner_border", "inner_borders"), its words in "verdict_text"; sweep.result_cache_off a
+//    key (as a sweep's result_cache.off_reason), its words in "result_cache_off_text".
+constexpr int kBenchReportVersion = 2;
+
 struct BenchRow {
   std::string group, name, what, error, verdict;
+  std::string verdictKey; // verdict as a key (JSON "verdict")
   bool reference = false, compared = false;
   size_t cameras = 0;
   double msPerCamera = 0, usPerEdge = 0, relative = 0;
@@ -32,6 +39,7 @@ struct BenchRow {
   bool sweep = false;
   bool visibleFirst = false, resultCache = false;
   std::string resultCacheOff;
+  std::string resultCacheOffKey; // vf::SweepResult::resultCacheOffKey
   size_t resultCacheItems = 0, resultCacheBytes = 0;
 };
 

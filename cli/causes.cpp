@@ -55,7 +55,8 @@ static Cause largeJumpCause(int jump, const std::string& record) {
   return {"size jump " + ratio + ": lod/'s neighbour rule handles 2x jumps only",
           "neighbour " + ratio + ": lod/'s neighbour rule handles 2x jumps only, no side adapted its factor (" +
               record + ")",
-          "balance the quadtree 2:1 (layout.balance = \"2to1\") or keep neighbouring patches within 2x of each other"};
+          "balance the quadtree 2:1 (layout.balance = \"2to1\") or keep neighbouring patches within 2x of each other",
+          "jump_beyond_2x"};
 }
 
 // ---- fixes: one line a user can act on, per cause (derived from the same records as the cause) -------------------
@@ -112,10 +113,10 @@ Cause findingCause(const vf::Finding& f) {
       return {"same-size neighbours chose different factors (" + producer(f.a.lod) + ")",
               "same-size neighbours chose different factors (" + formatFloat(f.a.processedFactor) + " vs " +
                   formatFloat(f.b.processedFactor) + sides + ")",
-              sameSizeFix(f.a.lod)};
+              sameSizeFix(f.a.lod), "same_size_different_factors"};
     return {"same factor, different positions (domain shader / corners)",
             "both sides use factor " + formatFloat(B) + " but compute different positions (domain shader or corners)",
-            kPositionsFix};
+            kPositionsFix, "same_size_different_positions"};
   }
   if (jump > 1) return largeJumpCause(jump, pair + record);
   const std::string rule = " (" + jumpRule(small) + ")";
@@ -126,7 +127,7 @@ Cause findingCause(const vf::Finding& f) {
             "2x jump: " + pair + " (" + part + "): the small side's factor is not half the big side's" +
                 (belowMinimum ? " (half of it is below " + part + "'s minimum " + formatFloat(minimum) + ")" : "") +
                 record,
-            halfFix(small, belowMinimum)};
+            halfFix(small, belowMinimum), "jump_not_half"};
   }
   if (B != std::floor(B) || S != std::floor(S))
     return {"2x jump: fractional factors do not nest" + rule,
@@ -135,15 +136,17 @@ Cause findingCause(const vf::Finding& f) {
                 ? "round the factors at a jump to powers of two (" + producer(small.lod) +
                       ": as lod.adjacency_clamp = \"pow2\" does); fractional factors never nest"
                 : std::string("round the factors at a jump to powers of two (lod.adjacency_clamp = \"pow2\"); "
-                              "fractional factors never nest")};
+                              "fractional factors never nest"),
+            "jump_fractional_factors"};
   if (!isPow2(B))
     return {"2x jump: factor not a power of two (16.16 rounding)" + rule,
             "2x jump: " + pair + " (" + part + "): B is not a power of two, the 16.16 points do not nest (fftess explain "
             "--partitioning " + part + " " + formatFloat(B) + " " + formatFloat(S) + ")" + record,
-            small.lod.scheme == vf::LodScheme::Shader ? std::string(kPow2Fix) + " (" + producer(small.lod) + ")" : kPow2Fix};
+            small.lod.scheme == vf::LodScheme::Shader ? std::string(kPow2Fix) + " (" + producer(small.lod) + ")" : kPow2Fix,
+            "jump_not_pow2"};
   return {"2x jump: nesting factors, different positions (domain shader / corners)",
           "2x jump: " + pair + " nests in 16.16 but the positions differ (domain shader or corners)" + record,
-          kPositionsFix};
+          kPositionsFix, "jump_different_positions"};
 }
 
 // ---- text --------------------------------------------------------------------------------------------------------
@@ -203,7 +206,8 @@ static Cause undecidedCause(const vf::Hole& h) {
           culled ? "cull only what is proven outside the view: a culling box that holds the displaced surface "
                    "(lod.height_bounds) tested against the camera's own frustum planes"
                  : "draw every patch that may be in view: outer factors >= 1 (lod.min_factor), never NaN, <= 0 or "
-                   "denormal"};
+                   "denormal",
+          culled ? "undecided_culled" : "undecided_discarded"};
 }
 
 // The fix of a hole the tessellator made (a factor that is NaN, <= 0 or denormal), from its record: the projection's
@@ -236,7 +240,8 @@ Cause holeCause(const vf::Hole& h) {
       std::snprintf(buf, sizeof buf, "culled by %s (it said culled), but the surface is in view at (%.6g, %.6g, %.6g)",
                     by.c_str(), double(h.visiblePoint.x), double(h.visiblePoint.y), double(h.visiblePoint.z));
       return {"culled while visible (" + by + ")", buf,
-              "cull only boxes that hold the displaced surface and lie outside the camera's frustum planes (" + by + ")"};
+              "cull only boxes that hold the displaced surface and lie outside the camera's frustum planes (" + by + ")",
+              "culled_while_visible_shader"};
     }
     std::snprintf(buf, sizeof buf,
                   "culled by %s's frustum test, but the surface is in view at (%.6g, %.6g, %.6g); lod's box y "
@@ -248,7 +253,8 @@ Cause holeCause(const vf::Hole& h) {
             bound ? "widen the culling box's height range to the heights the domain shader reaches there "
                     "(lod.height_bounds = \"per_patch\" bounds each patch by the texels it samples)"
                   : "build the culling planes from the view-projection the camera renders with (camera.convention; "
-                    "lod.frustum_cull = false turns culling off)"};
+                    "lod.frustum_cull = false turns culling off)",
+            bound ? "culled_while_visible_height_bounds" : "culled_while_visible_frustum_test"};
   }
   std::string why;
   const float f = h.hullFactor;
@@ -281,7 +287,10 @@ Cause holeCause(const vf::Hole& h) {
                                 (std::fpclassify(f) == FP_SUBNORMAL ? std::string("denormal factor, flushed to zero") : what + " factor") +
                                 (h.lod.scheme != vf::LodScheme::Constant && h.midpointW == 0 ? " (w = 0 at the edge midpoint)" : "") +
                                 " (" + by + ")";
-  return {key, "discarded by the tessellator: " + why + seen, discardFix(h, by)};
+  const char* id = h.edge < 0 ? "discarded_patch_dropped"
+                   : std::isnan(f) ? "discarded_nan" : f < 0 ? "discarded_negative" : f == 0 ? "discarded_zero"
+                   : std::fpclassify(f) == FP_SUBNORMAL ? "discarded_denormal" : "discarded_not_positive";
+  return {key, "discarded by the tessellator: " + why + seen, discardFix(h, by), id};
 }
 
 std::string holeLine(const vf::Hole& h) {
@@ -303,6 +312,9 @@ Cause gpuFloatCause(const vf::GpuFloatFinding& g) {
   else
     c.detail += ": " + g.why;
   c.fix = g.fix;
+  // The reason's words are g.why (the frustum test may cull a side, a factor may be NaN or <= 0, too many evaluation
+  // paths); only "different operations" names an operation.
+  c.id = ops ? "gpu_float_operations" : "gpu_float_other";
   return c;
 }
 

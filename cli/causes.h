@@ -21,10 +21,13 @@ std::string fmtWorld(double v);                       // %.3g
 // explanation with the numbers of this finding and each side's LOD record (vf::lodWords), and one line a user can act
 // on (fix), derived from the same facts: the change that removes the cause, naming the scene key and value where one
 // exists. Each cause is one return of findingCause / holeCause with all three (a new cause is one place).
+// id: the cause as a key of a fixed set (the JSON's "cause_id", docs/schema/common.schema.json "cause_id"): the branch
+// of findingCause / holeCause / gpuFloatCause that named it; key and detail add the numbers and the rule that ran.
 struct Cause {
   std::string key;
   std::string detail;
   std::string fix;
+  std::string id;
 };
 Cause findingCause(const vf::Finding& f);
 // The factors' source as causes name it when an edge's record says LodScheme::Shader: "the shader FILE" (the file's

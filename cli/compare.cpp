@@ -220,7 +220,7 @@ void CompareReporter::finish(const std::string& format, const std::string& heade
            {"patches", sum_.patches},     {"same", sum_.same},
            {"differing", sum_.differing}, {"points_compared", sum_.pointsCompared},
            {"strict_order", strict_},     {"format", format}};
-    if (!header.empty()) j["source"] = header.substr(0, header.find('\n')); // the first header line, without '\n'
+    if (!header.empty()) j["source_text"] = header.substr(0, header.find('\n')); // the first header line, without '\n'
     for (const auto& [key, value] : extra_.items()) j[key] = value;
     json kinds = json::object();
     for (int k = 1; k < int(DifferenceKind::Count); ++k) kinds[toString(DifferenceKind(k))] = sum_.byKind[k];

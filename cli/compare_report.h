@@ -14,11 +14,13 @@ namespace fftess::cli {
 // "version" of the compare and driver-check JSON reports (docs/compare.md); bumped on any change of their schema.
 // 1: the first versioned schema: "version", "kind", "fftess_version", "batch" or "generated_by", per listed patch
 //    "batch_line".
-constexpr int kCompareReportVersion = 1;
+// 2: the envelope of every report kind (docs/schema): driver-check's kind is "driver_check" (version 1 wrote
+//    "driver-check"); the header line moved from "source" to "source_text" (words, not a key).
+constexpr int kCompareReportVersion = 2;
 
 // The report of compare and driver-check: per-patch lines for the first 'show' differing patches, the summary, the
 // verdict; text or JSON (docs/compare.md). finish() writes it to stdout.
-// batch: the batch file's name; kind: the JSON "kind" ("compare", "driver-check").
+// batch: the batch file's name; kind: the JSON "kind" ("compare", "driver_check").
 class CompareReporter {
 public:
   CompareReporter(bool asJson, int show, bool strictOrder, std::string batch, const char* kind = "compare");
@@ -32,7 +34,7 @@ public:
   const CompareSummary& summary() const { return sum_; }
   // The JSON report into *out instead of stdout (null: stdout).
   void setJsonSink(std::string* out) { sink_ = out; }
-  // A top-level key of the JSON report (after "source"), e.g. driver-check's "port_bug".
+  // A top-level key of the JSON report (after "source_text"), e.g. driver-check's "port_bug".
   void addJsonField(const std::string& key, nlohmann::ordered_json value) { extra_[key] = std::move(value); }
 
 private:

@@ -207,7 +207,7 @@ int runDriverCheck(const DriverCheckArgs& a) {
   oracle::RunOptions run;
   run.order = a.strictOrder ? oracle::CaptureOrder::Strict : oracle::CaptureOrder::Free;
   run.permuteSeed = a.permuteCapture;
-  CompareReporter reporter(a.json, a.show, a.strictOrder, source, "driver-check");
+  CompareReporter reporter(a.json, a.show, a.strictOrder, source, "driver_check");
   if (a.patches.empty()) reporter.setGenerated();
   if (simulated.active())
     reporter.addJsonField("port_bug", {{"name", toString(simulated.bug())}, {"form", simulated.form()}});

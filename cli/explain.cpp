@@ -111,6 +111,10 @@ std::string whyText(const HalfEdgeComparison& c, const HalfEdgeRow& r) {
 }
 
 // Value in 1/131072 units -> JSON number in 1/65536 units (exact: .5 steps).
+// "version" of explain's JSON reports (kinds "explain" and "explain_why_pow2"; docs/schema); bumped on any change of
+// their schema. 2: the envelope ("fftess_version"; --why-pow2's "kind" "explain_why_pow2").
+constexpr int kExplainReportVersion = 2;
+
 json units(int64_t u2) { return u2 % 2 == 0 ? json(u2 / 2) : json(static_cast<double>(u2) / 2.0); }
 std::string unitsText(int64_t u2) {
   bool neg = u2 < 0;
@@ -171,8 +175,9 @@ int explainPair(const ExplainArgs& a, Partitioning part, const Stage& stage) {
   const HalfEdgeComparison c = compareHalfEdges(f[0], f[1], part, stage);
   if (a.json) {
     json j;
-    j["version"] = 1;
+    j["version"] = kExplainReportVersion;
     j["kind"] = "explain";
+    j["fftess_version"] = FFTESS_VERSION;
     j["partitioning"] = toString(part);
     j["stage"] = toString(stage);
     j["big"] = sideJson(c.big);
@@ -257,7 +262,9 @@ int whyPow2(const ExplainArgs& a, Partitioning part, const Stage& stage) {
   }
   if (a.json) {
     json j;
-    j["version"] = 1;
+    j["version"] = kExplainReportVersion;
+    j["kind"] = "explain_why_pow2";
+    j["fftess_version"] = FFTESS_VERSION;
     j["partitioning"] = toString(part);
     j["stage"] = toString(stage);
     json pairs = json::array();

@@ -189,6 +189,7 @@ std::vector<CauseRow> mergedCauses(const std::vector<json>& shards) {
         r.firstCamera = first;
         r.example = c.at("example");
         r.fix = c.value("fix", std::string()); // reports written before "fix" existed have none
+        r.id = c.at("cause_id");
         it->second.position = position;
       }
       ++position;
@@ -226,7 +227,7 @@ json agreed(const std::vector<json>& values) {
 // The sweep shortcuts over the shards: visible_first, result_cache.on and off_reason as every shard says (else
 // "mixed"), the cache's counters summed (each shard has its own cache: items, bytes and dropped add up too).
 void mergeShortcuts(const std::vector<json>& shards, json& summary) {
-  std::vector<json> visible, on, why;
+  std::vector<json> visible, on, why, whyText;
   json rc = summary.at("result_cache"); // sweepSummaryJson's keys, in its order
   for (auto it = rc.begin(); it != rc.end(); ++it)
     if (it.value().is_number()) it.value() = 0;
@@ -235,11 +236,13 @@ void mergeShortcuts(const std::vector<json>& shards, json& summary) {
     const json& c = s.at("result_cache");
     on.push_back(c.at("on"));
     why.push_back(c.at("off_reason"));
+    whyText.push_back(c.at("off_reason_text"));
     for (auto it = rc.begin(); it != rc.end(); ++it)
       if (it.value().is_number()) it.value() = it.value().get<int64_t>() + c.at(it.key()).get<int64_t>();
   }
   rc["on"] = agreed(on);
   rc["off_reason"] = agreed(why);
+  rc["off_reason_text"] = agreed(whyText);
   summary["visible_first"] = agreed(visible);
   summary["result_cache"] = rc;
 }
@@ -257,7 +260,7 @@ std::string mergeText(const std::vector<json>& shards, const json& header, const
   }
   std::string text = "merged " + std::to_string(shards.size()) + " report(s) of " +
                      header.at("scene").at("file").get<std::string>() + " (" +
-                     header.at("cameras_source").get<std::string>() + "): cameras " +
+                     header.at("cameras_source_text").get<std::string>() + "): cameras " +
                      std::to_string(res.camerasDone) + " of " + std::to_string(total) +
                      (res.cancelled ? " (interrupted)" : "") + "\n";
   text += shortcutsText(summary.at("visible_first"), summary.at("result_cache"), res.total, "");

@@ -71,6 +71,7 @@ json findingJson(const vf::Finding& f) {
   j["classification"] = vf::toString(f.classification);
   const Cause cause = findingCause(f);
   j["cause"] = cause.key;
+  j["cause_id"] = cause.id;
   j["fix"] = cause.fix;
   j["explanation"] = cause.detail;
   j["partitioning"] = toString(f.partitioning);
@@ -115,7 +116,7 @@ json gpuFloatJson(const vf::GpuFloatFinding& g) {
                 {"operation", op.empty() ? json(nullptr) : json(op)}};
   };
   const Cause c = gpuFloatCause(g);
-  return {{"cause", c.key}, {"why", g.why}, {"fix", g.fix}, {"explanation", c.detail},
+  return {{"cause", c.key}, {"cause_id", c.id}, {"why", g.why}, {"fix", g.fix}, {"explanation", c.detail},
           {"a", side(g.a, g.edgeA, g.factorA, g.loA, g.hiA, g.operationA)},
           {"b", side(g.b, g.edgeB, g.factorB, g.loB, g.hiB, g.operationB)}};
 }
@@ -125,6 +126,7 @@ json holeJson(const vf::Hole& h) {
   j["kind"] = vf::toString(h.kind);
   const Cause cause = holeCause(h);
   j["cause"] = cause.key;
+  j["cause_id"] = cause.id;
   j["fix"] = cause.fix;
   j["explanation"] = cause.detail;
   j["patch"] = {{"index", h.patch.index}, {"ring", h.patch.ring}, {"tile", h.patch.tile}, {"patch", h.patch.patch},
@@ -232,9 +234,11 @@ json checkJson(const SceneArgs& a, const vf::Terrain& terrain, const vf::Camera&
   return j;
 }
 
-json sweepHeaderJson(const SceneArgs& a, const vf::Scene& scene, const std::string& camerasSource) {
+json sweepHeaderJson(const SceneArgs& a, const vf::Scene& scene, const std::string& camerasSource,
+                     const std::string& camerasSourceText) {
   json j = reportHeader("sweep", a, scene);
   j["cameras_source"] = camerasSource;
+  j["cameras_source_text"] = camerasSourceText;
   return j;
 }
 
@@ -271,7 +275,8 @@ json sweepSummaryJson(size_t requested, const vf::SweepResult& res, const std::v
   j["verdict"] = vf::toString(vf::verdictOf(res, countOffScreen));
   json cs = json::array();
   for (const CauseRow& c : causes)
-    cs.push_back({{"cause", c.cause}, {"fix", c.fix}, {"findings", c.findings}, {"cameras", c.cameras}, {"first_camera", c.firstCamera},
+    cs.push_back({{"cause", c.cause}, {"cause_id", c.id}, {"fix", c.fix}, {"findings", c.findings},
+                  {"cameras", c.cameras}, {"first_camera", c.firstCamera},
                   {"example", c.example}});
   j["causes"] = cs;
   j["visible_first"] = res.visibleFirst;
@@ -287,7 +292,8 @@ json sweepSummaryJson(size_t requested, const vf::SweepResult& res, const std::v
 json resultCacheJson(const vf::SweepResult& res) {
   const vf::WorkStats& w = res.work;
   return {{"on", res.resultCache},
-          {"off_reason", res.resultCache ? json(nullptr) : json(res.resultCacheOff)},
+          {"off_reason", res.resultCache ? json(nullptr) : json(res.resultCacheOffKey)},
+          {"off_reason_text", res.resultCache ? json(nullptr) : json(res.resultCacheOff)},
           {"hits", w.cacheHits},
           {"seam_hits", w.seamHits},
           {"misses", w.cacheMisses},
@@ -311,7 +317,7 @@ static std::string resultCacheWords(const json& rc, const vf::Stats& s) {
   const json& on = rc.at("on");
   const bool some = on.is_string();
   if (!some && !on.get<bool>()) {
-    const json& why = rc.at("off_reason");
+    const json& why = rc.at("off_reason_text");
     const std::string text = why.is_string() ? why.get<std::string>() : std::string();
     return "result cache off" + (text.empty() ? std::string() : ": " + text);
   }

@@ -28,7 +28,12 @@ using json = nlohmann::ordered_json;
 // 9: --gpu-float: "gpu_float_mode" ("off" | "conformant") in the header, "gpu_float_pairs" and "gpu_float_findings" in
 //    every "stats", check: "gpu_float" (the GPU float findings), sweep: "first_gpu_float" per camera and
 //    "cameras_gpu_float" in the summary; verdict "gpu_float".
-constexpr int kReportVersion = 9;
+// 10: the envelope of every report kind (docs/schema): "cameras_source" is a key (scene_path | flyover | orbit |
+//    random | file) and its words moved to "cameras_source_text"; result_cache.off_reason is a key (option |
+//    camera_dependent_effect | keep_matches, "mixed" when merged shards differ) and its words moved to
+//    "off_reason_text"; "cause_id" (the cause as a key of a fixed set, cli/causes.h) next to every "cause" (findings,
+//    holes, undecided patches, GPU float findings, sweep's causes). prove's report (kind "prove") shares this version.
+constexpr int kReportVersion = 10;
 
 json vec3Json(const glm::vec3& v);
 json gpuFloatJson(const vf::GpuFloatFinding& g); // one GPU float finding (--gpu-float conformant)
@@ -38,7 +43,8 @@ json denormalJson(const vf::DenormalFactor& d); // a denormal hull factor: patch
 json lodJson(const vf::EdgeLod& l);   // one side's LOD record (docs/cli.md)
 json workJson(const vf::WorkStats& w);
 json statsJson(const vf::Stats& s);
-// A sweep's result cache (vf::SweepResult, its work counters): {"on", "off_reason" (null when on), "hits",
+// A sweep's result cache (vf::SweepResult, its work counters): {"on", "off_reason" (a key, null when on),
+// "off_reason_text" (its words, null when on), "hits",
 // "seam_hits", "misses", "seam_proofs", "items", "bytes", "dropped"}.
 json resultCacheJson(const vf::SweepResult& res);
 // The summary line of the sweep shortcuts ("  shortcuts      visible first (...); result cache on (...)\n") from the
@@ -57,6 +63,7 @@ struct CauseRow {
   size_t firstCamera = 0;
   std::string example;
   std::string fix; // the first finding's Cause::fix
+  std::string id;  // Cause::id (JSON "cause_id")
 };
 
 // The whole report of `fftess check` (mesh: null unless --mesh ran).
@@ -68,7 +75,9 @@ json checkJson(const SceneArgs& a, const vf::Terrain& terrain, const vf::Camera&
 //   sweepJsonCamera(entry)   one camera (first: whether it is the first one written);
 //   sweepJsonEnd(summary)    the end of "cameras" and the summary members, "}" and a newline.
 // The concatenation equals ordered_json{header..., "cameras": [entries...], summary...}.dump(2) + "\n".
-json sweepHeaderJson(const SceneArgs& a, const vf::Scene& scene, const std::string& camerasSource);
+// camerasSource: the key (scene_path, flyover, orbit, random, file); camerasSourceText: the same in words.
+json sweepHeaderJson(const SceneArgs& a, const vf::Scene& scene, const std::string& camerasSource,
+                     const std::string& camerasSourceText);
 json sweepCameraJson(size_t globalIndex, const vf::Camera& cam, const vf::CameraResult& c);
 // The summary: cameras_total .. work (requested: cameras asked for, more than checked if interrupted; countOffScreen:
 // --offscreen, the verdict counts findings outside the view frustum).

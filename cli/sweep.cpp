@@ -33,6 +33,7 @@ namespace {
 struct CauseInfo {
   std::string detail;     // explanation of the first finding with this cause
   std::string fix;        // its fix (Cause::fix)
+  std::string id;         // Cause::id
   int64_t findings = 0;   // findings with this cause, over all cameras
   size_t cameras = 0;     // cameras with at least one finding with this cause
   size_t first = 0;       // first camera (index) where it appeared
@@ -81,6 +82,7 @@ struct CauseTally {
         c.firstFinding = k;
         c.detail = cause.detail;
         c.fix = cause.fix;
+        c.id = cause.id;
       }
     }
   }
@@ -174,6 +176,15 @@ static std::string cameraWords(const SweepArgs& a, const vf::Terrain& terrain, u
   return "flyover of " + std::to_string(kDefaultFlyover) + ", the scene has no camera path";
 }
 
+// The same as a key (report_json.h, "cameras_source").
+static const char* cameraSourceKey(const SweepArgs& a, const vf::Terrain& terrain, const CameraFile* file) {
+  if (file) return "file";
+  if (a.orbit > 0) return "orbit";
+  if (a.flyover > 0) return "flyover";
+  if (a.random > 0) return "random";
+  return terrain.scene().cameraPath.empty() ? "flyover" : "scene_path";
+}
+
 // The sweep picture draws the cameras of the run (the path joined in order, the map's extent) up to `end` (all of
 // them; an interrupted run's up to the last one checked), so --svg, and only --svg, holds them in memory.
 static std::vector<vf::Camera> svgCameras(const vf::CameraSet& cams, size_t end) {
@@ -239,7 +250,8 @@ public:
   SweepRun(const SweepArgs& a, const SweepPlan& plan, const vf::Terrain& terrain, const vf::CheckOptions& opt,
            AtomicFile* jsonFile, AtomicFile* svgFile, CameraFile* file)
       : a_(a), plan_(plan), terrain_(terrain), opt_(opt), cams_(cameraSet(a, terrain, plan.seed, file)),
-        how_(cameraWords(a, terrain, plan.seed, file)), requested_(plan.shareOf(cams_.size())), jsonFile_(jsonFile),
+        how_(cameraWords(a, terrain, plan.seed, file)), howKey_(cameraSourceKey(a, terrain, file)),
+        requested_(plan.shareOf(cams_.size())), jsonFile_(jsonFile),
         svgFile_(svgFile) {
     if (file) camerasFile_ = {{"path", file->path}, {"hash", file->hashText()}, {"cameras", file->lines.size()}};
     tally_.countOffScreen = a.offscreen;
@@ -275,6 +287,7 @@ private:
   // depend on the camera count, and there is no setup to wait for.
   const vf::CameraSet cams_;
   const std::string how_;
+  const std::string howKey_; // how_ as a key (cameras_source)
   const size_t requested_; // this run's share of the cameras
   AtomicFile* jsonFile_;   // null without --json
   AtomicFile* svgFile_;    // null without --svg
@@ -314,7 +327,7 @@ void SweepRun::emitJson(const std::string& text) {
 
 void SweepRun::beginJson() {
   if (!jsonFile_) return;
-  json header = sweepHeaderJson(a_, terrain_.scene(), how_);
+  json header = sweepHeaderJson(a_, terrain_.scene(), howKey_, how_);
   if (!camerasFile_.is_null()) header["cameras_file"] = camerasFile_;
   if (plan_.sharded) header["shard"] = {{"index", plan_.shardK + 1}, {"count", plan_.shardN}};
   header["denormals_flushed"] = vf::denormalRule(terrain_.scene(), opt_).flush; // the rule every camera ran with
@@ -403,7 +416,8 @@ vf::SweepResult SweepRun::run(const std::atomic<bool>* cancel, bool talk, const 
   if (!cancel->load())
     res = vf::sweep(terrain_, requested_, [&](size_t local) { return cams_.at(plan_.global(local)); }, opt_, so);
   res.cancelled = res.cancelled || (cancel->load() && res.camerasDone + res.camerasInvalid < requested_);
-  if (a_.noResultCache && !res.resultCache) res.resultCacheOff = "--no-result-cache"; // the reason the user gave
+  if (a_.noResultCache && !res.resultCache) // the reason the user gave
+    res.resultCacheOff = "--no-result-cache", res.resultCacheOffKey = "option";
   progress.finish();
   elapsed_ = progress.elapsed();
   return res;
@@ -482,7 +496,7 @@ void SweepRun::finishReports(const vf::SweepResult& res) {
     std::vector<CauseRow> rows;
     for (const std::string& k : order) {
       const CauseInfo& c = tally_.causes.at(k);
-      rows.push_back({k, c.findings, c.cameras, c.first, c.detail, c.fix});
+      rows.push_back({k, c.findings, c.cameras, c.first, c.detail, c.fix, c.id});
     }
     vf::WorkStats terrainWork = terrain_.stats();
     terrainWork.terrainBuilds = vf::terrainBuildCount(); // every build in this process

@@ -49,10 +49,16 @@ SweepResult sweep(const Terrain& terrain, size_t count, const std::function<Came
   // The sweep-wide memo (result cache and seam proofs), unless the scene or the options rule it out.
   std::unique_ptr<detail::SweepMemo> memo;
   const std::vector<std::string> effects = cameraDependentEffects(scene);
-  if (!sweepOptions.resultCache) out.resultCacheOff = "turned off (SweepOptions::resultCache; the cli's --no-result-cache)";
-  else if (!effects.empty()) out.resultCacheOff = "camera-dependent effect: " + effects.front();
-  else if (options.keepMatches) out.resultCacheOff = "matches are kept (CheckOptions::keepMatches): a cached match has no record";
-  else {
+  if (!sweepOptions.resultCache) {
+    out.resultCacheOff = "turned off (SweepOptions::resultCache; the cli's --no-result-cache)";
+    out.resultCacheOffKey = "option";
+  } else if (!effects.empty()) {
+    out.resultCacheOff = "camera-dependent effect: " + effects.front();
+    out.resultCacheOffKey = "camera_dependent_effect";
+  } else if (options.keepMatches) {
+    out.resultCacheOff = "matches are kept (CheckOptions::keepMatches): a cached match has no record";
+    out.resultCacheOffKey = "keep_matches";
+  } else {
     const detail::TerrainData& t = terrain.data();
     memo = std::make_unique<detail::SweepMemo>(sweepOptions.resultCacheSlots, t.tree ? t.tree->allPairs.size() : 0);
   }

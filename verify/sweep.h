@@ -85,6 +85,9 @@ struct SweepResult {
   bool visibleFirst = false;
   bool resultCache = false;
   std::string resultCacheOff;
+  // resultCacheOff as a key ("" when on): "option" (SweepOptions::resultCache false), "camera_dependent_effect",
+  // "keep_matches" (CheckOptions::keepMatches).
+  std::string resultCacheOffKey;
   size_t resultCacheBytes = 0;
   size_t resultCacheItems = 0;
   int64_t resultCacheDropped = 0;

@@ -128,7 +128,7 @@ TEST_CASE("check: the bundled scene is watertight with the pow2 workaround, crac
   CHECK(r.status == 0);
   CHECK(r.out.find("verdict: watertight") != std::string::npos);
   json j = json::parse(clitest::readFile(js));
-  CHECK(j.at("version") == 9);
+  CHECK(j.at("version") == 10);
   CHECK(j.at("kind") == "check");
   checkStatsShape(j.at("stats"));
   CHECK(j.at("stats").at("cracks") == 0);
@@ -310,7 +310,7 @@ TEST_CASE("sweep: workaround on is clean, off cracks, summary names causes, JSON
   CHECK(r.out.find("causes") != std::string::npos);
   CHECK(r.out.find("not a power of two") != std::string::npos);
   const json j = json::parse(clitest::readFile(js));
-  CHECK(j.at("version") == 9);
+  CHECK(j.at("version") == 10);
   CHECK(j.at("kind") == "sweep");
   CHECK(j.at("cameras_total") == 16);
   CHECK(j.at("cameras_done") == 16);
@@ -420,7 +420,7 @@ TEST_CASE("check: an eye on a shared edge's midpoint plane gives holes, exit 1 (
   CHECK(svg.find("<path class=\"hole\"") != std::string::npos); // the holes are filled on the map
   CHECK(r.out.find("w = 0 in the projection") != std::string::npos);
   const nlohmann::json j = nlohmann::json::parse(clitest::readFile(json));
-  CHECK(j.at("version") == 9);
+  CHECK(j.at("version") == 10);
   CHECK(j.at("verdict") == "holes");
   CHECK(j.at("stats").at("holes").get<int64_t>() >= 2);
   REQUIRE(j.at("holes").size() >= 2);

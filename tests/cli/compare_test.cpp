@@ -90,7 +90,7 @@ TEST_CASE("compare: the JSON names its schema, kind, fftess version and batch, a
   const auto j = run({"compare", "--json", batch, clitest::source("docs/examples/compare_port_bug.csv")});
   REQUIRE(j.status == 1);
   const json doc = json::parse(j.out);
-  CHECK(doc["version"] == 1);
+  CHECK(doc["version"] == 2);
   CHECK(doc["kind"] == "compare");
   CHECK(run({"--version"}).out == "fftess " + doc["fftess_version"].get<std::string>() + "\n");
   CHECK(doc["batch"] == batch);

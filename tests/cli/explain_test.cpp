@@ -19,7 +19,8 @@ json whyPow2(const std::string& partitioning) {
   REQUIRE(r.err.empty());
   const json j = json::parse(r.out);
   REQUIRE(j.is_object());
-  CHECK(j.at("version") == 1);
+  CHECK(j.at("version") == 2);
+  CHECK(j.at("kind") == "explain_why_pow2");
   CHECK(j.at("partitioning") == partitioning);
   const json& pairs = j.at("pairs");
   REQUIRE(pairs.is_array());
@@ -51,7 +52,7 @@ json explainJson(const std::vector<std::string>& args) {
   const auto r = run(all);
   REQUIRE(r.status == 0);
   const json j = json::parse(r.out);
-  CHECK(j.at("version") == 1);
+  CHECK(j.at("version") == 2);
   CHECK(j.at("kind") == "explain");
   for (const char* side : {"big", "small"}) {
     const json& s = j.at(side);

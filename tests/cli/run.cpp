@@ -20,6 +20,75 @@ extern char** environ;
 
 namespace clitest {
 
+// ---- the JSON reports of every run, collected for tests/schema ----------------------------------------------------
+// Each run that exits 0 or 1 and was asked for a JSON report (the file after --json of check, sweep, merge, prove and
+// bench; stdout for --json - and for the --json flag of compare, driver-check and explain) leaves a copy of the report
+// in FFTESS_TEST_REPORTS as PID.N.json (its command line in PID.N.cmd); "schema:every JSON report of the cli tests
+// validates" checks them against docs/schema. A file is copied only when this run wrote it (new, or another inode,
+// mtime or size than before the run), so inputs a test corrupts on purpose do not count.
+namespace {
+
+struct JsonTargets {
+  std::vector<std::string> files;
+  bool toStdout = false;
+};
+
+JsonTargets jsonTargets(const std::vector<std::string>& args) {
+  JsonTargets t;
+  std::string command;
+  for (const std::string& a : args)
+    if (!a.empty() && a[0] != '-') {
+      command = a;
+      break;
+    }
+  const bool flag = command == "compare" || command == "driver-check" || command == "explain";
+  for (size_t i = 0; i < args.size(); ++i) {
+    std::string value;
+    if (args[i] == "--json" && flag) value = "-";
+    else if (args[i] == "--json" && i + 1 < args.size()) value = args[i + 1];
+    else if (args[i].rfind("--json=", 0) == 0) value = args[i].substr(7);
+    else continue;
+    if (value == "-") t.toStdout = true;
+    else t.files.push_back(value);
+  }
+  return t;
+}
+
+bool sameFile(const struct stat& a, const struct stat& b) {
+  return a.st_ino == b.st_ino && a.st_dev == b.st_dev && a.st_size == b.st_size &&
+         a.st_mtim.tv_sec == b.st_mtim.tv_sec && a.st_mtim.tv_nsec == b.st_mtim.tv_nsec;
+}
+
+void collectReport(const std::string& text, const std::vector<std::string>& args) {
+#ifdef FFTESS_TEST_REPORTS
+  static int counter = 0;
+  const std::string dir = FFTESS_TEST_REPORTS;
+  ::mkdir(dir.c_str(), 0755);
+  const std::string base = dir + "/" + std::to_string(::getpid()) + "." + std::to_string(counter++);
+  std::string cmd = "fftess";
+  for (const std::string& a : args) cmd += " " + a;
+  writeFile(base + ".json", text);
+  writeFile(base + ".cmd", cmd + "\n");
+#else
+  (void)text, (void)args;
+#endif
+}
+
+// One line per run in PID.runs: "json" (asked for a JSON report, exited 0 or 1, the report collected), "unread" (asked
+// for one, exited 0 or 1, but it went to a FIFO, a device or a stdout of the test's own: not collected) or "other", so
+// the schema test knows a run that collected nothing from a collection that is broken.
+void logRun(const char* what) {
+#ifdef FFTESS_TEST_REPORTS
+  const std::string dir = FFTESS_TEST_REPORTS;
+  ::mkdir(dir.c_str(), 0755);
+  std::ofstream(dir + "/" + std::to_string(::getpid()) + ".runs", std::ios::app) << what << "\n";
+#else
+  (void)what;
+#endif
+}
+
+} // namespace
+
 std::string tmpDir() {
   static std::string dir = [] {
     std::string base = FFTESS_TEST_TMP;
@@ -89,6 +158,13 @@ TimedResult runWith(const std::vector<std::string>& args, const RunOptions& o) {
   else
     posix_spawn_file_actions_addopen(&fa, 1, o.stdoutPath.c_str(), O_WRONLY, 0);
   posix_spawn_file_actions_addopen(&fa, 2, err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  const JsonTargets targets = jsonTargets(args);
+  std::vector<std::pair<bool, struct stat>> before; // per target file: existed, its stat
+  for (const std::string& f : targets.files) {
+    struct stat st {};
+    const bool existed = ::stat(f.c_str(), &st) == 0;
+    before.emplace_back(existed, st);
+  }
   std::vector<std::string> all{binary()};
   all.insert(all.end(), args.begin(), args.end());
   std::vector<char*> argv;
@@ -141,6 +217,18 @@ TimedResult runWith(const std::vector<std::string>& args, const RunOptions& o) {
   r.status = WIFEXITED(st) ? WEXITSTATUS(st) : 128 + WTERMSIG(st);
   if (o.stdoutPath.empty()) r.out = readFile(out);
   r.err = readFile(err);
+  const bool wantsJson = (r.status == 0 || r.status == 1) && (targets.toStdout || !targets.files.empty());
+  int collected = 0;
+  if (wantsJson) {
+    if (targets.toStdout && o.stdoutPath.empty() && !r.out.empty()) collectReport(r.out, args), ++collected;
+    for (size_t i = 0; i < targets.files.size(); ++i) {
+      struct stat st {};
+      if (::stat(targets.files[i].c_str(), &st) != 0 || !S_ISREG(st.st_mode)) continue;
+      if (before[i].first && sameFile(before[i].second, st)) continue; // not written by this run
+      collectReport(readFile(targets.files[i]), args), ++collected;
+    }
+  }
+  logRun(!wantsJson ? "other" : collected ? "json" : "unread");
   ::unlink(in.c_str());
   ::unlink(out.c_str());
   ::unlink(err.c_str());

@@ -88,11 +88,12 @@ TEST_CASE("sweep: the shortcuts run unless --offscreen, --no-visible-first or --
   // The JSON keys.
   for (const Swept* s : {&dflt, &noVf, &noCache, &none, &offscreen}) {
     const json& j = s->j;
-    CHECK(j.at("version") == 9);
+    CHECK(j.at("version") == 10);
     CHECK(j.at("visible_first").is_boolean());
     const json& rc = j.at("result_cache");
     CHECK(rc.at("on").is_boolean());
     CHECK((rc.at("on").get<bool>() ? rc.at("off_reason").is_null() : rc.at("off_reason").is_string()));
+    CHECK((rc.at("on").get<bool>() ? rc.at("off_reason_text").is_null() : rc.at("off_reason_text").is_string()));
     for (const char* k : {"hits", "seam_hits", "misses", "seam_proofs", "items", "bytes", "dropped"})
       CHECK(rc.at(k).is_number_integer());
     CHECK(rc.at("hits") == j.at("work").at("cache_hits"));
@@ -112,7 +113,8 @@ TEST_CASE("sweep: the shortcuts run unless --offscreen, --no-visible-first or --
   }
   for (const Swept* s : {&noCache, &none}) {
     CHECK(s->j.at("result_cache").at("on") == false);
-    CHECK(s->j.at("result_cache").at("off_reason") == "--no-result-cache");
+    CHECK(s->j.at("result_cache").at("off_reason") == "option");
+    CHECK(s->j.at("result_cache").at("off_reason_text") == "--no-result-cache");
     CHECK(s->j.at("work").at("cache_hits") == 0);
     CHECK(s->j.at("work").at("seam_hits") == 0);
   }
@@ -153,6 +155,7 @@ TEST_CASE("merge: the shards' shortcut counters are summed and a flag the shards
   const json& rj = j.at("result_cache");
   // Shard 2 says why its cache was off; shard 1's reason (none when on) is another: mixed.
   CHECK(rj.at("off_reason") == "mixed");
+  CHECK(rj.at("off_reason_text") == "mixed");
   CHECK(rj.at("on") == (ra.at("on") == rb.at("on") ? ra.at("on") : json("mixed")));
   CHECK(j.at("visible_first") == (a.at("visible_first") == b.at("visible_first") ? a.at("visible_first") : json("mixed")));
   for (const char* k : {"hits", "seam_hits", "misses", "seam_proofs", "items", "bytes", "dropped"})
@@ -170,7 +173,8 @@ TEST_CASE("merge: the shards' shortcut counters are summed and a flag the shards
   REQUIRE(m2.status == 0);
   const json k = json::parse(clitest::readFile(merged));
   CHECK(k.at("result_cache").at("on") == false);
-  CHECK(k.at("result_cache").at("off_reason") == "--no-result-cache");
+  CHECK(k.at("result_cache").at("off_reason") == "option");
+  CHECK(k.at("result_cache").at("off_reason_text") == "--no-result-cache");
   CHECK(k.at("visible_first") == json::parse(clitest::readFile(t1)).at("visible_first"));
   CHECK(lineOf(m2.out, "  shortcuts").find("result cache off: --no-result-cache") != std::string::npos);
 }

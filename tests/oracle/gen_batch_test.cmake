@@ -1,7 +1,7 @@
 # ctest "oracle:driver-check write-batch": keepable random inputs on llvmpipe.
 #  1. `driver-check --random N --seed S --write-batch F` writes the bytes `fftess gen --random N --seed S` writes;
 #  2. `driver-check F` (the kept file) gives the report of the --random run: the same JSON apart from where the
-#     patches came from ("generated_by" against "batch", and the header line "source");
+#     patches came from ("generated_by" against "batch", and the header line "source_text");
 #  3. every listed patch's "line" is the line of F that holds it, "batch_line" that line's text, and the text report
 #     prints it under the patch ("batch line: ...") named "(fftess gen --random N --seed S, line L)".
 # No OpenGL context: a visible skip ("ORACLE-SKIPPED"), a failure when CI is set. Variables: FFTESS, OUT.
@@ -49,9 +49,9 @@ if(NOT generated STREQUAL "fftess gen --random ${N} --seed ${S}" OR NOT batch ST
   message(FATAL_ERROR "sources: generated_by '${generated}', batch '${batch}'")
 endif()
 string(JSON random REMOVE "${random}" generated_by)
-string(JSON random REMOVE "${random}" source)
+string(JSON random REMOVE "${random}" source_text)
 string(JSON fromFile REMOVE "${fromFile}" batch)
-string(JSON fromFile REMOVE "${fromFile}" source)
+string(JSON fromFile REMOVE "${fromFile}" source_text)
 if(NOT random STREQUAL fromFile)
   message(FATAL_ERROR "the kept batch's report differs from the --random run's:\n${random}\n---\n${fromFile}")
 endif()
