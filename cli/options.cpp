@@ -6,6 +6,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cctype>
 #include <regex>
 
 namespace fftess::cli {
@@ -194,10 +195,10 @@ std::string parseErrorText(const CLI::App& app, const CLI::App* sub, const CLI::
   } else if (dynamic_cast<const CLI::RequiredError*>(&e)) {
     if (!sub) text = "missing subcommand (expected " + joinChoices(subcommandNames(app)) + ")";
     else {
-      const std::string what = msg.substr(0, msg.rfind(" is required"));
-      const CLI::Option* o = findOption(scope, what);
-      text = who + "missing " + (o && o->get_lnames().empty() ? "argument " : "") +
-             (what == "scene" ? "SCENE (the scene file)" : what);
+      std::string what = msg.substr(0, msg.rfind(" is required"));
+      if (!what.empty() && what[0] != '-') // a positional argument: named as the usage lines name it (SCENE, PATCHES)
+        for (char& c : what) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+      text = who + "missing " + (what == "SCENE" ? "SCENE (the scene file)" : what);
     }
   } else if (dynamic_cast<const CLI::ConversionError*>(&e)) {
     text = conversionText(scope, msg);

@@ -27,17 +27,20 @@ size_t editDistance(std::string_view a, std::string_view b) {
 
 std::string nearestName(std::string_view word, const std::vector<std::string>& candidates) {
   const size_t limit = std::max<size_t>(1, word.size() / 3);
+  auto startsWith = [&](const std::string& c) { return c.size() > word.size() && c.compare(0, word.size(), word) == 0; };
   const std::string* best = nullptr;
   size_t bestDistance = 0;
   for (const std::string& c : candidates) {
     if (c == word) continue;
     const size_t d = editDistance(word, c);
-    if (d <= limit && d < word.size() && (!best || d < bestDistance)) best = &c, bestDistance = d;
+    if (d > limit || d >= word.size()) continue;
+    // Nearer wins; at the same distance a candidate that starts with the word ("of": "off", not "on"), else the earlier.
+    if (!best || d < bestDistance || (d == bestDistance && startsWith(c) && !startsWith(*best))) best = &c, bestDistance = d;
   }
   if (best) return *best;
   const std::string* prefixed = nullptr;
   for (const std::string& c : candidates) {
-    if (word.size() < 2 || c.size() <= word.size() || c.compare(0, word.size(), word) != 0) continue;
+    if (word.size() < 2 || !startsWith(c)) continue;
     if (prefixed) return ""; // two candidates start with it: no guess
     prefixed = &c;
   }

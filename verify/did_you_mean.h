@@ -15,8 +15,8 @@ size_t editDistance(std::string_view a, std::string_view b);
 
 // The candidate meant by `word`, "" when none is close: the nearest by editDistance if it is at most
 // max(1, |word| / 3) edits away and fewer edits than |word| (a one-letter word suggests nothing); else the one
-// candidate that starts with `word` (at least 2 bytes), if exactly one does. Ties go to the earlier candidate; a
-// candidate equal to `word` is never suggested.
+// candidate that starts with `word` (at least 2 bytes), if exactly one does. At the same distance a candidate that
+// starts with `word` wins ("of": "off", not "on"), else the earlier one; a candidate equal to `word` is never suggested.
 std::string nearestName(std::string_view word, const std::vector<std::string>& candidates);
 
 } // namespace fftess::verify

@@ -36,10 +36,11 @@ TEST_CASE("nearestName suggests a close name, a unique prefix, or nothing", "[di
   CHECK(nearestName("screen_sphere", schemes).empty()); // the name itself is never suggested
   const std::vector<std::string> kernels{"epick", "epeck", "float"};
   CHECK(nearestName("epik", kernels) == "epick");
-  CHECK(nearestName("epck", kernels) == "epeck");
+  CHECK(nearestName("epek", kernels) == "epeck");
   CHECK(nearestName("e", kernels).empty()); // one letter: no guess
   // Ties go to the earlier candidate; a longer distance loses.
   CHECK(nearestName("ab", {"ax", "bb"}) == "ax");
+  CHECK(nearestName("of", {"on", "off", "auto"}) == "off"); // at the same distance, the one that starts with it
   CHECK(nearestName("abcdefghi", {"abcdefgxx", "abcdefghx"}) == "abcdefghx");
   // The limit: max(1, |word| / 3) edits.
   CHECK(nearestName("abcdef", {"abcdxx"}) == "abcdxx");

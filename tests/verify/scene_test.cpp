@@ -244,7 +244,7 @@ TEST_CASE("an unknown key or value names the nearest known one, in the file and 
   using Catch::EndsWith;
   const std::string clmp = replaced(kBase, "adjacency_clamp = \"pow2\"", "adjacency_clmp = \"pow2\"");
   CHECK_THAT(parseScene(clmp, "t.toml").error,
-             EndsWith("t.toml:12:1: lod.adjacency_clmp: unknown key (did you mean \"lod.adjacency_clamp\"?)"));
+             EndsWith("t.toml:12:18: lod.adjacency_clmp: unknown key (did you mean \"lod.adjacency_clamp\"?)"));
   CHECK(parseScene(kBase, "t.toml", {"lod.adjacency_clmp=pow2"}).error ==
         "--set lod.adjacency_clmp: unknown key (did you mean \"lod.adjacency_clamp\"?)");
   CHECK_THAT(parseScene(replaced(kBase, "[lod]", "[lodd]"), "t.toml").error,
