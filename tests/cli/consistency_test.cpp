@@ -115,7 +115,7 @@ TEST_CASE("a negative --show is refused by every subcommand that has it", "[cli]
   }
 }
 
-TEST_CASE("--seed: one type and one rule in sweep, driver-check, gen and bench", "[cli][consistency]") {
+TEST_CASE("seeds: one type and one rule for --seed in sweep, driver-check, gen and bench", "[cli][consistency]") {
   const std::vector<std::vector<std::string>> subs{
       {"sweep", kScene, "--random", "1"}, {"driver-check", "--random", "1"}, {"gen", "--random", "1"}, {"bench"}};
   for (const auto& sub : subs) {
