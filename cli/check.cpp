@@ -92,7 +92,7 @@ CLI::App* addCheck(CLI::App& app, CheckArgs& a) {
   sub->add_option_function<int>(
       "--camera-index", [&a](const int& n) { a.cameraIndex = n, a.cameraIndexGiven = true; },
       "With --cameras FILE: check camera N of the file (0 is the first); without it the file must hold one camera");
-  addShowOption(sub, a.show, "Example edges printed under each cause, the widest gap first");
+  addShowOption(sub, a.show, "Example edges printed under each cause, the widest gap first (all are in --json)");
   sub->add_flag("--mesh", a.mesh, "Also run the whole-mesh check (full tessellation) and compare the two verdicts");
   sub->add_option("--view", a.view,
                   "Write what the camera sees as SVG: drawn patches' outlines by size, holes, on-screen findings with "

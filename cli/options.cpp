@@ -59,7 +59,7 @@ CLI::Option* addSeedOption(CLI::App* sub, uint64_t& seed, const std::string& wha
 }
 
 CLI::Option* addShowOption(CLI::App* sub, int& show, const std::string& what) {
-  const std::string help = what + " (default " + std::to_string(show) + "; all are in the report)";
+  const std::string help = what + " (default " + std::to_string(show) + ")";
   return sub->add_option_function<int>(
                 "--show",
                 [&show](const int& n) {
@@ -136,7 +136,16 @@ std::string extrasText(const CLI::App& scope, const std::vector<std::string>& ex
   for (const std::string& x : extras) {
     if (x.size() < 2 || x[0] != '-') continue;
     const std::string name = x.substr(0, x.find('='));
-    return "unknown option " + quoteToken(name) + didYouMeanText(name, optionSpellings(scope));
+    std::string hint = didYouMeanText(name, optionSpellings(scope));
+    const CLI::App* top = scope.get_parent();
+    std::string others; // the few subcommands that take it (sweep --mesh: "an option of fftess check")
+    int takers = 0;
+    if (top && hint.empty())
+      for (const CLI::App* s : top->get_subcommands([](const CLI::App*) { return true; }))
+        if (s != &scope && findOption(*s, name))
+          ++takers, others += (others.empty() ? "fftess " : ", fftess ") + s->get_name();
+    if (takers > 0 && takers <= 3) hint = " (an option of " + others + ")";
+    return "unknown option " + quoteToken(name) + hint;
   }
   if (extras.empty()) return "unexpected arguments";
   return "unexpected argument " + quoteToken(extras.front()) +

@@ -23,7 +23,7 @@ uint64_t parseSeed(const std::string& text, const std::string& option = "--seed"
 CLI::Option* addSeedOption(CLI::App* sub, std::string& seed, const std::string& what);
 CLI::Option* addSeedOption(CLI::App* sub, uint64_t& seed, const std::string& what);
 
-// --show N on sub: "<what> (default D; all are in the report)" with type N; a negative N is refused while parsing
+// --show N on sub: "<what> (default D)" with type N; a negative N is refused while parsing
 // ("--show -1: must be >= 0").
 CLI::Option* addShowOption(CLI::App* sub, int& show, const std::string& what);
 

@@ -125,7 +125,7 @@ CLI::App* addSweep(CLI::App& app, SweepArgs& a) {
   sub->add_option_function<int>("--random", [&a](const int& n) { a.random = n, a.randomGiven = true; },
                                 "N cameras at random positions and directions (see --seed)");
   addSeedOption(sub, a.seed, "Seed of --random's cameras");
-  addShowOption(sub, a.show, "Causes listed in the cause table, each with its example and fix");
+  addShowOption(sub, a.show, "Causes listed in the cause table, each with its example and fix (all are in --json)");
   sub->add_option("-j,--threads", a.threads, "Worker threads (default 0: all cores)")->capture_default_str();
   sub->add_option("--label", a.label, "Name for this run in the summary (default: the scene's name)");
   sub->add_option("--shard", a.shard,

@@ -256,7 +256,7 @@ CLI::App* addTessellate(CLI::App& app, TessellateArgs& a) {
       ->capture_default_str();
   sub->add_option("-o,--output", a.output, "Write to FILE (atomically: temp file + rename) instead of stdout");
   sub->add_flag("--flush-denormals", a.flushDenormals, "Flush denormal factors to zero first (as llvmpipe does)");
-  sub->add_option("--threads", a.threads,
+  sub->add_option("-j,--threads", a.threads,
                   "Tessellate and format hex/hashes output on N threads (0: one per hardware thread); the output is "
                   "the same bytes for any N")
       ->capture_default_str();

@@ -139,6 +139,7 @@ TEST_CASE("seeds: one type and one rule for --seed in sweep, driver-check, gen a
 TEST_CASE("parse errors are one fftess line that points at the subcommand's help", "[cli][consistency]") {
   checkError({"sweep", kScene, "--sho", "5"}, "sweep: unknown option '--sho'; did you mean '--show'? (see fftess sweep --help)");
   checkError({"check", kScene, "--no-such-option"}, "check: unknown option '--no-such-option' (see fftess check --help)");
+  checkError({"sweep", kScene, "--mesh"}, "sweep: unknown option '--mesh' (an option of fftess check) (see fftess sweep --help)");
   checkError({"check", kScene, "--jsno=x.json"}, "check: unknown option '--jsno'; did you mean '--json'? (see fftess check --help)");
   checkError({"check", kScene, kScene}, "check: unexpected argument '" + kScene + "' (see fftess check --help)");
   checkError({"check"}, "check: missing SCENE (the scene file) (see fftess check --help)");
