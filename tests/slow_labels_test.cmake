@@ -1,7 +1,9 @@
-# ctest "tests:slow labels": the tests labelled slow are exactly the [slow] cases of every Catch2 executable.
-#   cmake -DCTEST=ctest -DBUILD_DIR=build -DEXECUTABLES=exe1=module1,exe2=module2 -P slow_labels_test.cmake
+# ctest "tests:slow labels": the tests labelled slow are exactly the [slow] cases of every Catch2 executable and the
+# tests added with add_test that fftess_label_test labels slow (ADDED).
+#   cmake -DCTEST=ctest -DBUILD_DIR=build -DEXECUTABLES=exe1=module1,exe2=module2 -DADDED=name1,name2
+#         -P slow_labels_test.cmake
 string(REPLACE "," ";" executables "${EXECUTABLES}")
-set(expected)
+string(REPLACE "," ";" expected "${ADDED}")
 foreach(entry IN LISTS executables)
   string(FIND "${entry}" "=" eq REVERSE)
   string(SUBSTRING "${entry}" 0 ${eq} exe)
