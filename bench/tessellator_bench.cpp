@@ -134,5 +134,3 @@ void BM_case_b_quad_fractional_even_1_16(benchmark::State& state) { runCase(stat
 BENCHMARK(BM_case_b_quad_fractional_even_1_16)->Unit(benchmark::kMillisecond);
 
 } // namespace
-
-BENCHMARK_MAIN();

@@ -80,6 +80,17 @@ std::vector<RowSpec> rowSpecs() {
   return r;
 }
 
+} // namespace
+
+std::vector<std::string> benchGroups() {
+  std::vector<std::string> groups;
+  for (const RowSpec& s : rowSpecs())
+    if (std::find(groups.begin(), groups.end(), s.group) == groups.end()) groups.push_back(s.group);
+  return groups;
+}
+
+namespace {
+
 struct Row {
   RowSpec spec;
   std::string error;      // the variant does not apply to this scene (its loader's message)

@@ -52,6 +52,10 @@ struct BenchTable {
   std::vector<BenchRow> rows;
 };
 
+// The groups of the table's rows, in the table's order ("checker", "domain formula", ..., "sweep shortcuts"): what
+// --group takes, and what its help lists.
+std::vector<std::string> benchGroups();
+
 // Runs every row (single thread, each timed around checkScene / checkSceneMesh only). UsageError on a bad scene.
 BenchTable runBenchTable(const BenchReportArgs& a);
 std::string benchText(const BenchTable& t);

@@ -1,6 +1,7 @@
 // fftess bench: runs the Google Benchmark program built from bench/ (fftess_bench, installed next to fftess).
 #include "commands.h"
 #include "common.h"
+#include "options.h"
 
 #include <CLI/CLI.hpp>
 #include "accuracy.h"
@@ -31,11 +32,14 @@ CLI::App* addBench(CLI::App& app, BenchArgs& a) {
   sub->add_option("--scene", a.scene, "Scene file (default: docs/examples/terrain.toml)");
   sub->add_option("--set", a.overrides, "Override a scene key for every row: KEY=VALUE (repeatable)");
   sub->add_option("--cameras", a.cameras, "Random cameras (every row runs on the same ones)")->capture_default_str();
-  sub->add_option("--seed", a.seed, "Seed of the random cameras")->capture_default_str();
+  addSeedOption(sub, a.seed, "Seed of the random cameras");
   sub->add_option("--mesh-cameras", a.meshCameras, "Cameras of the whole-mesh row (seconds each)")->capture_default_str();
   sub->add_option("--repeats", a.repeats, "Each camera of an edge-check row is timed as the fastest of this many runs")
       ->capture_default_str();
-  sub->add_option("--group", a.group, "Only this group's rows (checker, domain formula, heights, mip, tessellator, scope)");
+  // The table's own groups (benchGroups): the help lists every one ({...}), and any other is refused.
+  sub->add_option("--group", a.group, "Only this group's rows")
+      ->type_name("GROUP")
+      ->check(choiceOf(benchGroups()));
   sub->add_option("--markdown", a.markdown, "Write the table as Markdown");
   sub->add_option("--json", a.json, "Write the table as JSON");
   sub->add_option("--svg", a.svg, "Write the relative costs as an SVG bar chart");
@@ -62,11 +66,7 @@ static int runBenchReport(const BenchArgs& a) {
   if (a.repeats < 1) throw UsageError("--repeats " + std::to_string(a.repeats) + ": must be >= 1");
   r.repeats = a.repeats;
   r.only = a.group;
-  try {
-    r.seed = std::stoull(a.seed);
-  } catch (const std::exception&) {
-    throw UsageError("--seed " + quoteToken(a.seed) + ": expected a whole number");
-  }
+  r.seed = parseSeed(a.seed);
   refuseSameFiles({{"--markdown", a.markdown}, {"--json", a.json}, {"--svg", a.svg}}, {{"--scene", a.scene}});
   std::unique_ptr<AtomicFile> md, js, svg; // paths checked before the work
   if (!a.markdown.empty()) md = std::make_unique<AtomicFile>(a.markdown);

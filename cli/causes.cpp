@@ -161,15 +161,23 @@ static std::string gapText(const char* what, double world, double pixels, const 
   return gap;
 }
 
+// A crack's gap (" gap ...;", or the on-screen gap and then the farthest vertex's), "" for other findings.
+static std::string findingGap(const vf::Finding& f) {
+  if (f.classification != vf::Classification::Crack) return "";
+  const bool same = f.onScreenGapWorld == f.gapWorld && f.onScreenGapVertex == f.gapVertex;
+  if (!f.onScreen || same) return gapText("gap", f.gapWorld, f.gapPixels, f.gapVertex);
+  return gapText("gap on screen", f.onScreenGapWorld, f.onScreenGapPixels, f.onScreenGapVertex) +
+         gapText("farthest vertex of all", f.gapWorld, f.gapPixels, f.gapVertex);
+}
+
+std::string findingWhere(const vf::Finding& f) {
+  std::string gap = findingGap(f);
+  if (!gap.empty()) gap.pop_back(), gap = ":" + gap; // ": gap ..." without the ';'
+  return patchText(f.a.patch) + " " + edgeName(f.a.edge) + " | " + patchText(f.b.patch) + " " + edgeName(f.b.edge) + gap;
+}
+
 std::string findingLine(const vf::Finding& f, bool withCause) {
-  std::string gap;
-  if (f.classification == vf::Classification::Crack) {
-    const bool same = f.onScreenGapWorld == f.gapWorld && f.onScreenGapVertex == f.gapVertex;
-    if (!f.onScreen || same) gap = gapText("gap", f.gapWorld, f.gapPixels, f.gapVertex);
-    else
-      gap = gapText("gap on screen", f.onScreenGapWorld, f.onScreenGapPixels, f.onScreenGapVertex) +
-            gapText("farthest vertex of all", f.gapWorld, f.gapPixels, f.gapVertex);
-  }
+  std::string gap = findingGap(f);
   const bool crack = f.classification == vf::Classification::Crack;
   if (!withCause && !gap.empty()) gap.pop_back(); // the ';' before the cause
   return std::string(crack ? "crack      " : "t_junction ") + (f.onScreen ? "" : "(off screen) ") +
@@ -316,6 +324,10 @@ Cause gpuFloatCause(const vf::GpuFloatFinding& g) {
   // paths); only "different operations" names an operation.
   c.id = ops ? "gpu_float_operations" : "gpu_float_other";
   return c;
+}
+
+std::string gpuFloatWhere(const vf::GpuFloatFinding& g) {
+  return patchText(g.a) + " " + edgeName(g.edgeA) + " | " + patchText(g.b) + " " + edgeName(g.edgeB);
 }
 
 std::string gpuFloatLine(const vf::GpuFloatFinding& g, bool withCause) {

@@ -39,6 +39,9 @@ void setShaderBlame(const vf::Scene& scene);
 // farthest vertex's.
 // withCause false: without the cause's explanation (check's lines under their cause's header).
 std::string findingLine(const vf::Finding& f, bool withCause = true);
+// Where a finding is, for a line under its cause's header: both sides and a crack's gap ("ring 1 tile 10 patch 56
+// Veq1 | ring 0 tile 0 patch 0 Veq0: gap 0.00252 world (0.0417 px) at (-31.4633, 5.31813, -32)").
+std::string findingWhere(const vf::Finding& f);
 // A hole's cause from its records: a short key (sweep grouping) and the explanation (factor bits, lod's record,
 // the projection's w at the edge's midpoint, where the patch was seen).
 Cause holeCause(const vf::Hole& h);
@@ -47,6 +50,7 @@ std::string holeLine(const vf::Hole& h);              // one line: "hole", the p
 // the detail (both sides' C++ factors and what a conformant compiler may produce, the first operation that differs on
 // each side) and the finding's fix.
 Cause gpuFloatCause(const vf::GpuFloatFinding& g);
+std::string gpuFloatWhere(const vf::GpuFloatFinding& g); // both sides, as findingWhere
 // One line: "gpu float", both sides, then (withCause) the cause's detail.
 std::string gpuFloatLine(const vf::GpuFloatFinding& g, bool withCause = true);
 // The causes of a report with their fixes, keyed as sweep's table keys them ("hole: KEY", "undecided: ...",

@@ -5,6 +5,7 @@
 #include "ci_scene.h"
 #include "commands.h"
 #include "common.h"
+#include "options.h"
 #include "gpu_lod.h"
 #include "report_gltf.h"
 #include "report_json.h"
@@ -92,7 +93,7 @@ CLI::App* addCheck(CLI::App& app, CheckArgs& a) {
   sub->add_option_function<int>(
       "--camera-index", [&a](const int& n) { a.cameraIndex = n, a.cameraIndexGiven = true; },
       "With --cameras FILE: check camera N of the file (0 is the first); without it the file must hold one camera");
-  sub->add_option("--show", a.show, "Finding lines to print (default 20; all are in --json)")->capture_default_str();
+  addShowOption(sub, a.show, "Example edges printed under each cause, the widest gap first (all are in --json)");
   sub->add_flag("--mesh", a.mesh, "Also run the whole-mesh check (full tessellation) and compare the two verdicts");
   sub->add_option("--view", a.view,
                   "Write what the camera sees as SVG: drawn patches' outlines by size, holes, on-screen findings with "
@@ -151,64 +152,67 @@ vf::Report keptReport(const vf::Report& full, size_t keep) {
   return r;
 }
 
-// The holes, undecided patches and findings grouped by cause (the cause keys of sweep's table), in the order of the
-// report: holes, undecided patches, findings on screen, then those off screen (apart: not counted unless
-// --offscreen). Each cause: a header with its count in the report and its fix, then its lines; a group's first
-// finding line carries the cause's explanation, the others only where and how wide. At most --show lines in all
-// (the headers of every cause are printed); then how many more there are.
-struct CauseGroup {
-  std::string key, fix;
-  std::vector<std::string> lines;
+// The holes, undecided patches and findings grouped by cause, keyed as sweep's cause table keys them (off-screen
+// findings apart, "crack (off screen): ...", unless --offscreen), in the order of the report: holes, undecided
+// patches, findings on screen, GPU float findings, then those off screen. Each cause: a header with its count in the
+// report, its fix, the explanation of its first example ("e.g."), then at most --show example edges, the widest gap
+// first (then in layout order), each only where and how wide, and how many more there are.
+struct CauseItem {
+  double gap = 0; // the gap that orders the examples (a crack's counted gap; 0 for the rest)
+  std::string where, detail;
 };
 
-void addToGroup(std::vector<CauseGroup>& groups, const std::string& key, const std::string& fix, std::string line) {
+struct CauseGroup {
+  std::string key, fix;
+  std::vector<CauseItem> items;
+};
+
+void addToGroup(std::vector<CauseGroup>& groups, const std::string& key, const std::string& fix, CauseItem item) {
   auto it = std::find_if(groups.begin(), groups.end(), [&](const CauseGroup& g) { return g.key == key; });
   if (it == groups.end()) it = groups.insert(groups.end(), CauseGroup{key, fix, {}});
-  it->lines.push_back(std::move(line));
+  it->items.push_back(std::move(item));
 }
 
-std::string groupText(const std::vector<CauseGroup>& groups, int show, int& shown) {
+std::string groupText(std::vector<CauseGroup> groups, int show) {
   std::string text;
-  for (const CauseGroup& g : groups) {
-    text += "  " + g.key + ": " + std::to_string(g.lines.size()) + "\n    fix: " + g.fix + "\n";
-    for (const std::string& line : g.lines)
-      if (shown++ < show) text += line + "\n";
+  for (CauseGroup& g : groups) {
+    std::stable_sort(g.items.begin(), g.items.end(), [](const CauseItem& x, const CauseItem& y) { return x.gap > y.gap; });
+    text += "  " + g.key + ": " + std::to_string(g.items.size()) + "\n    fix: " + g.fix + "\n";
+    text += "    e.g. " + g.items.front().detail + "\n";
+    const size_t shown = std::min(g.items.size(), static_cast<size_t>(show));
+    for (size_t i = 0; i < shown; ++i) text += "      " + g.items[i].where + "\n";
+    if (shown < g.items.size())
+      text += "      ... and " + std::to_string(g.items.size() - shown) + " more findings (--show N, or --json FILE)\n";
   }
   return text;
 }
 
 std::string findingLines(const CheckArgs& a, const vf::Report& r) {
-  std::vector<CauseGroup> undrawn, on, off;
+  std::vector<CauseGroup> groups, gpu, off;
   for (const vf::Hole& h : r.holes) {
     const Cause c = holeCause(h);
-    addToGroup(undrawn, "hole: " + c.key, c.fix, holeLine(h));
+    addToGroup(groups, "hole: " + c.key, c.fix, {0, patchText(h.patch), c.detail});
   }
   for (const vf::Hole& h : r.undecided) {
-    const Cause c = holeCause(h);
-    addToGroup(undrawn, c.key, c.fix, holeLine(h));
+    const Cause c = holeCause(h); // the key starts with "undecided: "
+    addToGroup(groups, c.key, c.fix, {0, patchText(h.patch), c.detail});
   }
   for (const vf::Finding& f : r.findings) {
     if (f.classification == vf::Classification::Match) continue;
     const Cause c = findingCause(f);
-    std::vector<CauseGroup>& groups = f.onScreen ? on : off;
-    const std::string key = std::string(vf::toString(f.classification)) + ": " + c.key; // off screen: under its header
-    const bool first = std::none_of(groups.begin(), groups.end(), [&](const CauseGroup& g) { return g.key == key; });
-    addToGroup(groups, key, c.fix, findingLine(f, first));
+    const bool counted = f.onScreen || a.offscreen;
+    const std::string key = std::string(vf::toString(f.classification)) + (counted ? "" : " (off screen)") + ": " + c.key;
+    const double gap = f.onScreen ? f.onScreenGapWorld : f.gapWorld;
+    addToGroup(counted ? groups : off, key, c.fix, {a.offscreen ? f.gapWorld : gap, findingWhere(f), c.detail});
   }
-  std::vector<CauseGroup> gpu; // --gpu-float conformant: matching edges that may crack on some GPUs
-  for (const vf::GpuFloatFinding& g : r.gpuFloat) {
+  for (const vf::GpuFloatFinding& g : r.gpuFloat) { // --gpu-float conformant: matching edges that may crack on some GPUs
     const Cause c = gpuFloatCause(g);
-    addToGroup(gpu, c.key, c.fix, gpuFloatLine(g));
+    addToGroup(gpu, c.key, c.fix, {0, gpuFloatWhere(g), c.detail});
   }
-  int shown = 0;
-  std::string text = groupText(undrawn, a.show, shown) + groupText(on, a.show, shown) + groupText(gpu, a.show, shown);
-  if (!off.empty())
-    text += std::string("  off screen") + (a.offscreen ? " (counted, --offscreen):" : ", not counted:") + "\n" +
-            groupText(off, a.show, shown);
-  const int64_t nonMatch =
-      r.stats.cracks + r.stats.tJunctions + r.stats.holes + r.stats.undecided + r.stats.gpuFloatFindings;
-  if (shown > a.show || nonMatch > a.show)
-    text += "  ... " + std::to_string(nonMatch - a.show) + " more findings (--show N, or --json FILE)\n";
+  std::string text = groupText(groups, a.show) + groupText(gpu, a.show) + groupText(off, a.show);
+  if (r.truncated)
+    text += "  the report keeps the first " + std::to_string(r.findings.size()) +
+            " findings (the counts under each cause are of those; the stats above count all)\n";
   return text;
 }
 

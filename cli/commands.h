@@ -76,7 +76,7 @@ struct SceneArgs {
 struct CheckArgs : SceneArgs {
   int pathCamera = -1; // --path-camera N: the scene path's camera N instead of [camera]
   bool pathCameraGiven = false; // --path-camera was given (any value, negative ones refused)
-  int show = 20;       // finding lines printed
+  int show = 3;        // example edges printed per cause (the widest gaps)
   bool mesh = false;   // also run the whole-mesh check and compare
   int cameraIndex = -1; // --camera-index N: camera N of --cameras FILE
   bool cameraIndexGiven = false;
@@ -93,6 +93,7 @@ struct SweepArgs : SceneArgs {
   // --offscreen: vf::CheckOptions::visibleFirst), --no-result-cache (vf::SweepOptions::resultCache).
   bool noVisibleFirst = false;
   bool noResultCache = false;
+  int show = 20;       // --show N: causes printed in the cause table (all are in --json)
 };
 
 struct MergeArgs {

@@ -2,6 +2,7 @@
 // (compare/compare.h does the comparing; this file reads the files, prints and picks the exit status).
 #include "ci_compare.h"
 #include "common.h"
+#include "options.h"
 #include "compare_report.h"
 #include "compare_svg.h"
 
@@ -268,11 +269,11 @@ CLI::App* addCompare(CLI::App& app, CompareArgs& a) {
   sub->add_option("capture", a.capture, "The port's output: hex blocks or CSV patch,primitive,vertex,u,v[,w]")
       ->required();
   sub->add_option("--format", a.format, "Capture format: auto (default), hex, csv")
-      ->check(CLI::IsMember({"auto", "hex", "csv"}));
+      ->check(choiceOf({"auto", "hex", "csv"}));
   sub->add_flag("--strict-order", a.strictOrder, "Same primitives in the same order with the same first vertex");
   sub->add_flag("--json", a.json, "JSON report on stdout");
   sub->add_flag("--flush-denormals", a.flushDenormals, "Reference flushes denormal factors (as llvmpipe and GPUs do)");
-  sub->add_option("--show", a.show, "Differing patches listed in full (default 20; all are counted)");
+  addShowOption(sub, a.show, "Differing patches listed in full (all are counted)");
   sub->add_option("--details", a.details, "Differing points explained per patch (default 4)");
   sub->add_option("--svg", a.svg, "SVG of the first differing patches: reference and capture over each other");
   sub->add_option("--sarif", a.sarif, "Write every differing patch as SARIF 2.1.0 to FILE, at its batch line (docs/ci.md)")
@@ -286,6 +287,8 @@ CLI::App* addCompare(CLI::App& app, CompareArgs& a) {
 
 int runCompare(const CompareArgs& a) {
   if (a.patches == "-" && a.capture == "-") throw UsageError("PATCHES and CAPTURE cannot both be stdin");
+  if (a.show < 0) throw UsageError("--show " + std::to_string(a.show) + ": must be >= 0");
+  if (a.details < 0) throw UsageError("--details " + std::to_string(a.details) + ": must be >= 0");
   refuseSameFiles({{"--svg", a.svg}, {"--sarif", a.sarif}, {"--junit", a.junit}},
                   {{"PATCHES", a.patches}, {"CAPTURE", a.capture}});
   std::unique_ptr<std::ifstream> pf, cf;

@@ -3,6 +3,7 @@
 // VK_EXT_transform_feedback, lavapipe by default) and the captures through the same comparison as `fftess compare`
 // (compare/compare.h).
 #include "common.h"
+#include "options.h"
 #include "compare_report.h"
 #include "random_batch.h"
 #include "port_bug.h"
@@ -34,16 +35,16 @@ CLI::App* addDriverCheck(CLI::App& app, DriverCheckArgs& a) {
   sub->add_option("patches", a.patches, "Batch file (hw or hlsl stage; - for stdin); none: --random patches");
   sub->add_option("--random", a.random, "Seeded random patches (with special factor values) when no batch is given")
       ->check(CLI::Range(1, 10000000));
-  sub->add_option("--seed", a.seed, "Seed of --random (default 1)");
+  addSeedOption(sub, a.seed, "Seed of --random's patches");
   sub->add_flag("--hardware", a.hardware, "Prefer a GPU (EGL device, Vulkan device) over Mesa's software one");
   sub->add_option("--api", a.api, "The driver's API: gl (OpenGL 4.5, EGL) or vulkan (VK_EXT_transform_feedback)")
-      ->check(CLI::IsMember({"gl", "vulkan"}));
+      ->check(choiceOf({"gl", "vulkan"}));
   sub->add_flag("--strict-order", a.strictOrder,
                 "Capture and compare in the reference's order: same primitives in the same order with the same first "
                 "vertex (needs a driver that emits in that order, llvmpipe)");
   sub->add_flag("--flush-denormals", a.flushDenormals, "Reference flushes denormal factors (as llvmpipe and GPUs do)");
   sub->add_flag("--json", a.json, "JSON report on stdout");
-  sub->add_option("--show", a.show, "Differing patches listed in full (default 20)");
+  addShowOption(sub, a.show, "Differing patches listed in full (all are counted)");
   sub->add_option("--write-batch", a.writeBatch, "The patches checked, as a batch file (--random: what fftess gen "
                                                  "writes for the same N and seed)");
   sub->add_option("--port-bug", a.portBug, "Run the driver as a port with this whole-patch bug (NAME[:FORM], "

@@ -4,6 +4,7 @@
 // The comparison and the causes come from tessellator/edge_analysis.h (compareHalfEdges); this file only prints them.
 #include "commands.h"
 #include "common.h"
+#include "options.h"
 
 #include <CLI/CLI.hpp>
 
@@ -343,10 +344,10 @@ CLI::App* addExplain(CLI::App& app, ExplainArgs& a) {
               "  fftess explain --why-pow2 --partitioning fractional_even --json");
   sub->add_option("factors", a.factors, "BIG SMALL: the factors (decimal, or 0x + 8 hex digits)")->expected(0, 2);
   sub->add_option("-p,--partitioning", a.partitioning, "Partitioning")
-      ->check(CLI::IsMember(partitioningNames()))
+      ->check(choiceOf(partitioningNames()))
       ->capture_default_str();
   sub->add_option("--stage", a.stage, "Stage the factors enter: hw, or an hlsl-* stage (edge preconditioning)")
-      ->check(CLI::IsMember(stageNames()))
+      ->check(choiceOf(stageNames()))
       ->capture_default_str();
   sub->add_flag("--why-pow2", a.whyPow2, "Table of B = 2..64 against S = B/2: which pairs meet, worst gap");
   sub->add_flag("--json", a.json, "Machine-readable output on stdout (schema in docs/cli.md)");

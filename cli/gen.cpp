@@ -2,6 +2,7 @@
 // so a random run can be kept, re-run (driver-check FILE) and fed to a port (compare PATCHES CAPTURE).
 #include "commands.h"
 #include "common.h"
+#include "options.h"
 #include "random_batch.h"
 
 #include <CLI/CLI.hpp>
@@ -11,7 +12,7 @@ namespace fftess::cli {
 CLI::App* addGen(CLI::App& app, GenArgs& a) {
   CLI::App* sub = app.add_subcommand("gen", "Write seeded random patches (driver-check's) as a batch file");
   sub->add_option("--random", a.random, "Number of random patches (default 1000)")->check(CLI::Range(0, 100000000));
-  sub->add_option("--seed", a.seed, "Seed (default 1)");
+  addSeedOption(sub, a.seed, "Seed of the random patches");
   sub->add_flag("--sweep", a.sweep, "The systematic sweep first (6348 uniform patches)");
   sub->add_option("-o,--output", a.output, "Output file (default stdout), written all or nothing");
   sub->footer("Example:\n  fftess gen --random 3000 --seed 7 -o random7.batch\n  fftess driver-check random7.batch\n"

@@ -3,6 +3,7 @@
 // Exit statuses: 0 clean, 1 cracks found, 2 bad usage or input, 3 internal error. Errors go to stderr.
 #include "commands.h"
 #include "common.h"
+#include "options.h"
 
 #include <CLI/CLI.hpp>
 
@@ -10,7 +11,9 @@
 #include <cstdio>
 #include <fcntl.h>
 #include <unistd.h>
+#include <algorithm>
 #include <string>
+#include <vector>
 #include <exception>
 #include <new>
 
@@ -27,6 +30,13 @@ static void occupyClosedStdStreams() {
       ::close(got);
     }
   }
+}
+
+// --help, -h, --version, --help-all: what the top level takes before a subcommand.
+static bool isTopLevelOption(const CLI::App& app, const std::string& arg) {
+  for (const CLI::Option* o : app.get_options())
+    if (o->check_name(arg.substr(0, arg.find('=')))) return true;
+  return false;
 }
 
 int main(int argc, char** argv) {
@@ -66,15 +76,19 @@ int main(int argc, char** argv) {
   ProveArgs proveArgs;
   CLI::App* prove = addProve(app, proveArgs);
 
-  std::string names;
-  bool known = false;
-  for (const CLI::App* sub : static_cast<const CLI::App&>(app).get_subcommands([](const CLI::App*) { return true; })) {
-    names += (names.empty() ? "" : "|") + sub->get_name();
-    known = known || (argc > 1 && sub->get_name() == argv[1]);
+  const std::vector<std::string> names = subcommandNames(app);
+  const char* first = argc > 1 ? argv[1] : "";
+  const bool known = std::find(names.begin(), names.end(), first) != names.end();
+  std::string expected;
+  for (const std::string& n : names) expected += (expected.empty() ? "" : "|") + n;
+  if (argc > 1 && first[0] != '-' && !known) {
+    std::fprintf(stderr, "fftess: error: unknown subcommand %s%s (expected %s; see fftess --help)\n",
+                 quoteToken(first).c_str(), didYouMeanText(first, names).c_str(), expected.c_str());
+    return kExitUsage;
   }
-  if (argc > 1 && argv[1][0] != '-' && !known) {
-    std::fprintf(stderr, "fftess: error: unknown subcommand '%s' (expected %s; see fftess --help)\n", argv[1],
-                 names.c_str());
+  if (argc > 1 && first[0] == '-' && !isTopLevelOption(app, first)) { // before CLI11's "a subcommand is required"
+    std::fprintf(stderr, "fftess: error: unknown option %s%s (see fftess --help)\n", quoteToken(first).c_str(),
+                 didYouMeanText(first, {"--help", "--version"}).c_str());
     return kExitUsage;
   }
   try {
@@ -86,7 +100,10 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::fprintf(stderr, "fftess: error: %s (see fftess --help)\n", e.what());
+    // The subcommand being parsed (CLI11 lists it as soon as it starts on its arguments): its own help is named.
+    const std::vector<CLI::App*> started = app.get_subcommands();
+    const CLI::App* sub = started.empty() ? nullptr : started.back();
+    std::fprintf(stderr, "fftess: error: %s\n", parseErrorText(app, sub, e).c_str());
     return kExitUsage;
   }
 

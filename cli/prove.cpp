@@ -4,6 +4,7 @@
 #include "causes.h"
 #include "commands.h"
 #include "common.h"
+#include "options.h"
 #include "progress.h"
 #include "report_json.h"
 #include "scene_options.h"
@@ -44,8 +45,7 @@ CLI::App* addProve(CLI::App& app, ProveArgs& a) {
                                                   "undecided)")
       ->capture_default_str();
   sub->add_option("-j,--threads", a.threads, "Worker threads (default 0: all cores)")->capture_default_str();
-  sub->add_option("--show", a.show, "Lines of the counterexample's findings and of the undecided regions to print")
-      ->capture_default_str();
+  addShowOption(sub, a.show, "Lines of the counterexample's findings and of the undecided regions to print");
   sub->add_option("--json", a.scene.json, "Write the proof's report as JSON to FILE ('-': stdout, no text then)");
   sub->add_flag("-q,--quiet", a.scene.quiet, "Print nothing but errors; the exit status tells the verdict");
   return sub;

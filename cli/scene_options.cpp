@@ -2,6 +2,7 @@
 // report files, exit status.
 #include "scene_options.h"
 #include "common.h"
+#include "options.h"
 #include "gpu_lod.h"
 
 #include <CLI/CLI.hpp>
@@ -61,15 +62,16 @@ vf::Terrain load(const SceneArgs& a) {
 vf::CheckOptions checkOptions(const SceneArgs& a) {
   vf::CheckOptions o;
   if (!vf::parseKernel(a.kernel.c_str(), o.kernel))
-    throw UsageError("--kernel " + quoteToken(a.kernel) + ": expected epick|epeck|float");
+    throw UsageError(choiceError("--kernel", a.kernel, {"epick", "epeck", "float"}));
   const std::string& fd = a.flushDenormals;
   if (fd == "on" || fd == "true") o.flushDenormals = vf::DenormalFlush::On;
   else if (fd == "off" || fd == "false") o.flushDenormals = vf::DenormalFlush::Off;
   else if (fd == "auto") o.flushDenormals = vf::DenormalFlush::Auto;
-  else throw UsageError("--flush-denormals=" + quoteToken(fd) + ": expected on|off|auto");
+  else // the value goes after '=' (the bare flag is "on"): said as it is given
+    throw UsageError("--flush-denormals=" + quoteToken(fd) + ": expected on|off|auto" + didYouMeanText(fd, {"on", "off", "auto"}));
   o.countOffScreen = a.offscreen;
   if (a.gpuFloat == "conformant") o.gpuFloat = vf::GpuFloat::Conformant;
-  else if (a.gpuFloat != "off") throw UsageError("--gpu-float " + quoteToken(a.gpuFloat) + ": expected off|conformant");
+  else if (a.gpuFloat != "off") throw UsageError(choiceError("--gpu-float", a.gpuFloat, {"off", "conformant"}));
   return o;
 }
 

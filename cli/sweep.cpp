@@ -5,6 +5,7 @@
 #include "ci_scene.h"
 #include "commands.h"
 #include "common.h"
+#include "options.h"
 #include "gpu_lod.h"
 #include "progress.h"
 #include "report_gltf.h"
@@ -103,14 +104,18 @@ struct CauseTally {
 } // namespace
 
 // ---- sweep -------------------------------------------------------------------------------------------------------
+// Cameras when the scene has no [[camera_path]] and no camera option is given (cameraSet, and the help says so).
+constexpr int kDefaultFlyover = 200;
+
 CLI::App* addSweep(CLI::App& app, SweepArgs& a) {
   CLI::App* sub = app.add_subcommand("sweep", "Check a scene from many cameras (a path, an orbit, a flyover, random)");
   sub->footer("Examples:\n"
               "  fftess sweep docs/examples/terrain.toml\n"
               "  fftess sweep docs/examples/terrain.toml --set lod.adjacency_clamp=none --random 500 --seed 3 "
               "--json sweep.json --svg sweep.svg\n"
-              "Cameras: the scene's [[camera_path]] (or its [camera]) unless --orbit, --flyover, --random or --cameras "
-              "FILE is given.\n"
+              "Cameras (the first that applies): --cameras FILE, or --orbit N, --flyover N or --random N (only one of "
+              "these four); else the scene's [[camera_path]]; else a flyover of " + std::to_string(kDefaultFlyover) +
+              " cameras across the terrain (never the scene's [camera] alone: fftess check checks that one).\n"
               "Ctrl-C stops early and still prints the summary and writes the reports (exit 130 if no crack was found).\n"
               "Exit status: 0 watertight, 1 cracks or holes found, nothing checked or a camera that could not be checked, "
               "2 bad usage or scene, 3 internal error.");
@@ -122,7 +127,8 @@ CLI::App* addSweep(CLI::App& app, SweepArgs& a) {
                                 "N cameras on a straight flight across the terrain");
   sub->add_option_function<int>("--random", [&a](const int& n) { a.random = n, a.randomGiven = true; },
                                 "N cameras at random positions and directions (see --seed)");
-  sub->add_option("--seed", a.seed, "Seed for --random")->capture_default_str();
+  addSeedOption(sub, a.seed, "Seed of --random's cameras");
+  addShowOption(sub, a.show, "Causes listed in the cause table, each with its example and fix (all are in --json)");
   sub->add_option("-j,--threads", a.threads, "Worker threads (default 0: all cores)")->capture_default_str();
   sub->add_option("--label", a.label, "Name for this run in the summary (default: the scene's name)");
   sub->add_option("--shard", a.shard,
@@ -137,23 +143,6 @@ CLI::App* addSweep(CLI::App& app, SweepArgs& a) {
                 "Prove every shared edge on every camera again (default: a camera reuses what earlier cameras proved "
                 "about an edge; off by itself for camera-dependent effects, e.g. displacement.mip)");
   return sub;
-}
-
-// Cameras when the scene has no [[camera_path]] and no generator option is given.
-constexpr int kDefaultFlyover = 200;
-
-// --seed: all decimal digits, 0 .. 2^64-1 (no sign, no wrap-around, no saturation).
-static uint64_t parseSeed(const std::string& text) {
-  uint64_t v = 0;
-  bool ok = !text.empty() && text.size() <= 20;
-  for (char c : text) {
-    if (!ok) break;
-    const unsigned d = static_cast<unsigned>(c - '0');
-    ok = c >= '0' && c <= '9' && v <= (UINT64_MAX - d) / 10;
-    v = v * 10 + d;
-  }
-  if (!ok) throw UsageError("--seed " + quoteToken(text) + ": expected a whole number from 0 to 18446744073709551615");
-  return v;
 }
 
 // The cameras of a sweep by index (vf::CameraSet): the generator option given, else the scene's camera path, else a
@@ -233,6 +222,7 @@ static SweepPlan sweepPlan(const SweepArgs& a) {
   if (a.flyoverGiven && a.flyover < 1) throw UsageError("--flyover " + std::to_string(a.flyover) + ": must be >= 1");
   if (a.randomGiven && a.random < 1) throw UsageError("--random " + std::to_string(a.random) + ": must be >= 1");
   if (a.threads < 0) throw UsageError("--threads " + std::to_string(a.threads) + ": must be >= 0");
+  if (a.show < 0) throw UsageError("--show " + std::to_string(a.show) + ": must be >= 0");
   SweepPlan p;
   p.seed = parseSeed(a.seed);
   parseShard(a.shard, p.shardK, p.shardN);
@@ -427,7 +417,9 @@ vf::SweepResult SweepRun::run(const std::atomic<bool>* cancel, bool talk, const 
 std::string SweepRun::causesText() const {
   std::string text = "  causes (findings of each cause, cameras where it appeared, the first camera where it appeared):\n";
   char buf[256];
-  for (const std::string& k : tally_.order()) {
+  const std::vector<std::string> order = tally_.order();
+  for (size_t i = 0; i < order.size() && i < static_cast<size_t>(a_.show); ++i) {
+    const std::string& k = order[i];
     const CauseInfo& c = tally_.causes.at(k);
     const vf::Camera cam = cams_.at(c.first);
     std::snprintf(buf, sizeof buf, "    %-75s %7lld findings on %5zu cameras, first #%zu eye (%.1f, %.1f, %.1f)\n",
@@ -437,6 +429,9 @@ std::string SweepRun::causesText() const {
     text += "      e.g. " + c.detail + "\n";
     text += "      fix: " + c.fix + "\n";
   }
+  if (order.size() > static_cast<size_t>(a_.show)) // --show N: the first N causes
+    text += "    ... " + std::to_string(order.size() - static_cast<size_t>(a_.show)) +
+            " more causes (--show N, or --json FILE)\n";
   return text;
 }
 

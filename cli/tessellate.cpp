@@ -1,6 +1,7 @@
 // fftess tessellate: batch tessellation, one patch per input line, in the exact golden format or human formats.
 #include "commands.h"
 #include "common.h"
+#include "options.h"
 
 #include <CLI/CLI.hpp>
 
@@ -251,11 +252,11 @@ CLI::App* addTessellate(CLI::App& app, TessellateArgs& a) {
   sub->add_option("-e,--patch", a.patches, "A batch line given on the command line (repeatable; replaces INPUT)")
       ->allow_extra_args(false); // one line per -e: "-e LINE FILE" is LINE and INPUT, which exclude each other
   sub->add_option("-f,--format", a.format, "Output format")
-      ->check(CLI::IsMember({"hex", "table", "obj", "svg", "hashes"}))
+      ->check(choiceOf({"hex", "table", "obj", "svg", "hashes"}))
       ->capture_default_str();
   sub->add_option("-o,--output", a.output, "Write to FILE (atomically: temp file + rename) instead of stdout");
   sub->add_flag("--flush-denormals", a.flushDenormals, "Flush denormal factors to zero first (as llvmpipe does)");
-  sub->add_option("--threads", a.threads,
+  sub->add_option("-j,--threads", a.threads,
                   "Tessellate and format hex/hashes output on N threads (0: one per hardware thread); the output is "
                   "the same bytes for any N")
       ->capture_default_str();

@@ -7,6 +7,8 @@
 #include <sys/stat.h>
 
 #include <cstring>
+#include <iterator>
+#include <vector>
 
 namespace fftess::verify::detail {
 
@@ -29,6 +31,11 @@ bool oneOf(const char* const (&names)[N], const std::string& v) {
   for (const char* n : names)
     if (v == n) return true;
   return false;
+}
+
+template <size_t N>
+std::string nearest(const char* const (&names)[N], const std::string& v) {
+  return Reader::didYouMean(v, std::vector<std::string>(std::begin(names), std::end(names)));
 }
 
 template <size_t N>
@@ -82,7 +89,7 @@ void readUniforms(Reader& r, const toml::table& lod, Lod& L) {
       }
       if (!oneOf(kLodUniformValues, s))
         r.fail(key, &v, "unknown value \"" + s + "\" (expected a number, an array, or one of: " +
-                            choices(kLodUniformValues) + ", or transpose(MATRIX))");
+                            choices(kLodUniformValues) + ", or transpose(MATRIX)" + nearest(kLodUniformValues, s) + ")");
       b.value = s;
     } else {
       numbers(r, key, v, b.numbers);
@@ -103,7 +110,7 @@ void readInputs(Reader& r, const toml::table& lod, Lod& L) {
       b.value = v.as_string()->get();
       if (!oneOf(kLodInputValues, b.value))
         r.fail(key, &v, "unknown value \"" + b.value + "\" (expected one of: " + choices(kLodInputValues) +
-                            ", or a constant: a number or an array of up to 4)");
+                            ", or a constant: a number or an array of up to 4" + nearest(kLodInputValues, b.value) + ")");
     } else {
       numbers(r, key, v, b.numbers);
       if (b.numbers.size() > 4) r.fail(key, &v, "a constant input has at most 4 components");

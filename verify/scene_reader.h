@@ -3,6 +3,7 @@
 // values. Not installed, not part of the contract; toml++ is included only here and in those two files.
 #pragma once
 
+#include "verify/did_you_mean.h"
 #include "verify/scene.h"
 
 #include <cmath>
@@ -11,6 +12,7 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <toml++/toml.h>
 
@@ -124,12 +126,22 @@ public:
     return os.str();
   }
 
-  // Checks that every key of tbl is in `known`.
+  // "; did you mean "PREFIXNAME"?" for the candidate nearest to word (verify/did_you_mean.h), "" when none is near.
+  static std::string didYouMean(const std::string& word, const std::vector<std::string>& candidates,
+                                const std::string& prefix = "") {
+    const std::string near = nearestName(word, candidates);
+    return near.empty() ? "" : "; did you mean \"" + prefix + near + "\"?";
+  }
+
+  // Checks that every key of tbl is in `known`; an unknown one names the nearest known key (with its prefix, as
+  // --set takes it): `lod.adjacency_clmp: unknown key (did you mean "lod.adjacency_clamp"?)`.
   void unknownKeys(const toml::table& tbl, const std::string& prefix, std::initializer_list<const char*> known) {
     for (auto&& [k, v] : tbl) {
       bool ok = false;
       for (const char* n : known) ok = ok || k.str() == n;
-      if (!ok) fail(prefix + std::string(k.str()), &v, "unknown key");
+      if (ok) continue;
+      const std::string near = didYouMean(std::string(k.str()), {known.begin(), known.end()}, prefix);
+      fail(prefix + std::string(k.str()), &v, "unknown key" + (near.empty() ? "" : " (" + near.substr(2) + ")"));
     }
   }
 
@@ -211,8 +223,10 @@ public:
         return true;
       }
     std::string choices;
+    std::vector<std::string> names;
     for (const Enum& e : table) choices += std::string(choices.empty() ? "" : " | ") + "\"" + e.name + "\"";
-    fail(prefix + key, t.get(key), "unknown value \"" + s + "\" (expected " + choices + ")");
+    for (const Enum& e : table) names.push_back(e.name);
+    fail(prefix + key, t.get(key), "unknown value \"" + s + "\" (expected " + choices + didYouMean(s, names) + ")");
   }
 
   bool vector(const toml::table& t, const std::string& prefix, const char* key, float* out, size_t count,

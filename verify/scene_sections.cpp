@@ -156,7 +156,8 @@ void readLodSource(Reader& r, const toml::table& t, Lod& L, const std::string& b
     if (at->is_boolean()) L.flushDenormals = at->as_boolean()->get() ? DenormalFlush::On : DenormalFlush::Off;
     else if (at->is_string() && at->as_string()->get() == "auto") L.flushDenormals = DenormalFlush::Auto;
     else if (at->is_string())
-      r.fail(p + "flush_denormals", at, "unknown value \"" + at->as_string()->get() + "\" (expected \"auto\" | true | false)");
+      r.fail(p + "flush_denormals", at, "unknown value \"" + at->as_string()->get() + "\" (expected \"auto\" | true | false" +
+                                                 Reader::didYouMean(at->as_string()->get(), {"auto"}) + ")");
     else r.fail(p + "flush_denormals", at, std::string("expected \"auto\", true or false, got ") + Reader::typeName(*at));
   }
 }
@@ -261,7 +262,8 @@ void readTessellation(Reader& r, const toml::table& root, Scene& s) {
   std::string stage;
   if (r.string(t, p, "stage", stage) && !parseStage(stage.c_str(), s.stage))
     r.fail(p + "stage", t.get("stage"),
-           "unknown value \"" + stage + "\" (expected " + joinNames(stageNames(), " | ") + ")");
+           "unknown value \"" + stage + "\" (expected " + joinNames(stageNames(), " | ") +
+               Reader::didYouMean(stage, stageNames()) + ")");
 }
 
 void checkSchemeEffects(Reader& r, const toml::table& root, const Scene& s) {

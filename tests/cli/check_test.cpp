@@ -234,7 +234,8 @@ TEST_CASE("check: a scene with T-junctions reports them as t_junction (text, JSO
   const std::string js = clitest::tmpDir() + "/tj.json";
   auto r = run({"check", clitest::source("docs/examples/t_junction.toml"), "--json", js, "--show", "1"});
   CHECK(r.status == 0);
-  CHECK(r.out.find("\nt_junction ring ") != std::string::npos);
+  CHECK(r.out.find("\n  t_junction: 2x jump: ") != std::string::npos); // the cause's header, then its edges
+  CHECK(r.out.find("\n      ring ") != std::string::npos);
   CHECK(r.out.find("verdict: watertight now (T-junctions)") != std::string::npos);
   const json j = json::parse(clitest::readFile(js));
   checkStatsShape(j.at("stats"));

@@ -239,3 +239,28 @@ TEST_CASE("a neighbour-rule key that cannot apply is refused, naming the key and
   CHECK(r.scene.lod.screenSphere.reconstruction == fftess::lod::Reconstruction::Resampled);
   CHECK(fftess::lod::NvidiaTileParams{}.reconstruction == fftess::lod::Reconstruction::EdgeVector);
 }
+
+TEST_CASE("an unknown key or value names the nearest known one, in the file and in --set", "[verify][scene]") {
+  using Catch::EndsWith;
+  const std::string clmp = replaced(kBase, "adjacency_clamp = \"pow2\"", "adjacency_clmp = \"pow2\"");
+  CHECK_THAT(parseScene(clmp, "t.toml").error,
+             EndsWith("t.toml:12:18: lod.adjacency_clmp: unknown key (did you mean \"lod.adjacency_clamp\"?)"));
+  CHECK(parseScene(kBase, "t.toml", {"lod.adjacency_clmp=pow2"}).error ==
+        "--set lod.adjacency_clmp: unknown key (did you mean \"lod.adjacency_clamp\"?)");
+  CHECK_THAT(parseScene(replaced(kBase, "[lod]", "[lodd]"), "t.toml").error,
+             EndsWith(": lodd: unknown key (did you mean \"lod\"?)"));
+  CHECK(parseScene(kBase, "t.toml", {"lod.scheme=screen_sphre"}).error ==
+        "--set lod.scheme: unknown value \"screen_sphre\" (expected \"constant\" | \"screen_sphere\" | "
+        "\"distance_pow2\" | \"bonaventura\" | \"clip_diameter\" | \"patch_center\" | \"geomorph\" | \"shader\"; "
+        "did you mean \"screen_sphere\"?)");
+  CHECK_THAT(parseScene(kBase, "t.toml", {"tessellation.partitioning=fractional_evn"}).error,
+             EndsWith("; did you mean \"fractional_even\"?)"));
+  CHECK_THAT(parseScene(kBase, "t.toml", {"tessellation.stage=hlsl-avgg"}).error,
+             EndsWith("; did you mean \"hlsl-avg\"?)"));
+  CHECK_THAT(parseScene(kBase, "t.toml", {"lod.flush_denormals=\"aut\""}).error,
+             EndsWith("(expected \"auto\" | true | false; did you mean \"auto\"?)"));
+  // Nothing near: no guess.
+  CHECK(parseScene(kBase, "t.toml", {"lod.bogus=1"}).error == "--set lod.bogus: unknown key");
+  CHECK(parseScene(kBase, "t.toml", {"lod.adjacency_clamp=sometimes"}).error ==
+        "--set lod.adjacency_clamp: unknown value \"sometimes\" (expected \"none\" | \"integer\" | \"pow2\")");
+}
