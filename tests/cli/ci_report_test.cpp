@@ -298,7 +298,7 @@ TEST_CASE("ci: --sarif and --junit are refused before any work when they name an
 TEST_CASE("ci: driver-check's SARIF points at the --write-batch lines of --random patches (GL builds only)", "[cli]") {
   const std::string dir = clitest::tmpDir();
   const std::string batch = dir + "/driver.batch", sarif = dir + "/driver.sarif", junit = dir + "/driver.xml";
-  const auto r = run({"driver-check", "--random", "20", "--port-bug", "float_division", "--write-batch", batch,
+  const auto r = run({"driver-check", "--random", "20", "--port-bug", "outer_factors_rotated", "--write-batch", batch,
                       "--sarif", sarif, "--junit", junit, "--json"});
   if (r.err.find("built without OpenGL") != std::string::npos || r.status == 3) {
     WARN("driver-check: no GL module or no context here: " + r.err);
