@@ -17,8 +17,18 @@ foreach(entry IN LISTS executables)
     endif()
   endforeach()
 endforeach()
+# ctest -N rewrites BUILD_DIR/Testing/Temporary/LastTest.log, the log of the ctest run this test is part of: list the
+# tests from a copy of the build tree's CTestTestfile.cmake files instead (they include the discovered tests and the
+# labels files by absolute path), whose Testing/ folder is the copy's own.
+set(copy "${BUILD_DIR}/tests/slow_labels_listing")
+file(REMOVE_RECURSE "${copy}")
+file(GLOB_RECURSE testfiles RELATIVE "${BUILD_DIR}" "${BUILD_DIR}/CTestTestfile.cmake")
+foreach(f IN LISTS testfiles)
+  get_filename_component(dir "${copy}/${f}" DIRECTORY)
+  file(COPY "${BUILD_DIR}/${f}" DESTINATION "${dir}")
+endforeach()
 # -FA .*: the fixtures' setup and cleanup tests that a slow test requires (tests/schema's cli_reports) are not listed.
-execute_process(COMMAND "${CTEST}" -N -L "^slow$" -FA ".*" WORKING_DIRECTORY "${BUILD_DIR}" OUTPUT_VARIABLE listing
+execute_process(COMMAND "${CTEST}" -N -L "^slow$" -FA ".*" WORKING_DIRECTORY "${copy}" OUTPUT_VARIABLE listing
                 RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "ctest -N -L slow failed (${rc}):\n${listing}")
