@@ -116,8 +116,8 @@ json regionJson(const vf::CameraRegion& r) {
   return {{"eye", boxJson(r.eyeLo, r.eyeHi)}, {"target", boxJson(r.targetLo, r.targetHi)}};
 }
 
-std::string statsLine(const vf::ProveStats& s) {
-  char b[400];
+std::string statsLine(const vf::ProveStats& s, bool volumes) {
+  char b[512];
   std::snprintf(b, sizeof b,
                 "  stats          regions %lld (%lld proved, %lld undecided), depth %d, pairs by trace %lld / by value "
                 "%lld / off screen %lld, patches off screen %lld, lod paths %lld, cameras checked %lld, %.2f s\n",
@@ -126,7 +126,30 @@ std::string statsLine(const vf::ProveStats& s) {
                 static_cast<long long>(s.pairsByValue), static_cast<long long>(s.pairsOffScreen),
                 static_cast<long long>(s.patchesOffScreen), static_cast<long long>(s.lodPaths),
                 static_cast<long long>(s.camerasChecked), s.seconds);
-  return b;
+  std::string text = b;
+  if (volumes && (s.regionsInvalid > 0 || s.regionsNothingOnScreen > 0 || s.volumeProved < 1)) {
+    std::snprintf(b, sizeof b,
+                  "  volume         %.6g %% proved, %.6g %% nothing on screen, %.6g %% invalid cameras (%lld regions), "
+                  "%.6g %% undecided\n",
+                  100 * s.volumeProved, 100 * s.volumeNothingOnScreen, 100 * s.volumeInvalid,
+                  static_cast<long long>(s.regionsInvalid), 100 * s.volumeUndecided);
+    text += b;
+  }
+  return text;
+}
+
+std::string invalidText(const ProveArgs& a, const vf::ProveReport& r) {
+  std::string text = "INVALID_CAMERAS: " + std::to_string(r.stats.regionsInvalid) +
+                     " regions may hold cameras check refuses; they are not proved (every other camera of the region "
+                     "is: watertight, no patch lost on screen). ";
+  const size_t listed = std::min(r.invalid.size(), static_cast<size_t>(a.show));
+  text += listed < static_cast<size_t>(r.stats.regionsInvalid) ? "The first " + std::to_string(listed) + ":\n"
+                                                                : "Each of them:\n";
+  for (size_t i = 0; i < listed; ++i) {
+    const vf::UndecidedRegion& u = r.invalid[i];
+    text += "  " + regionText(u.region) + " (depth " + std::to_string(u.depth) + "): " + u.why + "\n";
+  }
+  return text;
 }
 
 // The counterexample: the camera (values check reads back exactly), the command that confirms it, its findings as
@@ -169,7 +192,7 @@ std::string proveText(const ProveArgs& a, const vf::Scene& scene, const vf::Prov
   text += "  lod            " + std::string(vf::toString(scene.lod.scheme)) + ", " +
           vf::toString(scene.lod.screenSphere.clamp) + " clamp, " + toString(scene.partitioning) +
           " partitioning; the scene camera's fov, viewport, near and far\n";
-  text += statsLine(r.stats);
+  text += statsLine(r.stats, r.verdict != vf::ProveVerdict::Counterexample);
   switch (r.verdict) {
   case vf::ProveVerdict::Proved:
     text += "PROVED: every camera of the region sees every shared edge match vertex for vertex and no patch culled "
@@ -177,7 +200,15 @@ std::string proveText(const ProveArgs& a, const vf::Scene& scene, const vf::Prov
     break;
   case vf::ProveVerdict::Counterexample: text += counterexampleText(a, r); break;
   case vf::ProveVerdict::Undecided: text += undecidedText(a, r); break;
+  case vf::ProveVerdict::InvalidCameras: text += invalidText(a, r); break;
+  case vf::ProveVerdict::NothingOnScreen:
+    text += "NOTHING_ON_SCREEN: no camera of the region sees a shared edge on screen (every patch is off screen for "
+            "every camera): nothing was checked, not a clean verdict\n";
+    break;
   }
+  if (r.verdict == vf::ProveVerdict::Proved && r.stats.regionsNothingOnScreen > 0)
+    text += "  of which       " + std::to_string(r.stats.regionsNothingOnScreen) +
+            " regions see no shared edge on screen (nothing checked there; the volume line says how much)\n";
   return text;
 }
 
@@ -196,6 +227,9 @@ json proveJson(const ProveArgs& a, const vf::Terrain& terrain, const vf::ProveRe
                 {"pairs_by_trace", s.pairsByTrace}, {"pairs_by_value", s.pairsByValue},
                 {"pairs_off_screen", s.pairsOffScreen}, {"patches_off_screen", s.patchesOffScreen},
                 {"lod_paths", s.lodPaths},       {"cameras_checked", s.camerasChecked},
+                {"regions_invalid", s.regionsInvalid}, {"regions_nothing_on_screen", s.regionsNothingOnScreen},
+                {"volume_proved", s.volumeProved}, {"volume_undecided", s.volumeUndecided},
+                {"volume_invalid", s.volumeInvalid}, {"volume_nothing_on_screen", s.volumeNothingOnScreen},
                 {"seconds", s.seconds}};
   if (r.verdict == vf::ProveVerdict::Counterexample) {
     json c = cameraJson(r.counterexample);
@@ -215,6 +249,10 @@ json proveJson(const ProveArgs& a, const vf::Terrain& terrain, const vf::ProveRe
   for (const vf::UndecidedRegion& u : r.undecided)
     us.push_back({{"region", regionJson(u.region)}, {"depth", u.depth}, {"why", u.why}});
   j["undecided"] = us;
+  json inv = json::array();
+  for (const vf::UndecidedRegion& u : r.invalid)
+    inv.push_back({{"region", regionJson(u.region)}, {"depth", u.depth}, {"why", u.why}});
+  j["invalid"] = inv;
   return j;
 }
 

@@ -22,6 +22,8 @@ const char* toString(ProveVerdict v) {
   case ProveVerdict::Proved: return "PROVED";
   case ProveVerdict::Counterexample: return "COUNTEREXAMPLE";
   case ProveVerdict::Undecided: return "UNDECIDED";
+  case ProveVerdict::InvalidCameras: return "INVALID_CAMERAS";
+  case ProveVerdict::NothingOnScreen: return "NOTHING_ON_SCREEN";
   }
   return "UNDECIDED";
 }
@@ -37,6 +39,41 @@ CameraRegion defaultRegion(const Terrain& terrain) {
   g.targetLo = c.target - glm::vec3(r);
   g.targetHi = c.target + glm::vec3(r);
   return g;
+}
+
+std::string regionInvalidCameras(const CameraRegion& r, const glm::vec3& up) {
+  // The directions d = target - eye of the region: a box, each bound one double subtraction of two floats (exact
+  // unless the exponents are far apart; the margin below covers that rounding many times over).
+  glm::dvec3 lo, hi;
+  double mag = 0;
+  for (int i = 0; i < 3; ++i) {
+    lo[i] = static_cast<double>(r.targetLo[i]) - static_cast<double>(r.eyeHi[i]);
+    hi[i] = static_cast<double>(r.targetHi[i]) - static_cast<double>(r.eyeLo[i]);
+    mag = std::max({mag, std::fabs(lo[i]), std::fabs(hi[i])});
+  }
+  // |d|^2 overflows float (validateCamera: not finite) somewhere in the box.
+  if (mag * mag * 3.0 >= 0x1p127) return "a view direction |target - eye|^2 may overflow float";
+  // The margin: 2^-30 of the largest direction (cameras within it of the degenerate set are refused by float's lookAt
+  // or have no meaningful view), and 2^-60 absolutely (|target - eye|^2 below 2^-126 is refused).
+  const double m = std::max(mag * 0x1p-30, 0x1p-60);
+  lo -= glm::dvec3(m);
+  hi += glm::dvec3(m);
+  if (lo.x <= 0 && hi.x >= 0 && lo.y <= 0 && hi.y >= 0 && lo.z <= 0 && hi.z >= 0)
+    return "eye == target (or |target - eye| too short for float)";
+  // Some d = lambda * up, lambda != 0, in the box: the lambdas of each coordinate's slab, intersected.
+  double l = -HUGE_VAL, h = HUGE_VAL;
+  for (int i = 0; i < 3; ++i) {
+    const double u = static_cast<double>(up[i]);
+    if (u == 0) {
+      if (!(lo[i] <= 0 && hi[i] >= 0)) return {};
+      continue;
+    }
+    const double a = lo[i] / u, b = hi[i] / u;
+    l = std::max(l, std::min(a, b));
+    h = std::min(h, std::max(a, b));
+  }
+  if (l <= h && (l != 0 || h != 0)) return "the view direction parallel to up (looking straight down or up)";
+  return {};
 }
 
 namespace {
@@ -96,6 +133,7 @@ struct Prover {
   const Terrain& terrain;
   const ProveOptions& o;
   ProveReport& rep;
+  Prover(const Terrain& t, const ProveOptions& opt, ProveReport& r) : terrain(t), o(opt), rep(r) {}
   float rootWidth[6] = {};
   std::mutex m;
   std::condition_variable cv;
@@ -147,9 +185,45 @@ struct Prover {
     return false;
   }
 
+  // The fraction of the root's volume the region covers (its coordinates of non-zero root width).
+  double volume(const CameraRegion& r) const {
+    double v = 1;
+    for (int d = 0; d < 6; ++d)
+      if (rootWidth[d] > 0) v *= (static_cast<double>(coord(r, d, true)) - coord(r, d, false)) / rootWidth[d];
+    return v;
+  }
+
   void undecided(const Item& it, const std::string& reason) { // under m
     ++rep.stats.regionsUndecided;
+    rep.stats.volumeUndecided += volume(it.region);
     if (rep.undecided.size() < o.maxUndecidedListed) rep.undecided.push_back({it.region, it.depth, reason});
+  }
+
+  void invalid(const Item& it, const std::string& reason) { // under m
+    ++rep.stats.regionsInvalid;
+    rep.stats.volumeInvalid += volume(it.region);
+    if (rep.invalid.size() < o.maxUndecidedListed) rep.invalid.push_back({it.region, it.depth, reason});
+  }
+
+  // Splits the item in two along dimension d (under m).
+  void split(const Item& it, int d) {
+    Item a = it, b = it;
+    const float mid = centre(coord(it.region, d, false), coord(it.region, d, true));
+    coord(a.region, d, true) = mid;
+    coord(b.region, d, false) = mid;
+    a.depth = b.depth = it.depth + 1;
+    stack.push_back(b);
+    stack.push_back(a); // depth first: the lower half next
+  }
+
+  // A region that may hold invalid cameras is never evaluated (its bounds would reason about NaN cameras): split
+  // until maxDepth, where it is listed as such.
+  void finishInvalid(const Item& it, const std::string& reason) {
+    std::lock_guard<std::mutex> lock(m);
+    rep.stats.maxDepthReached = std::max(rep.stats.maxDepthReached, it.depth);
+    const int d = it.depth < o.maxDepth ? splitDimension(it.region) : -1;
+    if (d < 0) return invalid(it, reason);
+    split(it, d);
   }
 
   void finish(const Item& it, const detail::RegionResult& r) {
@@ -163,6 +237,12 @@ struct Prover {
     s.maxDepthReached = std::max(s.maxDepthReached, it.depth);
     if (r.outcome == RegionOutcome::Decided) {
       ++s.regionsProved;
+      if (r.onScreen) {
+        s.volumeProved += volume(it.region);
+      } else {
+        ++s.regionsNothingOnScreen;
+        s.volumeNothingOnScreen += volume(it.region);
+      }
       return;
     }
     const int d = it.depth < o.maxDepth ? splitDimension(it.region) : -1;
@@ -170,13 +250,7 @@ struct Prover {
       undecided(it, (it.depth >= o.maxDepth ? "maximum depth: " : "cannot split further: ") + r.why);
       return;
     }
-    Item a = it, b = it;
-    const float mid = centre(coord(it.region, d, false), coord(it.region, d, true));
-    coord(a.region, d, true) = mid;
-    coord(b.region, d, false) = mid;
-    a.depth = b.depth = it.depth + 1;
-    stack.push_back(b);
-    stack.push_back(a); // depth first: the lower half next
+    split(it, d);
   }
 
   void worker() {
@@ -198,6 +272,18 @@ struct Prover {
         stack.pop_back();
         ++busy;
         ++rep.stats.regions;
+      }
+      const std::string bad = regionInvalidCameras(it.region, terrain.scene().camera.up);
+      if (!bad.empty()) {
+        const bool leaf = it.depth >= o.maxDepth || splitDimension(it.region) < 0;
+        if (it.depth == 0 || leaf) sample(it.region); // its valid cameras may still be counterexamples
+        finishInvalid(it, bad);
+        {
+          std::lock_guard<std::mutex> lock(m);
+          --busy;
+        }
+        cv.notify_all();
+        continue;
       }
       const detail::RegionResult r = detail::evaluateRegion(t, it.region, scratch, seams);
       const bool leaf = r.outcome != RegionOutcome::Decided && (it.depth >= o.maxDepth || splitDimension(it.region) < 0);
@@ -221,7 +307,7 @@ ProveReport proveScene(const Terrain& terrain, const ProveOptions& options) {
   rep.region = options.regionGiven ? options.region : defaultRegion(terrain);
   rep.error = validate(terrain, rep.region);
   if (!rep.error.empty()) return rep;
-  Prover p{terrain, options, rep};
+  Prover p(terrain, options, rep);
   for (int d = 0; d < 6; ++d) p.rootWidth[d] = coord(rep.region, d, true) - coord(rep.region, d, false);
   p.stack.push_back({rep.region, 0});
   int threads = options.threads > 0 ? options.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
@@ -232,7 +318,11 @@ ProveReport proveScene(const Terrain& terrain, const ProveOptions& options) {
   if (rep.verdict != ProveVerdict::Counterexample) {
     for (const Item& it : p.stack)
       p.undecided(it, options.cancel && options.cancel->load() ? "cancelled" : "maximum regions reached");
-    rep.verdict = rep.stats.regionsUndecided > 0 ? ProveVerdict::Undecided : ProveVerdict::Proved;
+    const ProveStats& s = rep.stats;
+    rep.verdict = s.regionsUndecided > 0                        ? ProveVerdict::Undecided
+                  : s.regionsInvalid > 0                        ? ProveVerdict::InvalidCameras
+                  : s.regionsProved == s.regionsNothingOnScreen ? ProveVerdict::NothingOnScreen
+                                                                : ProveVerdict::Proved;
   }
   rep.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return rep;

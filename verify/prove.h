@@ -54,10 +54,16 @@ struct ProveOptions {
   const std::atomic<bool>* cancel = nullptr;
 };
 
+// Precedence: Counterexample, Undecided, InvalidCameras, NothingOnScreen, Proved (the first that holds).
 enum class ProveVerdict : uint8_t {
-  Proved,         // every camera of the region: watertight and no hole (what that assumes: docs/verify.md)
-  Counterexample, // a camera of the region whose check has an on-screen finding (ProveReport::counterexample)
-  Undecided,      // neither: the regions left open are in ProveReport::undecided (never Proved while any remain)
+  Proved,          // every camera of the region is valid, sees some shared edge on screen (some sub-regions may see
+                   // none: ProveStats::volumeNothingOnScreen), every one matches and no patch is lost on screen
+  Counterexample,  // a camera of the region whose check has an on-screen finding (ProveReport::counterexample)
+  Undecided,       // regions left open (ProveReport::undecided); never Proved while any remain
+  InvalidCameras,  // the valid part decided watertight, but the region holds cameras check refuses (eye == target,
+                   // the view direction parallel to up, a direction float's lookAt cannot normalise): the regions
+                   // that hold them are split down to ProveOptions::maxDepth and listed (ProveReport::invalid)
+  NothingOnScreen, // decided, but no camera of the region sees a shared edge on screen: nothing was checked
 };
 
 // One region the proof could not decide, and why (the first reason met, e.g. "patch 12 may be culled while on
@@ -74,6 +80,11 @@ struct ProveStats {
   int64_t regions = 0;          // regions evaluated (root included)
   int64_t regionsProved = 0;    // leaves decided watertight
   int64_t regionsUndecided = 0; // leaves left open
+  int64_t regionsInvalid = 0;   // leaves that may hold cameras check refuses (never evaluated, never proved)
+  int64_t regionsNothingOnScreen = 0; // proved leaves from which no camera sees a shared edge on screen
+  // The fractions of the root region's volume (over its coordinates of non-zero width; a point region is 1) that the
+  // leaves of each kind cover; they add up to 1 when the proof ran to its end (open regions count as undecided).
+  double volumeProved = 0, volumeUndecided = 0, volumeInvalid = 0, volumeNothingOnScreen = 0;
   int maxDepthReached = 0;
   int64_t pairsByTrace = 0;     // pair decisions where both sides compute the same factor (same trace) and the seam
                                 // is proven identical (verify/seam_proof.h): equal for every camera of the region
@@ -94,6 +105,7 @@ struct ProveReport {
   Camera counterexample{};
   Report counterexampleReport;
   std::vector<UndecidedRegion> undecided; // the first maxUndecidedListed (stats.regionsUndecided counts all)
+  std::vector<UndecidedRegion> invalid;   // the first maxUndecidedListed that hold invalid cameras, why: which kind
   // How the pairs were proven, per pair of the layout (static layouts): "trace" / "value" / "off_screen" counts
   // are in stats; these say which edges were proven which way in the last (finest) region that decided them.
   ProveStats stats;
@@ -112,6 +124,11 @@ CameraRegion defaultRegion(const Terrain& terrain);
 // ProveReport::error says which.
 ProveReport proveScene(const Terrain& terrain, const ProveOptions& options = {});
 
-const char* toString(ProveVerdict v); // "PROVED", "COUNTEREXAMPLE", "UNDECIDED"
+const char* toString(ProveVerdict v); // "PROVED", "COUNTEREXAMPLE", "UNDECIDED", "INVALID_CAMERAS", "NOTHING_ON_SCREEN"
+
+// Whether a region may hold a camera that check refuses (validateCamera): eye == target, a view direction target - eye
+// parallel to up, or one within 2^-30 (relatively) of either, where float's lookAt cannot normalise. Decided in double
+// over the box of directions [targetLo - eyeHi, targetHi - eyeLo]. Empty: none; else which kind.
+std::string regionInvalidCameras(const CameraRegion& region, const glm::vec3& up);
 
 } // namespace fftess::verify

@@ -81,6 +81,7 @@ struct RegionResult {
   RegionOutcome outcome = RegionOutcome::Decided;
   std::string why;
   int64_t pairsByTrace = 0, pairsByValue = 0, pairsOffScreen = 0, patchesOffScreen = 0, lodPaths = 0;
+  bool onScreen = false; // some patch may be on screen for some camera of the region (false: nothing to check)
 };
 
 // Per-thread state of the region evaluations (BoundContext, edge points cache, scratch).

@@ -149,6 +149,18 @@ RegionResult evaluateRegion(const TerrainData& t, const CameraRegion& region, Pr
   s.edges.newCamera();
   lod::BoundContext::Scope scope(s.context);
   const RegionCameras cams = regionCameras(t.scene.camera, region);
+  // A view matrix that may be NaN belongs to cameras near the degenerate set (regionInvalidCameras decides the set
+  // itself): every later step would reason about NaN planes and factors. Never decided; split.
+  for (const lod::BoundCamera* cam : {&cams.view, &cams.lod})
+    for (int c = 0; c < 4; ++c)
+      for (int l = 0; l < 4; ++l)
+        if (!cam->view[c][l].finite()) {
+          res.outcome = RegionOutcome::Undecided;
+          res.why = "the view matrix of some camera of the region may be NaN or infinite (near eye == target or a view "
+                    "direction parallel to up)";
+          res.onScreen = true;
+          return res;
+        }
   const RegionFrustum frustum(cams.view);
   const PatchTree& tree = *t.tree;
   const size_t n = t.patches.size();
@@ -160,6 +172,7 @@ RegionResult evaluateRegion(const TerrainData& t, const CameraRegion& region, Pr
   for (size_t i = 0; i < n; ++i) {
     s.offScreen[i] = frustum.boxOffScreen(tree.boxLo[i], tree.boxHi[i]) ? 1 : 0;
     res.patchesOffScreen += s.offScreen[i];
+    if (!s.offScreen[i]) res.onScreen = true;
   }
   RegionEval ev{t, s, cams, frustum, res};
   for (const EdgePair& p : tree.allPairs) {
