@@ -2,6 +2,7 @@
 #include "options.h"
 #include "common.h"
 
+#include "base/threads.h"
 #include "verify/did_you_mean.h"
 
 #include <CLI/CLI.hpp>
@@ -65,6 +66,21 @@ CLI::Option* addShowOption(CLI::App* sub, int& show, const std::string& what) {
                 [&show](const int& n) {
                   if (n < 0) throw OptionValueError("--show " + std::to_string(n) + ": must be >= 0");
                   show = n;
+                },
+                help)
+      ->type_name("N");
+}
+
+CLI::Option* addThreadsOption(CLI::App* sub, int& threads, const std::string& what) {
+  const std::string help =
+      what + ", 0 (all cores) to " + std::to_string(kMaxThreads) + " (default " + std::to_string(threads) + ")";
+  return sub->add_option_function<int>(
+                "-j,--threads",
+                [&threads](const int& n) {
+                  if (n < 0 || n > kMaxThreads)
+                    throw OptionValueError("--threads " + std::to_string(n) + ": must be 0 (all cores) to " +
+                                           std::to_string(kMaxThreads));
+                  threads = n;
                 },
                 help)
       ->type_name("N");

@@ -27,6 +27,10 @@ CLI::Option* addSeedOption(CLI::App* sub, uint64_t& seed, const std::string& wha
 // ("--show -1: must be >= 0").
 CLI::Option* addShowOption(CLI::App* sub, int& show, const std::string& what);
 
+// -j/--threads N on sub: "<what>, 0 (all cores) to 1024 (default D)" with type N; N below 0 or above fftess::kMaxThreads
+// (base/threads.h) is refused while parsing ("--threads 100000: must be 0 (all cores) to 1024"), exit 2.
+CLI::Option* addThreadsOption(CLI::App* sub, int& threads, const std::string& what);
+
 // "OPTION 'VALUE': expected a|b|c" and, when one of them is near (verify/did_you_mean.h), " (did you mean 'b'?)".
 std::string choiceError(const std::string& option, const std::string& value, const std::vector<std::string>& choices);
 // A CLI11 check that the value is one of choices (the message: choiceError's).

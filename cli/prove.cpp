@@ -5,6 +5,7 @@
 #include "commands.h"
 #include "common.h"
 #include "options.h"
+#include "base/threads.h"
 #include "progress.h"
 #include "report_json.h"
 #include "scene_options.h"
@@ -44,7 +45,7 @@ CLI::App* addProve(CLI::App& app, ProveArgs& a) {
   sub->add_option("--max-regions", a.maxRegions, "Regions evaluated in all before the proof stops (what is open is "
                                                   "undecided)")
       ->capture_default_str();
-  sub->add_option("-j,--threads", a.threads, "Worker threads (default 0: all cores)")->capture_default_str();
+  addThreadsOption(sub, a.threads, "Worker threads");
   addShowOption(sub, a.show, "Lines of the counterexample's findings and of the undecided regions to print");
   sub->add_option("--json", a.scene.json, "Write the proof's report as JSON to FILE ('-': stdout, no text then)");
   sub->add_flag("-q,--quiet", a.scene.quiet, "Print nothing but errors; the exit status tells the verdict");
@@ -91,7 +92,9 @@ void parseBox(const char* option, const std::string& text, glm::vec3& lo, glm::v
 void checkProveArgs(const ProveArgs& a) {
   if (a.maxDepth < 0) throw UsageError("--max-depth " + std::to_string(a.maxDepth) + ": must be >= 0");
   if (a.maxRegions < 1) throw UsageError("--max-regions " + std::to_string(a.maxRegions) + ": must be >= 1");
-  if (a.threads < 0) throw UsageError("--threads " + std::to_string(a.threads) + ": must be >= 0");
+  // --threads: checked while parsing (addThreadsOption); again here for the Python module, which sets it directly.
+  if (a.threads < 0 || a.threads > kMaxThreads)
+    throw UsageError("--threads " + std::to_string(a.threads) + ": must be 0 (all cores) to " + std::to_string(kMaxThreads));
   if (a.show < 0) throw UsageError("--show " + std::to_string(a.show) + ": must be >= 0");
 }
 

@@ -6,6 +6,7 @@
 #include "commands.h"
 #include "common.h"
 #include "options.h"
+#include "base/threads.h"
 #include "gpu_lod.h"
 #include "progress.h"
 #include "report_gltf.h"
@@ -129,7 +130,7 @@ CLI::App* addSweep(CLI::App& app, SweepArgs& a) {
                                 "N cameras at random positions and directions (see --seed)");
   addSeedOption(sub, a.seed, "Seed of --random's cameras");
   addShowOption(sub, a.show, "Causes listed in the cause table, each with its example and fix (all are in --json)");
-  sub->add_option("-j,--threads", a.threads, "Worker threads (default 0: all cores)")->capture_default_str();
+  addThreadsOption(sub, a.threads, "Worker threads");
   sub->add_option("--label", a.label, "Name for this run in the summary (default: the scene's name)");
   sub->add_option("--shard", a.shard,
                   "K/N: check only the cameras i with i % N == K - 1 (1 <= K <= N; indices stay global, so the "
@@ -221,7 +222,9 @@ static SweepPlan sweepPlan(const SweepArgs& a) {
   if (a.orbitGiven && a.orbit < 1) throw UsageError("--orbit " + std::to_string(a.orbit) + ": must be >= 1");
   if (a.flyoverGiven && a.flyover < 1) throw UsageError("--flyover " + std::to_string(a.flyover) + ": must be >= 1");
   if (a.randomGiven && a.random < 1) throw UsageError("--random " + std::to_string(a.random) + ": must be >= 1");
-  if (a.threads < 0) throw UsageError("--threads " + std::to_string(a.threads) + ": must be >= 0");
+  // --threads: checked while parsing (addThreadsOption); again here for the Python module, which sets it directly.
+  if (a.threads < 0 || a.threads > kMaxThreads)
+    throw UsageError("--threads " + std::to_string(a.threads) + ": must be 0 (all cores) to " + std::to_string(kMaxThreads));
   if (a.show < 0) throw UsageError("--show " + std::to_string(a.show) + ": must be >= 0");
   SweepPlan p;
   p.seed = parseSeed(a.seed);
@@ -451,7 +454,8 @@ std::string SweepRun::summaryText(const vf::SweepResult& res, const std::string&
                                                             : std::string("the shader's own neighbour rule")) +
           ", " + toString(scene.partitioning) + " partitioning\n";
   text += shortcutsText(res.visibleFirst, resultCacheJson(res), res.total,
-                        a_.offscreen ? "--offscreen" : a_.noVisibleFirst ? "--no-visible-first" : "");
+                        a_.offscreen ? "--offscreen" : a_.noVisibleFirst ? "--no-visible-first"
+                        : a_.gpuFloat != "off" ? "--gpu-float " + a_.gpuFloat + ": its findings count off screen too" : "");
   text += statsText(res.total, a_.offscreen);
   text += gpuDiffs_.text(scene, opt_, res.total);
   std::snprintf(buf, sizeof buf, "  cameras with cracks %zu, with T-junctions only %zu, with holes %zu\n", crackCameras_,

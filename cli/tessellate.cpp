@@ -256,10 +256,7 @@ CLI::App* addTessellate(CLI::App& app, TessellateArgs& a) {
       ->capture_default_str();
   sub->add_option("-o,--output", a.output, "Write to FILE (atomically: temp file + rename) instead of stdout");
   sub->add_flag("--flush-denormals", a.flushDenormals, "Flush denormal factors to zero first (as llvmpipe does)");
-  sub->add_option("-j,--threads", a.threads,
-                  "Tessellate and format hex/hashes output on N threads (0: one per hardware thread); the output is "
-                  "the same bytes for any N")
-      ->capture_default_str();
+  addThreadsOption(sub, a.threads, "Tessellate and format hex/hashes output on N threads (the same bytes for any N)");
   sub->add_flag("--keep-going", a.keepGoing,
                 "Print the well-formed patches even if some lines are malformed (exit status is still 2)");
   return sub;
@@ -538,7 +535,6 @@ void tessellateLines(LineSource& source, PatchWriter& writer) {
 } // namespace
 
 int runTessellate(const TessellateArgs& a) {
-  if (a.threads < 0) throw UsageError("tessellate: --threads must be >= 0 (0: one per hardware thread)");
   if (a.patches.empty() && a.input != "-") refuseSameFiles({{"-o", a.output}}, {{"INPUT", a.input}});
   LineSource source(a);
   const LineCheck check = checkLines(source);

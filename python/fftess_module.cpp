@@ -6,6 +6,7 @@
 
 #include "common.h"
 
+#include "base/threads.h"
 #include "tessellator/names.h"
 #include "tessellator/parallel.h"
 
@@ -73,6 +74,9 @@ std::vector<Patch> patchesOf(const std::string& domain, const std::string& parti
 py::tuple tessellate(const std::string& domain, const std::string& partitioning, const std::string& primitive,
                      const py::array_t<float, py::array::c_style | py::array::forcecast>& factors,
                      const std::string& stage, bool flushDenormals, int threads) {
+  if (threads < 0 || threads > kMaxThreads)
+    throw cli::UsageError("threads " + std::to_string(threads) + ": must be 0 (one per hardware thread) to " +
+                          std::to_string(kMaxThreads));
   const std::vector<Patch> patches = patchesOf(domain, partitioning, primitive, stage, factors);
   Options opt;
   opt.flushDenormals = flushDenormals;
@@ -104,6 +108,16 @@ std::mutex gCommandMutex;
 // The report text as the dict Python's json module reads from the --json file.
 py::object dictOf(const std::string& text) { return py::module_::import("json").attr("loads")(text); }
 
+// A Python str may hold NUL characters; a path or a word of the command line cannot (the C library ends it there:
+// fftess.check("rings_small.toml\0other") checked rings_small.toml). Refused, naming the argument and the position.
+const std::string& noNul(const char* what, const std::string& s) {
+  const size_t at = s.find('\0');
+  if (at != std::string::npos)
+    throw cli::UsageError(std::string(what) + ": a NUL character at position " + std::to_string(at) +
+                          " (a path or a command-line word cannot hold one)");
+  return s;
+}
+
 std::vector<std::string> strings(const py::object& o, const char* what) {
   std::vector<std::string> out;
   if (o.is_none()) return out;
@@ -115,26 +129,26 @@ std::vector<std::string> strings(const py::object& o, const char* what) {
       if (py::isinstance<py::bool_>(v)) value = v.cast<bool>() ? "true" : "false"; // TOML's spelling
       else if (py::isinstance<py::str>(v)) value = v.cast<std::string>();          // a bare word or a TOML value
       else value = py::str(v).cast<std::string>(); // numbers; lists as [a, b, c] (TOML arrays of numbers)
-      out.push_back(py::str(kv.first).cast<std::string>() + "=" + value);
+      out.push_back(noNul(what, py::str(kv.first).cast<std::string>() + "=" + value));
     }
     return out;
   }
-  for (auto item : o) out.push_back(py::str(item).cast<std::string>());
+  for (auto item : o) out.push_back(noNul(what, py::str(item).cast<std::string>()));
   return out;
 }
 
 void sceneArgs(cli::SceneArgs& a, const std::string& scene, const py::object& overrides, const std::string& kernel,
                const std::string& flushDenormals, bool offscreen, const std::string& gpuFloat, const std::string& cameras,
                const std::string& svg, const std::string& gltf) {
-  a.scene = scene;
+  a.scene = noNul("scene", scene);
   a.overrides = strings(overrides, "overrides");
-  a.kernel = kernel;
-  a.flushDenormals = flushDenormals;
+  a.kernel = noNul("kernel", kernel);
+  a.flushDenormals = noNul("flush_denormals", flushDenormals);
   a.offscreen = offscreen;
-  a.gpuFloat = gpuFloat;
-  a.cameras = cameras;
-  a.svg = svg;
-  a.gltf = gltf;
+  a.gpuFloat = noNul("gpu_float", gpuFloat);
+  a.cameras = noNul("cameras", cameras);
+  a.svg = noNul("svg", svg);
+  a.gltf = noNul("gltf", gltf);
 }
 
 py::object check(const std::string& scene, const py::object& overrides, const std::string& kernel,
@@ -143,7 +157,7 @@ py::object check(const std::string& scene, const py::object& overrides, const st
                  const std::string& svg, const std::string& gltf, const std::string& view) {
   cli::CheckArgs a;
   sceneArgs(a, scene, overrides, kernel, flushDenormals, offscreen, gpuFloat, cameras, svg, gltf);
-  a.view = view;
+  a.view = noNul("view", view);
   if (cameraIndex) a.cameraIndex = *cameraIndex, a.cameraIndexGiven = true;
   if (pathCamera) a.pathCamera = *pathCamera, a.pathCameraGiven = true;
   std::string text;
@@ -168,8 +182,8 @@ py::object sweep(const std::string& scene, const py::object& overrides, std::opt
   if (random) a.random = *random, a.randomGiven = true;
   a.seed = py::str(seed).cast<std::string>(); // checked by runSweep: 0 .. 2^64-1
   a.threads = threads;
-  a.label = label;
-  a.shard = shard;
+  a.label = noNul("label", label);
+  a.shard = noNul("shard", shard);
   a.noVisibleFirst = !visibleFirst;
   a.noResultCache = !resultCache;
   std::string text;
@@ -190,14 +204,14 @@ py::object sweep(const std::string& scene, const py::object& overrides, std::opt
 py::object compare(const std::string& patches, const std::string& capture, const std::string& format,
                    bool strictOrder, bool flushDenormals, int show, int details, const std::string& svg) {
   cli::CompareArgs a;
-  a.patches = patches;
-  a.capture = capture;
-  a.format = format;
+  a.patches = noNul("patches", patches);
+  a.capture = noNul("capture", capture);
+  a.format = noNul("format", format);
   a.strictOrder = strictOrder;
   a.flushDenormals = flushDenormals;
   a.show = show;
   a.details = details;
-  a.svg = svg;
+  a.svg = noNul("svg", svg);
   if (patches == "-" || capture == "-") throw cli::UsageError("compare: give file paths ('-', stdin, is the command line's)");
   std::string text;
   {

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "generate.h"
+#include "base/threads.h"
 
 namespace fftess {
 
@@ -48,11 +49,8 @@ void forEachBatchRange(size_t count, const BatchSlot* slots, int threads,
       errors[size_t(t)] = std::current_exception();
     }
   };
-  std::vector<std::thread> pool;
-  pool.reserve(size_t(threads) - 1);
-  for (int t = 1; t < threads; ++t) pool.emplace_back(run, t);
-  run(0);
-  for (std::thread& th : pool) th.join();
+  // Each thread has its own range: nothing to stop when a start fails (base/threads.h throws after the joins).
+  runOnThreads(threads, run, [] {});
   for (const std::exception_ptr& e : errors)
     if (e) std::rethrow_exception(e);
 }

@@ -36,14 +36,16 @@ BatchTotals planBatch(const Patch* patches, size_t count, BatchSlot* slots, cons
 // Tessellates patches[0..count) into points / indices at the places slots give (from planBatch with the same
 // patches and options), on `threads` threads (<= 0: one per hardware thread; the calling thread is one of them).
 // points, indices: at least the totals planBatch returned. Patches are split into contiguous ranges of about equal
-// output size; the bytes written do not depend on the thread count.
+// output size; the bytes written do not depend on the thread count. A thread the system will not start:
+// std::runtime_error ("could not start thread K of N: ...") after the ranges started have finished (base/threads.h).
 void tessellateBatch(const Patch* patches, size_t count, const BatchSlot* slots, DomainPoint* points,
                      int32_t* indices, int threads, const Options& options = {});
 
 // The splitting tessellateBatch uses, for work that follows it (formatting, hashing): runs work(thread, begin, end)
 // on `threads` contiguous ranges of [0, count) of about equal output size by slots (ranges may be empty), the first
 // on the calling thread, and returns when all are done. threads <= 0: one per hardware thread. An exception thrown
-// by work is rethrown here (the first one, by range order) after all ranges finished.
+// by work is rethrown here (the first one, by range order) after all ranges finished; a thread the system will not
+// start, std::runtime_error as for tessellateBatch.
 void forEachBatchRange(size_t count, const BatchSlot* slots, int threads,
                        const std::function<void(int thread, size_t begin, size_t end)>& work);
 

@@ -81,7 +81,8 @@ struct CheckOptions {
   // (FrustumTest::boxOffScreen, in double) get no LOD evaluation and no hole check, and shared edge pairs whose two
   // sides' boxes together are proven off screen are not classified (Stats::patchesOffScreen, edgesOffScreen): what
   // is skipped could only give off-screen findings, so the on-screen findings and the verdict are those of the full
-  // check. Ignored (the full check runs, Report::visibleFirst false) with countOffScreen or keepDrawn. The cli's
+  // check. Ignored (the full check runs, Report::visibleFirst false) with countOffScreen, keepDrawn or gpuFloat
+  // Conformant (its findings are of matching pairs wherever they lie, on screen or not). The cli's
   // sweep turns it on (--no-visible-first: off); check runs the full check (it lists off-screen findings apart).
   bool visibleFirst = false;
   // GPU float freedom (--gpu-float conformant; docs/verify.md, "GPU float freedom"): each side of each shared edge pair

@@ -7,6 +7,7 @@
 #include "verify/prove.h"
 #include "verify/prove_internal.h"
 #include "verify/sweep.h"
+#include "base/threads.h"
 
 #include <algorithm>
 #include <chrono>
@@ -311,10 +312,14 @@ ProveReport proveScene(const Terrain& terrain, const ProveOptions& options) {
   for (int d = 0; d < 6; ++d) p.rootWidth[d] = coord(rep.region, d, true) - coord(rep.region, d, false);
   p.stack.push_back({rep.region, 0});
   int threads = options.threads > 0 ? options.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  std::vector<std::thread> pool;
-  for (int k = 1; k < threads; ++k) pool.emplace_back([&p] { p.worker(); });
-  p.worker();
-  for (std::thread& th : pool) th.join();
+  // A thread the system refuses stops the others and throws one message (base/threads.h).
+  runOnThreads(threads, [&p](int) { p.worker(); }, [&p] {
+    {
+      std::lock_guard<std::mutex> lock(p.m);
+      p.stop = true;
+    }
+    p.cv.notify_all();
+  });
   if (rep.verdict != ProveVerdict::Counterexample) {
     for (const Item& it : p.stack)
       p.undecided(it, options.cancel && options.cancel->load() ? "cancelled" : "maximum regions reached");

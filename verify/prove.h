@@ -121,7 +121,8 @@ CameraRegion defaultRegion(const Terrain& terrain);
 // Proves or refutes the terrain watertight for every camera of the region. terrain: built; static layouts
 // (layout.kind other than "quadtree"); the scene's LOD a built-in scheme evaluated on the CPU (not lod.shader, not
 // lod.evaluate = "gpu", not geomorph); no camera-dependent domain (displacement.mip = "none"). Otherwise
-// ProveReport::error says which.
+// ProveReport::error says which. A worker thread the system will not start stops the others and throws
+// std::runtime_error ("could not start thread K of N: ...", base/threads.h).
 ProveReport proveScene(const Terrain& terrain, const ProveOptions& options = {});
 
 const char* toString(ProveVerdict v); // "PROVED", "COUNTEREXAMPLE", "UNDECIDED", "INVALID_CAMERAS", "NOTHING_ON_SCREEN"

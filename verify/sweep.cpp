@@ -4,6 +4,7 @@
 #include "verify/report.h"
 #include "verify/sweep.h"
 #include "verify/internal.h"
+#include "base/threads.h"
 
 #include <algorithm>
 #include <mutex>
@@ -66,13 +67,14 @@ SweepResult sweep(const Terrain& terrain, size_t count, const std::function<Came
   bool allVisibleFirst = true;
 
   std::atomic<size_t> next{0};
+  std::atomic<bool> stopped{false}; // a thread could not be started: the sweep ends with an exception
   std::mutex mutex; // serialises the callbacks and the aggregates
   size_t done = 0;
   auto worker = [&]() {
     detail::EdgeCache cache(scene.partitioning, scene.stage, detail::tessellatorOptions(scene, options));
     CameraResult cr; // reused camera to camera
     for (;;) {
-      if (sweepOptions.cancel && sweepOptions.cancel->load()) return;
+      if ((sweepOptions.cancel && sweepOptions.cancel->load()) || stopped.load()) return;
       const size_t i = next.fetch_add(1);
       if (i >= count) return;
       Report rep = detail::checkTerrain(terrain.data(), cameraAt(i), options, cache, memo.get());
@@ -117,10 +119,8 @@ SweepResult sweep(const Terrain& terrain, size_t count, const std::function<Came
       if (sweepOptions.keepReports) out.reports[i] = std::move(rep);
     }
   };
-  std::vector<std::thread> pool;
-  for (int k = 1; k < threads; ++k) pool.emplace_back(worker);
-  worker();
-  for (auto& th : pool) th.join();
+  // A thread the system refuses stops the others (stopped) and throws one message (base/threads.h).
+  runOnThreads(threads, [&](int) { worker(); }, [&] { stopped.store(true); });
 
   out.visibleFirst = out.camerasDone > 0 && allVisibleFirst;
   if (memo) {

@@ -35,7 +35,7 @@ struct CameraResult {
 
 // How a sweep runs (threads, progress, cancel, what it keeps). Each field's default is its initialiser.
 struct SweepOptions {
-  int threads = 0;               // 0: std::thread::hardware_concurrency()
+  int threads = 0;               // 0: std::thread::hardware_concurrency(); never more than the cameras
   // Called after each camera from a worker thread (serialised by the driver): cameras done, cameras total.
   std::function<void(size_t done, size_t total)> progress;
   const std::atomic<bool>* cancel = nullptr; // set to true to stop; cameras not started are skipped
@@ -93,7 +93,8 @@ struct SweepResult {
   int64_t resultCacheDropped = 0;
 };
 
-// Checks every camera against the one prepared terrain (shared read-only by the threads).
+// Checks every camera against the one prepared terrain (shared read-only by the threads). A worker thread the system
+// will not start stops the others and throws std::runtime_error ("could not start thread K of N: ...", base/threads.h).
 SweepResult sweep(const Terrain& terrain, const std::vector<Camera>& cameras, const CheckOptions& options = {},
                   const SweepOptions& sweepOptions = {});
 // The same over `count` cameras made when needed: cameraAt(i) (i < count; called from the worker threads, possibly at

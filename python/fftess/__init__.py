@@ -52,7 +52,7 @@ def tessellate(domain, partitioning, primitive, factors, stage="hw", flush_denor
     Ueq0 Veq0 Weq0 inside; isoline 2: density detail) or 6 (the rest ignored). float32 is read bit for bit (NaN
     payloads, -0, denormals; IEEE bits as uint32: pass bits.view(np.float32)); other dtypes are cast as
     astype(np.float32) does. Any value is defined (NaN, inf, negative, above 64).
-    flush_denormals: Options::flushDenormals. threads: tessellateBatch's (0: one per hardware thread); the output does
+    flush_denormals: Options::flushDenormals. threads: tessellateBatch's, 0 (one per hardware thread) to 1024; the output does
     not depend on it. Returns a Tessellation.
     """
     return Tessellation(*_fftess.tessellate(domain, partitioning, primitive, factors, stage, flush_denormals, threads))
@@ -81,7 +81,7 @@ def sweep(scene, overrides=None, *, orbit=None, flyover=None, random=None, seed=
     """`fftess sweep SCENE --json FILE`: the report (docs/cli.md, "JSON reports") as a dict.
 
     Cameras: orbit=N, flyover=N, random=N (with seed) or cameras=FILE; none of them: the scene's camera path, else a
-    flyover of 200. threads: worker threads (0: all cores). shard: "K/N". visible_first=False / result_cache=False:
+    flyover of 200. threads: worker threads, 0 (all cores) to 1024. shard: "K/N". visible_first=False / result_cache=False:
     --no-visible-first / --no-result-cache. Ctrl-C stops the sweep and raises KeyboardInterrupt.
     """
     return _fftess.sweep(os.fspath(scene), overrides, orbit, flyover, random, seed, threads, kernel, flush_denormals,

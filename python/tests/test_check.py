@@ -55,3 +55,26 @@ def test_usage_errors_raise_value_error(kwargs, message):
     with pytest.raises(ValueError) as e:
         fftess.check(EXAMPLES / "grid.toml", **kwargs)
     assert message in str(e.value)
+
+
+# Issue [8/8]: a NUL in a Python str ended the path there (the part before it was checked and called watertight).
+@pytest.mark.parametrize("call, message", [
+    (lambda: fftess.check(str(EXAMPLES / "rings_small.toml") + "\0/other"),
+     "scene: a NUL character at position " + str(len(str(EXAMPLES / "rings_small.toml")))),
+    (lambda: fftess.check(EXAMPLES / "grid.toml", cameras="cams.txt\0x"), "cameras: a NUL character at position 8"),
+    (lambda: fftess.check(EXAMPLES / "grid.toml", {"lod.scheme": "distance\0"}), "overrides: a NUL character"),
+    (lambda: fftess.sweep(EXAMPLES / "grid.toml\0", orbit=1), "scene: a NUL character"),
+    (lambda: fftess.compare("a\0.batch", "b.csv"), "patches: a NUL character at position 1"),
+])
+def test_nul_in_a_path_or_word_raises_value_error(call, message):
+    with pytest.raises(ValueError) as e:
+        call()
+    assert message in str(e.value)
+
+
+# Issue [8/8]: -j 100000 aborted in std::terminate; the Python entry points refuse it as the command line does.
+def test_threads_beyond_1024_raise_value_error():
+    with pytest.raises(ValueError, match=r"--threads 100000: must be 0 \(all cores\) to 1024"):
+        fftess.sweep(EXAMPLES / "grid.toml", orbit=1, threads=100000)
+    with pytest.raises(ValueError, match=r"threads -1: must be 0"):
+        fftess.tessellate("quad", "integer", "triangle_cw", [[4, 4, 4, 4, 4, 4]], threads=-1)

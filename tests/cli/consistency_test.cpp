@@ -116,6 +116,23 @@ TEST_CASE("a negative --show is refused by every subcommand that has it", "[cli]
   }
 }
 
+// Issue [8/8]: `-j 100000` aborted in std::terminate (exit 134) with no fftess message.
+TEST_CASE("threads: -j beyond 1024 or below 0 is refused by every subcommand that has it", "[cli][consistency]") {
+  const std::vector<std::vector<std::string>> subs{{"sweep", kScene, "--random", "200000", "-q"},
+                                                   {"prove", kScene},
+                                                   {"tessellate", "-e", "quad integer point hw 1 1 1 1 1 1"}};
+  for (const auto& sub : subs)
+    for (const char* bad : {"100000", "1025", "-1", "2147483647"}) {
+      std::vector<std::string> args = sub;
+      args.insert(args.end(), {"-j", bad});
+      checkError(args, "--threads " + std::string(bad) + ": must be 0 (all cores) to 1024 (see fftess " + sub[0] +
+                           " --help)");
+    }
+  // The bound itself runs (prove stops at its first region; a sweep of 3 cameras starts 3 threads, not 1024).
+  CHECK(run({"sweep", kScene, "--random", "3", "-q", "-j", "1024"}).status <= 1);
+  CHECK(run({"prove", kScene, "--max-regions", "1", "-j", "1024", "-q"}).status <= 1);
+}
+
 TEST_CASE("seeds: one type and one rule for --seed in sweep, driver-check, gen and bench", "[cli][consistency]") {
   const std::vector<std::vector<std::string>> subs{
       {"sweep", kScene, "--random", "1"}, {"driver-check", "--random", "1"}, {"gen", "--random", "1"}, {"bench"}};
