@@ -6,6 +6,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <sys/stat.h>
+
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -97,13 +99,22 @@ struct Fnv {
   }
 };
 
+// The largest camera file read: 64 MiB, about a million CSV rows (an hour's camera path at 60 frames a second is
+// 216,000). Larger than the scene files' 16 MiB (kMaxSceneBytes), which hold no per-frame data. Bounded so that
+// `--cameras /dev/zero` or a mistaken multi-gigabyte file is refused at once (issue [8/8]: it read 5 GB).
+constexpr size_t kMaxCameraFileBytes = size_t(64) << 20;
+
 std::string readWhole(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw UsageError("--cameras " + quotePath(path) + ": cannot read the file");
-  std::ostringstream s;
-  s << in.rdbuf();
-  if (in.bad()) throw UsageError("--cameras " + quotePath(path) + ": cannot read the file");
-  return s.str();
+  struct stat st;
+  if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
+    throw UsageError("--cameras " + quotePath(path) + ": is a directory, not a camera file");
+  std::string text;
+  const int rc = vf::detail::readBounded(path, kMaxCameraFileBytes, text);
+  if (rc < 0)
+    throw UsageError("--cameras " + quotePath(path) + ": larger than " + std::to_string(kMaxCameraFileBytes) +
+                     " bytes (64 MiB, the limit for a camera file)");
+  if (rc == 0) throw UsageError("--cameras " + quotePath(path) + ": cannot read the file");
+  return text;
 }
 
 // ---- CSV -----------------------------------------------------------------------------------------------------------

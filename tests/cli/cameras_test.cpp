@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include <cstdio>
 #include <string>
 
 using clitest::run;
@@ -173,6 +174,38 @@ TEST_CASE("each bad camera file is refused with its file, line and field, exit 2
       CHECK_FALSE(clitest::fileExists(out));
     }
   }
+}
+
+// Issue [8/8]: `--cameras /dev/zero` read gigabytes; a directory was called an "empty file".
+TEST_CASE("a camera file that never ends, is too large or is a directory is refused at once, exit 2",
+          "[cli][cameras]") {
+  const std::string dir = clitest::tmpDir();
+  const std::string big = dir + "/big_cameras.csv"; // a valid header, then more than 64 MiB of rows
+  {
+    std::FILE* f = std::fopen(big.c_str(), "wb");
+    REQUIRE(f);
+    std::fputs("eye_x,eye_y,eye_z,target_x,target_y,target_z\n", f);
+    const std::string row = "10,25,-70,0,0,0\n";
+    for (size_t n = 0; n < (size_t(64) << 20) / row.size() + 1; ++n) std::fputs(row.c_str(), f);
+    std::fclose(f);
+  }
+  struct Case {
+    std::string file, what;
+  };
+  const Case cases[] = {{"/dev/zero", "': larger than 67108864 bytes (64 MiB, the limit for a camera file)"},
+                        {big, "': larger than 67108864 bytes (64 MiB, the limit for a camera file)"},
+                        {dir, "': is a directory, not a camera file"}};
+  for (const Case& c : cases)
+    for (const char* command : {"check", "sweep"}) {
+      const std::string out = dir + "/refused_" + command + ".json";
+      const clitest::Result r = run({command, kRings, "--cameras", c.file, "--json", out});
+      INFO(command << " " << c.file << ": " << r.err);
+      CHECK(r.status == 2);
+      CHECK(r.err.find("--cameras '") != std::string::npos);
+      CHECK(r.err.find(c.what) != std::string::npos);
+      CHECK_FALSE(clitest::fileExists(out));
+    }
+  std::remove(big.c_str());
 }
 
 TEST_CASE("shards of a sweep over a camera file merge into the single run, shards over other files are refused",
